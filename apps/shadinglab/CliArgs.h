@@ -1,0 +1,47 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Command-line parsing shared by the shadinglab subcommands. Every parse
+// failure throws UsageError with a one-line message; main() prints it and
+// exits with status 2.
+#pragma once
+
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace shadinglab::cli
+{
+
+struct UsageError : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+/// Options of the form --name value or --name (flag), plus positionals.
+class Arguments
+{
+public:
+  /// @param flags option names that take no value (e.g. "stats").
+  Arguments(int argc, char** argv, const std::vector<std::string>& valued,
+    const std::vector<std::string>& flags);
+
+  bool Has(const std::string& name) const { return this->Values.count(name) > 0; }
+  std::string Get(const std::string& name, const std::string& fallback = {}) const;
+  double GetDouble(const std::string& name, double fallback) const;
+  int GetInt(const std::string& name, int fallback) const;
+  const std::vector<std::string>& Positionals() const { return this->Positional; }
+
+private:
+  std::map<std::string, std::string> Values;
+  std::vector<std::string> Positional;
+};
+
+/// A finite double, or UsageError naming the option.
+double ParseDouble(const std::string& text, const std::string& what);
+/// Comma-separated finite doubles.
+std::vector<double> ParseList(const std::string& text, const std::string& what);
+/// A value, a comma list, or START:STOP:STEP (inclusive, STEP > 0).
+/// At most maxCount values.
+std::vector<double> ParseRange(const std::string& text, const std::string& what, size_t maxCount);
+
+} // namespace shadinglab::cli

@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// shadinglab: the command-line front end. One subcommand per job.
+#include "Commands.h"
+
+#include <cstring>
+#include <exception>
+#include <iostream>
+
+namespace
+{
+
+const char* kUsage = "usage: shadinglab COMMAND [options]   (shadinglab COMMAND --help)\n"
+                     "commands:\n"
+                     "  brdf      tabulate a reflectance model or one of its terms as CSV\n";
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h"))
+  {
+    std::cout << kUsage;
+    return argc < 2 ? 2 : 0;
+  }
+  const std::string command = argv[1];
+  try
+  {
+    if (command == "brdf")
+    {
+      return shadinglab::cli::RunBrdf(argc - 2, argv + 2);
+    }
+    std::cerr << "shadinglab: error: unknown command '" << command << "'\n" << kUsage;
+    return 2;
+  }
+  catch (const shadinglab::cli::UsageError& e)
+  {
+    std::cerr << "shadinglab " << command << ": error: " << e.what() << "\n";
+    return 2;
+  }
+  catch (const std::exception& e)
+  {
+    std::cerr << "shadinglab " << command << ": error: " << e.what() << "\n";
+    return 1;
+  }
+}

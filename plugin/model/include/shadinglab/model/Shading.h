@@ -1,0 +1,251 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The illumination model of lecture slide 11, shared by every shading mode:
+//
+//   I_r = Ra Ia + sum_j I_Lj (N.Lj) dw_j (kd Rd + ks Rs)
+//
+// with Rd = rho / pi (Lambert, rho the diffuse colour) and Rs the specular
+// BRDF of the chosen model (Phong, Blinn-Phong or Cook-Torrance). The
+// modes (flat, Gouraud, Phong, fast Phong) differ only in *where* this is
+// evaluated; they all call Shade().
+#pragma once
+
+#include "shadinglab/model/Brdf.h"
+#include "shadinglab/model/Constants.h"
+#include "shadinglab/model/Fresnel.h"
+#include "shadinglab/model/Vec3.h"
+
+#include <string>
+
+namespace shadinglab
+{
+
+enum class ReflectanceModel
+{
+  Lambert,
+  Phong,
+  BlinnPhong,
+  CookTorrance,
+};
+
+/// Material parameters of the illumination model. Plain data, so it can be
+/// cast between float and double and uploaded to GLSL uniforms unchanged.
+template <typename T>
+struct Material
+{
+  ReflectanceModel model = ReflectanceModel::BlinnPhong;
+  /// Ambient reflectance Ra (slide 11).
+  Vec3<T> ambient{ T(0.05), T(0.05), T(0.05) };
+  /// Diffuse colour rho (albedo), Rd = rho / pi; per-vertex colours replace it.
+  Vec3<T> diffuseColor{ T(1), T(1), T(1) };
+  /// Specular colour for Phong and Blinn-Phong (Cook-Torrance takes its
+  /// colour from the Fresnel term instead).
+  Vec3<T> specularColor{ T(1), T(1), T(1) };
+  T kd = T(0.7);
+  T ks = T(0.3);
+  /// Exponent n of (R.V)^n and (N.H)^n.
+  T shininess = T(32);
+
+  // Cook-Torrance (slides 12-16).
+  BeckmannLobe<T> lobes[kMaxLobes] = {};
+  int lobeCount = 1;
+  /// Relative index of refraction per RGB channel.
+  Vec3<T> eta{ T(1.5), T(1.5), T(1.5) };
+  /// Extinction coefficient per channel; any k > 0 selects the conductor
+  /// Fresnel (complex index eta + i k).
+  Vec3<T> k{ T(0), T(0), T(0) };
+  SpecularVariant variant = SpecularVariant::CookTorrance1982;
+
+  template <typename U>
+  Material<U> Cast() const
+  {
+    Material<U> out;
+    out.model = model;
+    out.ambient = Vec3<U>(ambient);
+    out.diffuseColor = Vec3<U>(diffuseColor);
+    out.specularColor = Vec3<U>(specularColor);
+    out.kd = static_cast<U>(kd);
+    out.ks = static_cast<U>(ks);
+    out.shininess = static_cast<U>(shininess);
+    for (int i = 0; i < kMaxLobes; ++i)
+    {
+      out.lobes[i].weight = static_cast<U>(lobes[i].weight);
+      out.lobes[i].m = static_cast<U>(lobes[i].m);
+    }
+    out.lobeCount = lobeCount;
+    out.eta = Vec3<U>(eta);
+    out.k = Vec3<U>(k);
+    out.variant = variant;
+    return out;
+  }
+
+  bool IsConductor() const { return k.x > T(0) || k.y > T(0) || k.z > T(0); }
+};
+
+/**
+ * Checks a material against the model's domain. Returns an empty string when
+ * valid, else a one-line description of the first problem (kd + ks > 1,
+ * negative or non-finite values, eta <= 0, mixture weights not summing to 1,
+ * shininess out of [0, kMaxShininess], ...).
+ */
+std::string ValidateMaterial(const Material<double>& material);
+
+enum class LightType
+{
+  Directional,
+  Point,
+};
+
+/// A light of slide 11: intensity I_L over a solid angle dw.
+template <typename T>
+struct Light
+{
+  LightType type = LightType::Directional;
+  /// Directional: unit direction *towards* the light. Point: position.
+  Vec3<T> vector{ T(0), T(0), T(1) };
+  Vec3<T> intensity{ T(1), T(1), T(1) };
+  /// Solid angle dw. The default pi makes a unit white light on a white
+  /// Lambertian surface (kd = 1) facing it give intensity 1: I_L dw Rd = 1,
+  /// the scale of the classic (unnormalized) Phong model.
+  T solidAngle = kPi<T>;
+  /// Point lights: I_L / (c0 + c1 d + c2 d^2) (OpenGL's fixed-function form).
+  /// (1, 0, 0) disables attenuation.
+  Vec3<T> attenuation{ T(1), T(0), T(0) };
+
+  template <typename U>
+  Light<U> Cast() const
+  {
+    Light<U> out;
+    out.type = type;
+    out.vector = Vec3<U>(vector);
+    out.intensity = Vec3<U>(intensity);
+    out.solidAngle = static_cast<U>(solidAngle);
+    out.attenuation = Vec3<U>(attenuation);
+    return out;
+  }
+};
+
+/// The lights and ambient intensity Ia of one scene.
+template <typename T>
+struct Lighting
+{
+  Light<T> lights[kMaxLights] = {};
+  int lightCount = 1;
+  Vec3<T> ambientIntensity{ T(1), T(1), T(1) };
+
+  template <typename U>
+  Lighting<U> Cast() const
+  {
+    Lighting<U> out;
+    for (int i = 0; i < kMaxLights; ++i)
+    {
+      out.lights[i] = lights[i].template Cast<U>();
+    }
+    out.lightCount = lightCount;
+    out.ambientIntensity = Vec3<U>(ambientIntensity);
+    return out;
+  }
+};
+
+/// Direction to the light from P and the irradiance factor I_L dw
+/// (attenuated for point lights). Returns false when the light is at P.
+template <typename T>
+bool LightIncidence(const Light<T>& light, const Vec3<T>& P, Vec3<T>& L, Vec3<T>& irradiance)
+{
+  if (light.type == LightType::Directional)
+  {
+    L = NormalizeOr(light.vector, Vec3<T>(T(0), T(0), T(1)));
+    irradiance = light.intensity * light.solidAngle;
+    return true;
+  }
+  const Vec3<T> toLight = light.vector - P;
+  const T d = Length(toLight);
+  if (!(d > T(0)))
+  {
+    return false;
+  }
+  L = toLight / d;
+  const T attenuation =
+    light.attenuation.x + light.attenuation.y * d + light.attenuation.z * d * d;
+  // Validation keeps c0 > 0 or the other terms positive; a zero sum at d > 0
+  // cannot happen, but guard anyway so no Inf reaches a pixel.
+  irradiance = light.intensity * (light.solidAngle / std::max(attenuation, T(1e-30)));
+  return true;
+}
+
+/**
+ * kd Rd + ks Rs for one pair of directions: the BRDF (1/sr) of slide 12.
+ * N, L, V unit, pointing away from the surface.
+ */
+template <typename T>
+Vec3<T> EvaluateBrdf(
+  const Material<T>& material, const Vec3<T>& diffuseColor, const Vec3<T>& N, const Vec3<T>& L,
+  const Vec3<T>& V)
+{
+  const T NoL = Dot(N, L);
+  const T NoV = Dot(N, V);
+  if (!(NoL > T(0)) || !(NoV > T(0)))
+  {
+    return {};
+  }
+  const Vec3<T> diffuse = diffuseColor * (material.kd * Fd_Lambert<T>());
+  switch (material.model)
+  {
+    case ReflectanceModel::Lambert:
+      return diffuse;
+    case ReflectanceModel::Phong:
+    {
+      const T RoV = Dot(Reflect(L, N), V);
+      return diffuse + material.specularColor * (material.ks * Fs_Phong(RoV, material.shininess));
+    }
+    case ReflectanceModel::BlinnPhong:
+    {
+      const T NoH = Dot(N, HalfVector(L, V, N));
+      return diffuse +
+        material.specularColor * (material.ks * Fs_BlinnPhong(NoH, material.shininess));
+    }
+    case ReflectanceModel::CookTorrance:
+    {
+      const Vec3<T> H = HalfVector(L, V, N);
+      const T NoH = Dot(N, H);
+      const T VoH = std::max(Dot(V, H), T(0));
+      const T D = D_BeckmannMixture(NoH, material.lobes, material.lobeCount);
+      const T G = G_CookTorrance(NoH, NoV, NoL, VoH);
+      // F is evaluated at theta_i = acos(L.H) (slide 15); L.H = V.H.
+      const Vec3<T> F = F_RGB(VoH, material.eta, material.k);
+      const T DG = Fs_CookTorrance(T(1), D, G, NoL, NoV, material.variant);
+      return diffuse + F * (material.ks * DG);
+    }
+  }
+  return diffuse;
+}
+
+/**
+ * The illumination model of slide 11 at one surface point:
+ *   I_r = Ra Ia + sum_j I_Lj (N.Lj) dw_j (kd Rd + ks Rs).
+ * @param P position (for point lights), N unit normal, V unit direction to
+ *   the viewer. Returns linear RGB, finite for finite input.
+ */
+template <typename T>
+Vec3<T> Shade(
+  const Material<T>& material, const Lighting<T>& lighting, const Vec3<T>& diffuseColor,
+  const Vec3<T>& P, const Vec3<T>& N, const Vec3<T>& V)
+{
+  Vec3<T> result = material.ambient * lighting.ambientIntensity;
+  for (int j = 0; j < lighting.lightCount; ++j)
+  {
+    Vec3<T> L, irradiance;
+    if (!LightIncidence(lighting.lights[j], P, L, irradiance))
+    {
+      continue;
+    }
+    const T NoL = Dot(N, L);
+    if (!(NoL > T(0)))
+    {
+      continue;
+    }
+    result += irradiance * EvaluateBrdf(material, diffuseColor, N, L, V) * NoL;
+  }
+  return result;
+}
+
+} // namespace shadinglab

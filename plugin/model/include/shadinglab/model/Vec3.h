@@ -1,0 +1,133 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Small 3-vector used by the shading model. Templated on the scalar so every
+// formula exists in float (what the GPU and the CPU renderer use) and double
+// (the reference the float path is tested against).
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+
+namespace shadinglab
+{
+
+template <typename T>
+struct Vec3
+{
+  T x{}, y{}, z{};
+
+  constexpr Vec3() = default;
+  constexpr Vec3(T x_, T y_, T z_)
+    : x(x_)
+    , y(y_)
+    , z(z_)
+  {
+  }
+  template <typename U>
+  constexpr explicit Vec3(const Vec3<U>& o)
+    : x(static_cast<T>(o.x))
+    , y(static_cast<T>(o.y))
+    , z(static_cast<T>(o.z))
+  {
+  }
+
+  constexpr T operator[](int i) const { return i == 0 ? x : (i == 1 ? y : z); }
+  T& operator[](int i) { return i == 0 ? x : (i == 1 ? y : z); }
+
+  constexpr Vec3 operator+(const Vec3& o) const { return { x + o.x, y + o.y, z + o.z }; }
+  constexpr Vec3 operator-(const Vec3& o) const { return { x - o.x, y - o.y, z - o.z }; }
+  constexpr Vec3 operator-() const { return { -x, -y, -z }; }
+  constexpr Vec3 operator*(T s) const { return { x * s, y * s, z * s }; }
+  constexpr Vec3 operator/(T s) const { return { x / s, y / s, z / s }; }
+  // Component-wise product: colours (RGB) share this type.
+  constexpr Vec3 operator*(const Vec3& o) const { return { x * o.x, y * o.y, z * o.z }; }
+  Vec3& operator+=(const Vec3& o)
+  {
+    x += o.x;
+    y += o.y;
+    z += o.z;
+    return *this;
+  }
+  Vec3& operator*=(T s)
+  {
+    x *= s;
+    y *= s;
+    z *= s;
+    return *this;
+  }
+};
+
+template <typename T>
+constexpr Vec3<T> operator*(T s, const Vec3<T>& v)
+{
+  return v * s;
+}
+
+template <typename T>
+constexpr T Dot(const Vec3<T>& a, const Vec3<T>& b)
+{
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+
+template <typename T>
+constexpr Vec3<T> Cross(const Vec3<T>& a, const Vec3<T>& b)
+{
+  return { a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x };
+}
+
+template <typename T>
+T MaxAbsComponent(const Vec3<T>& v)
+{
+  return std::max(std::abs(v.x), std::max(std::abs(v.y), std::abs(v.z)));
+}
+
+template <typename T>
+T Length(const Vec3<T>& v)
+{
+  // Scale by the largest component first so neither huge (1e30f squared
+  // overflows float) nor denormal components (whose squares flush to 0) lose
+  // the length.
+  const T s = MaxAbsComponent(v);
+  if (!(s > T(0)) || !std::isfinite(s))
+  {
+    return s;
+  }
+  const Vec3<T> u = v / s;
+  return s * std::sqrt(Dot(u, u));
+}
+
+/**
+ * Unit vector along v, or `fallback` when v has no usable direction (zero,
+ * NaN or infinite components). Robust against overflow and denormals: the
+ * vector is scaled by its largest component before squaring.
+ */
+template <typename T>
+Vec3<T> NormalizeOr(const Vec3<T>& v, const Vec3<T>& fallback)
+{
+  const T s = MaxAbsComponent(v);
+  if (!(s > T(0)) || !std::isfinite(s))
+  {
+    return fallback;
+  }
+  const Vec3<T> u = v / s;
+  return u / std::sqrt(Dot(u, u));
+}
+
+template <typename T>
+bool IsFinite(const Vec3<T>& v)
+{
+  return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+/// Mirror direction of L about N (both unit, pointing away from the surface).
+template <typename T>
+constexpr Vec3<T> Reflect(const Vec3<T>& L, const Vec3<T>& N)
+{
+  return N * (T(2) * Dot(N, L)) - L;
+}
+
+using Vec3f = Vec3<float>;
+using Vec3d = Vec3<double>;
+using RGBf = Vec3<float>;
+using RGBd = Vec3<double>;
+
+} // namespace shadinglab

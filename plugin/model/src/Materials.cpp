@@ -1,0 +1,243 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "shadinglab/model/Materials.h"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace shadinglab
+{
+
+namespace
+{
+
+bool IsFiniteNonNegative(const Vec3<double>& v)
+{
+  return IsFinite(v) && v.x >= 0.0 && v.y >= 0.0 && v.z >= 0.0;
+}
+
+/// Tolerance on kd + ks <= 1 and on sum_k w_k = 1: values typed with a few
+/// decimals (0.7 + 0.3) must pass despite binary rounding (~1e-16), while a
+/// real violation (1.01) must not. 1e-9 sits between the two.
+constexpr double kSumTolerance = 1e-9;
+
+Material<double> Conductor(const Vec3<double>& eta, const Vec3<double>& k)
+{
+  Material<double> m;
+  m.model = ReflectanceModel::CookTorrance;
+  m.kd = 0.0;
+  m.ks = 1.0;
+  m.eta = eta;
+  m.k = k;
+  m.lobes[0] = { 1.0, 0.3 };
+  m.lobeCount = 1;
+  m.ambient = { 0.02, 0.02, 0.02 };
+  return m;
+}
+
+std::vector<MaterialPreset> MakePresets()
+{
+  std::vector<MaterialPreset> presets;
+  {
+    Material<double> m;
+    m.model = ReflectanceModel::CookTorrance;
+    m.diffuseColor = { 0.8, 0.1, 0.1 };
+    m.kd = 0.8;
+    m.ks = 0.2;
+    m.eta = { 1.5, 1.5, 1.5 };
+    m.lobes[0] = { 1.0, 0.15 };
+    presets.push_back({ "plastic",
+      "Cook & Torrance 1982 sec. 5: plastic = coloured diffuse substrate under a "
+      "colourless dielectric specular layer; eta = 1.5 typical of polymers",
+      m });
+  }
+  {
+    Material<double> m;
+    m.model = ReflectanceModel::CookTorrance;
+    m.diffuseColor = { 1.0, 1.0, 1.0 };
+    m.kd = 0.0;
+    m.ks = 1.0;
+    // Schott N-BK7 (Sellmeier fit, refractiveindex.info): 1.5145 at 650 nm,
+    // 1.5185 at 550 nm, 1.5253 at 450 nm.
+    m.eta = { 1.5145, 1.5185, 1.5253 };
+    m.lobes[0] = { 1.0, 0.05 };
+    presets.push_back({ "glass",
+      "Schott N-BK7 Sellmeier dispersion at 650/550/450 nm (refractiveindex.info, CC0)", m });
+  }
+  presets.push_back({ "gold",
+    "Johnson & Christy 1972, Phys. Rev. B 6, 4370: samples at 1.88/2.26/2.75 eV "
+    "(659/549/451 nm) for R/G/B",
+    Conductor({ 0.14, 0.43, 1.38 }, { 3.697, 2.455, 1.914 }) });
+  presets.push_back({ "copper",
+    "Hagemann, Gudat & Kunz 1974, DESY SR-74/7, table 3: samples at 620/539/443 nm "
+    "for R/G/B",
+    Conductor({ 0.272, 1.037, 1.169 }, { 3.24, 2.59, 2.36 }) });
+  presets.push_back({ "silver",
+    "Hagemann, Gudat & Kunz 1974, DESY SR-74/7: samples at 620/496/413 nm for R/G/B",
+    Conductor({ 0.269, 0.237, 0.226 }, { 4.18, 3.09, 2.28 }) });
+  presets.push_back({ "aluminium",
+    "Rakic 1995 Drude-Lorentz fit as tabulated in OSPRay's spectrum.h: samples at "
+    "640/535/465 nm for R/G/B",
+    Conductor({ 1.49, 0.952, 0.686 }, { 7.61, 6.45, 5.64 }) });
+  return presets;
+}
+
+} // namespace
+
+const std::vector<MaterialPreset>& MaterialPresets()
+{
+  static const std::vector<MaterialPreset> presets = MakePresets();
+  return presets;
+}
+
+const MaterialPreset* FindMaterialPreset(const std::string& name)
+{
+  for (const auto& preset : MaterialPresets())
+  {
+    if (preset.name == name)
+    {
+      return &preset;
+    }
+  }
+  if (name == "aluminum")
+  {
+    return FindMaterialPreset("aluminium");
+  }
+  return nullptr;
+}
+
+std::string ValidateMaterial(const Material<double>& m)
+{
+  std::ostringstream err;
+  if (!std::isfinite(m.kd) || !std::isfinite(m.ks) || m.kd < 0.0 || m.ks < 0.0)
+  {
+    err << "kd and ks must be finite and >= 0 (got kd=" << m.kd << ", ks=" << m.ks << ")";
+    return err.str();
+  }
+  if (m.kd + m.ks > 1.0 + kSumTolerance)
+  {
+    err << "kd + ks must be <= 1 (energy conservation, slide 12): got kd=" << m.kd
+        << " + ks=" << m.ks << " = " << (m.kd + m.ks);
+    return err.str();
+  }
+  if (!IsFiniteNonNegative(m.ambient) || !IsFiniteNonNegative(m.diffuseColor) ||
+    !IsFiniteNonNegative(m.specularColor))
+  {
+    return "colours (ambient, diffuse, specular) must be finite and >= 0";
+  }
+  if (m.diffuseColor.x > 1.0 || m.diffuseColor.y > 1.0 || m.diffuseColor.z > 1.0)
+  {
+    return "diffuse colour (albedo) must be <= 1 per channel";
+  }
+  if (!std::isfinite(m.shininess) || m.shininess < 0.0 || m.shininess > kMaxShininess<double>)
+  {
+    err << "shininess must be in [0, " << kMaxShininess<double> << "] (got " << m.shininess
+        << ")";
+    return err.str();
+  }
+  if (m.model == ReflectanceModel::CookTorrance)
+  {
+    if (m.lobeCount < 1 || m.lobeCount > kMaxLobes)
+    {
+      err << "Beckmann mixture needs 1 to " << kMaxLobes << " lobes (got " << m.lobeCount << ")";
+      return err.str();
+    }
+    double weightSum = 0.0;
+    for (int i = 0; i < m.lobeCount; ++i)
+    {
+      const auto& lobe = m.lobes[i];
+      if (!std::isfinite(lobe.m) || lobe.m <= 0.0)
+      {
+        err << "roughness m must be finite and > 0 (got m=" << lobe.m << ")";
+        return err.str();
+      }
+      if (lobe.m < kMinRoughness<double> || lobe.m > kMaxRoughness<double>)
+      {
+        err << "roughness m must be in [" << kMinRoughness<double> << ", "
+            << kMaxRoughness<double> << "] (got " << lobe.m << ")";
+        return err.str();
+      }
+      if (!std::isfinite(lobe.weight) || lobe.weight < 0.0)
+      {
+        err << "mixture weight must be finite and >= 0 (got " << lobe.weight << ")";
+        return err.str();
+      }
+      weightSum += lobe.weight;
+    }
+    if (std::abs(weightSum - 1.0) > kSumTolerance)
+    {
+      err << "mixture weights must sum to 1 (got " << weightSum << ")";
+      return err.str();
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      if (!std::isfinite(m.eta[c]) || m.eta[c] <= 0.0)
+      {
+        err << "eta must be finite and > 0 (got " << m.eta[c] << ")";
+        return err.str();
+      }
+      if (!std::isfinite(m.k[c]) || m.k[c] < 0.0)
+      {
+        err << "k must be finite and >= 0 (got " << m.k[c] << ")";
+        return err.str();
+      }
+    }
+  }
+  return {};
+}
+
+bool F_SpectralToRGB(
+  double cosTheta_i, const std::vector<SpectralIndexSample>& samples, Vec3<double>& rgb)
+{
+  // Band edges in nm: blue [380, 490), green [490, 590), red [590, 780].
+  const double lower[3] = { 590.0, 490.0, 380.0 };
+  const double upper[3] = { 780.0, 590.0, 490.0 };
+  const double centre[3] = { 650.0, 540.0, 440.0 };
+  double sum[3] = { 0, 0, 0 };
+  int count[3] = { 0, 0, 0 };
+  bool any = false;
+  for (const auto& s : samples)
+  {
+    if (!(s.wavelength >= 380.0 && s.wavelength <= 780.0))
+    {
+      continue;
+    }
+    any = true;
+    const double F = F_Conductor(cosTheta_i, s.eta, s.k);
+    for (int c = 0; c < 3; ++c)
+    {
+      const bool inBand = s.wavelength >= lower[c] &&
+        (s.wavelength < upper[c] || (c == 0 && s.wavelength <= upper[c]));
+      if (inBand)
+      {
+        sum[c] += F;
+        ++count[c];
+      }
+    }
+  }
+  if (!any)
+  {
+    return false;
+  }
+  for (int c = 0; c < 3; ++c)
+  {
+    if (count[c] > 0)
+    {
+      rgb[c] = sum[c] / count[c];
+      continue;
+    }
+    double best = std::numeric_limits<double>::infinity();
+    for (const auto& s : samples)
+    {
+      if (s.wavelength >= 380.0 && s.wavelength <= 780.0 &&
+        std::abs(s.wavelength - centre[c]) < best)
+      {
+        best = std::abs(s.wavelength - centre[c]);
+        rgb[c] = F_Conductor(cosTheta_i, s.eta, s.k);
+      }
+    }
+  }
+  return true;
+}
+
+} // namespace shadinglab

@@ -29,7 +29,8 @@ int main(int argc, char** argv)
     {
       return shadinglab::cli::RunBrdf(argc - 2, argv + 2);
     }
-    std::cerr << "shadinglab: error: unknown command '" << command << "'\n" << kUsage;
+    std::cerr << "shadinglab: error: unknown command '" << command
+              << "' (see shadinglab --help)\n";
     return 2;
   }
   catch (const shadinglab::cli::UsageError& e)

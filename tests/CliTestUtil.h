@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Runs the real shadinglab binary and captures exit status, stdout, stderr.
+#pragma once
+
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <sys/wait.h>
+#include <unistd.h>
+
+namespace shadinglab::testing
+{
+
+struct RunResult
+{
+  int status = -1;
+  std::string out;
+  std::string err;
+};
+
+inline RunResult RunCli(const std::string& arguments)
+{
+  char errPath[] = "/tmp/shadinglab_cli_stderr_XXXXXX";
+  const int fd = mkstemp(errPath);
+  close(fd);
+  const std::string command =
+    std::string(SHADINGLAB_CLI) + " " + arguments + " 2>" + errPath;
+  RunResult result;
+  FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe)
+  {
+    return result;
+  }
+  char buffer[4096];
+  size_t n = 0;
+  while ((n = fread(buffer, 1, sizeof(buffer), pipe)) > 0)
+  {
+    result.out.append(buffer, n);
+  }
+  const int raw = pclose(pipe);
+  result.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
+  std::ifstream errFile(errPath);
+  std::stringstream ss;
+  ss << errFile.rdbuf();
+  result.err = ss.str();
+  std::remove(errPath);
+  return result;
+}
+
+inline int CountLines(const std::string& text)
+{
+  int n = 0;
+  for (char c : text)
+  {
+    n += c == '\n';
+  }
+  return n;
+}
+
+} // namespace shadinglab::testing

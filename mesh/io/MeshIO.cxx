@@ -1,0 +1,419 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "MeshIO.h"
+
+#include <vtkCellArray.h>
+#include <vtkDataSetSurfaceFilter.h>
+#include <vtkIdList.h>
+#include <vtkNew.h>
+#include <vtkOBJReader.h>
+#include <vtkOBJWriter.h>
+#include <vtkPLYReader.h>
+#include <vtkPLYWriter.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataWriter.h>
+#include <vtkSTLReader.h>
+#include <vtkSTLWriter.h>
+#include <vtkSmartPointer.h>
+#include <vtkTriangleFilter.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkDataSetReader.h>
+#include <vtkXMLPolyDataReader.h>
+#include <vtkXMLPolyDataWriter.h>
+#include <vtkXMLUnstructuredGridReader.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <sys/stat.h>
+#include <vector>
+
+namespace shadinglab
+{
+
+namespace
+{
+
+std::string Extension(const std::string& path)
+{
+  const auto dot = path.find_last_of('.');
+  if (dot == std::string::npos)
+  {
+    return {};
+  }
+  std::string ext = path.substr(dot + 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext;
+}
+
+/// Upper bounds on OFF header counts: a mesh beyond 2^31 elements is beyond
+/// vtkIdType-safe allocation on this machine (24 GiB) and signals a corrupt
+/// header rather than a real mesh.
+constexpr long long kMaxOffElements = 1LL << 31;
+
+vtkSmartPointer<vtkPolyData> ReadOff(const std::string& path)
+{
+  std::ifstream in(path);
+  if (!in)
+  {
+    throw MeshError("cannot open '" + path + "'");
+  }
+  // Non-empty lines split into tokens, '#' comments removed. OFF is
+  // line-oriented for faces: tokens after a face's indices are its colour,
+  // which is ignored.
+  std::vector<std::vector<std::string>> lines;
+  std::string line;
+  while (std::getline(in, line))
+  {
+    const auto hash = line.find('#');
+    if (hash != std::string::npos)
+    {
+      line.resize(hash);
+    }
+    std::istringstream ls(line);
+    std::vector<std::string> tokens;
+    std::string t;
+    while (ls >> t)
+    {
+      tokens.push_back(t);
+    }
+    if (!tokens.empty())
+    {
+      lines.push_back(std::move(tokens));
+    }
+  }
+  const std::string bad = "malformed OFF file '" + path + "': ";
+  auto number = [&](const std::string& t, const char* what) -> double {
+    char* end = nullptr;
+    const double v = std::strtod(t.c_str(), &end);
+    if (end == t.c_str() || *end != '\0')
+    {
+      throw MeshError(bad + "'" + t + "' is not a number (" + what + ")");
+    }
+    return v;
+  };
+  if (lines.empty())
+  {
+    throw MeshError("empty file '" + path + "'");
+  }
+  size_t row = 0;
+  std::vector<std::string> counts = lines[0];
+  if (counts[0] == "OFF")
+  {
+    counts.erase(counts.begin());
+    if (counts.empty())
+    {
+      if (lines.size() < 2)
+      {
+        throw MeshError(bad + "missing vertex and face counts");
+      }
+      counts = lines[++row];
+    }
+  }
+  else if (counts[0].size() > 3 && counts[0].compare(counts[0].size() - 3, 3, "OFF") == 0)
+  {
+    throw MeshError("unsupported OFF variant '" + counts[0] + "' in '" + path + "'");
+  }
+  ++row;
+  if (counts.size() < 2)
+  {
+    throw MeshError(bad + "missing vertex and face counts");
+  }
+  const double nv = number(counts[0], "vertex count");
+  const double nf = number(counts[1], "face count");
+  if (nv < 0 || nf < 0 || nv != std::floor(nv) || nf != std::floor(nf) || nv > kMaxOffElements ||
+    nf > kMaxOffElements)
+  {
+    throw MeshError(bad + "bad vertex/face counts");
+  }
+  if (lines.size() < row + static_cast<size_t>(nv) + static_cast<size_t>(nf))
+  {
+    throw MeshError(bad + "fewer lines than the header's " + counts[0] + " vertices and " +
+      counts[1] + " faces");
+  }
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(static_cast<vtkIdType>(nv));
+  for (vtkIdType i = 0; i < static_cast<vtkIdType>(nv); ++i, ++row)
+  {
+    const auto& tokens = lines[row];
+    if (tokens.size() < 3)
+    {
+      throw MeshError(bad + "vertex " + std::to_string(i) + " has fewer than 3 coordinates");
+    }
+    double p[3];
+    for (int c = 0; c < 3; ++c)
+    {
+      p[c] = number(tokens[c], "vertex coordinate");
+    }
+    points->SetPoint(i, p);
+  }
+  auto polys = vtkSmartPointer<vtkCellArray>::New();
+  std::vector<vtkIdType> ids;
+  for (vtkIdType f = 0; f < static_cast<vtkIdType>(nf); ++f, ++row)
+  {
+    const auto& tokens = lines[row];
+    const double n = number(tokens[0], "face size");
+    if (n < 1 || n != std::floor(n) || n + 1 > static_cast<double>(tokens.size()))
+    {
+      throw MeshError(bad + "bad vertex count in face " + std::to_string(f));
+    }
+    ids.resize(static_cast<size_t>(n));
+    for (size_t k = 0; k < ids.size(); ++k)
+    {
+      const double v = number(tokens[k + 1], "face index");
+      if (v < 0 || v >= nv || v != std::floor(v))
+      {
+        throw MeshError(bad + "vertex index out of range in face " + std::to_string(f));
+      }
+      ids[k] = static_cast<vtkIdType>(v);
+    }
+    polys->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+  }
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->SetPoints(points);
+  mesh->SetPolys(polys);
+  return mesh;
+}
+
+void WriteOff(vtkPolyData* mesh, const std::string& path)
+{
+  std::ofstream out(path);
+  if (!out)
+  {
+    throw MeshError("cannot write '" + path + "'");
+  }
+  out.precision(17);
+  out << "OFF\n" << mesh->GetNumberOfPoints() << " " << mesh->GetNumberOfPolys() << " 0\n";
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    mesh->GetPoint(i, p);
+    out << p[0] << " " << p[1] << " " << p[2] << "\n";
+  }
+  vtkNew<vtkIdList> ids;
+  vtkCellArray* polys = mesh->GetPolys();
+  for (vtkIdType c = 0; c < polys->GetNumberOfCells(); ++c)
+  {
+    polys->GetCellAtId(c, ids);
+    out << ids->GetNumberOfIds();
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+    {
+      out << " " << ids->GetId(k);
+    }
+    out << "\n";
+  }
+  if (!out)
+  {
+    throw MeshError("failed writing '" + path + "'");
+  }
+}
+
+template <typename Reader>
+vtkSmartPointer<vtkPolyData> ReadWith(const std::string& path)
+{
+  auto reader = vtkSmartPointer<Reader>::New();
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  if (reader->GetErrorCode() != 0)
+  {
+    throw MeshError("cannot read '" + path + "': malformed or unsupported file");
+  }
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->ShallowCopy(reader->GetOutput());
+  return out;
+}
+
+} // namespace
+
+void ValidateMesh(vtkPolyData* mesh, const std::string& what)
+{
+  if (!mesh || mesh->GetNumberOfPoints() == 0 || mesh->GetNumberOfPolys() == 0)
+  {
+    throw MeshError("empty mesh: '" + what + "' has no polygons");
+  }
+  vtkPoints* pts = mesh->GetPoints();
+  for (vtkIdType i = 0; i < pts->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    pts->GetPoint(i, p);
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2]))
+    {
+      throw MeshError("non-finite (NaN or Inf) coordinates at point " + std::to_string(i) +
+        " of '" + what + "'");
+    }
+  }
+}
+
+vtkPolyData* ReadMesh(const std::string& path)
+{
+  struct stat st;
+  if (stat(path.c_str(), &st) != 0)
+  {
+    throw MeshError("cannot read '" + path + "': no such file");
+  }
+  if (!S_ISREG(st.st_mode))
+  {
+    throw MeshError("cannot read '" + path + "': not a regular file");
+  }
+  if (st.st_size == 0)
+  {
+    throw MeshError("cannot read '" + path + "': empty file");
+  }
+  const std::string ext = Extension(path);
+  vtkSmartPointer<vtkPolyData> mesh;
+  // VTK readers report problems through vtkErrorMacro to stderr; silence
+  // them so the user sees our one-line message only.
+  const int warnings = vtkObject::GetGlobalWarningDisplay();
+  vtkObject::GlobalWarningDisplayOff();
+  try
+  {
+    if (ext == "vtp")
+    {
+      mesh = ReadWith<vtkXMLPolyDataReader>(path);
+    }
+    else if (ext == "ply")
+    {
+      mesh = ReadWith<vtkPLYReader>(path);
+    }
+    else if (ext == "obj")
+    {
+      mesh = ReadWith<vtkOBJReader>(path);
+    }
+    else if (ext == "stl")
+    {
+      mesh = ReadWith<vtkSTLReader>(path);
+    }
+    else if (ext == "off")
+    {
+      mesh = ReadOff(path);
+    }
+    else if (ext == "vtk" || ext == "vtu")
+    {
+      vtkSmartPointer<vtkDataSet> data;
+      if (ext == "vtk")
+      {
+        auto reader = vtkSmartPointer<vtkDataSetReader>::New();
+        reader->SetFileName(path.c_str());
+        reader->Update();
+        if (reader->GetErrorCode() != 0 || !reader->GetOutput())
+        {
+          throw MeshError("cannot read '" + path + "': malformed or unsupported legacy VTK file");
+        }
+        data = reader->GetOutput();
+      }
+      else
+      {
+        auto reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
+        reader->SetFileName(path.c_str());
+        reader->Update();
+        if (reader->GetErrorCode() != 0)
+        {
+          throw MeshError("cannot read '" + path + "': malformed .vtu file");
+        }
+        data = reader->GetOutput();
+      }
+      if (auto* poly = vtkPolyData::SafeDownCast(data))
+      {
+        mesh = vtkSmartPointer<vtkPolyData>::New();
+        mesh->ShallowCopy(poly);
+      }
+      else
+      {
+        auto surface = vtkSmartPointer<vtkDataSetSurfaceFilter>::New();
+        surface->SetInputData(data);
+        surface->Update();
+        mesh = vtkSmartPointer<vtkPolyData>::New();
+        mesh->ShallowCopy(surface->GetOutput());
+      }
+    }
+    else
+    {
+      throw MeshError("cannot read '" + path +
+        "': unknown extension (expected .vtp .vtk .vtu .ply .obj .stl .off)");
+    }
+  }
+  catch (...)
+  {
+    vtkObject::SetGlobalWarningDisplay(warnings);
+    throw;
+  }
+  vtkObject::SetGlobalWarningDisplay(warnings);
+  if (!mesh)
+  {
+    throw MeshError("cannot read '" + path + "'");
+  }
+  if (mesh->GetNumberOfStrips() > 0)
+  {
+    vtkNew<vtkTriangleFilter> triangles;
+    triangles->SetInputData(mesh);
+    triangles->PassVertsOff();
+    triangles->PassLinesOff();
+    triangles->Update();
+    mesh->ShallowCopy(triangles->GetOutput());
+  }
+  ValidateMesh(mesh, path);
+  mesh->Register(nullptr);
+  return mesh;
+}
+
+void WriteMesh(vtkPolyData* mesh, const std::string& path)
+{
+  const std::string ext = Extension(path);
+  int ok = 0;
+  if (ext == "vtp")
+  {
+    vtkNew<vtkXMLPolyDataWriter> w;
+    w->SetInputData(mesh);
+    w->SetFileName(path.c_str());
+    w->SetDataModeToBinary();
+    ok = w->Write();
+  }
+  else if (ext == "vtk")
+  {
+    vtkNew<vtkPolyDataWriter> w;
+    w->SetInputData(mesh);
+    w->SetFileName(path.c_str());
+    ok = w->Write();
+  }
+  else if (ext == "ply")
+  {
+    vtkNew<vtkPLYWriter> w;
+    w->SetInputData(mesh);
+    w->SetFileName(path.c_str());
+    w->SetFileTypeToBinary();
+    ok = w->Write();
+  }
+  else if (ext == "stl")
+  {
+    vtkNew<vtkSTLWriter> w;
+    w->SetInputData(mesh);
+    w->SetFileName(path.c_str());
+    w->SetFileTypeToBinary();
+    ok = w->Write();
+  }
+  else if (ext == "obj")
+  {
+    vtkNew<vtkOBJWriter> w;
+    w->SetInputData(mesh);
+    w->SetFileName(path.c_str());
+    ok = w->Write();
+  }
+  else if (ext == "off")
+  {
+    WriteOff(mesh, path);
+    ok = 1;
+  }
+  else
+  {
+    throw MeshError("cannot write '" + path + "': unknown extension (expected .vtp .vtk .ply .obj .stl .off)");
+  }
+  if (!ok)
+  {
+    throw MeshError("failed writing '" + path + "'");
+  }
+}
+
+} // namespace shadinglab

@@ -1,0 +1,115 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Bad input gets a clear MeshError naming the problem, never a crash.
+#include "AnalyticMeshes.h"
+#include "MeshIO.h"
+
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+namespace
+{
+
+std::string TempFile(const std::string& name, const std::string& contents)
+{
+  const std::string path = ::testing::TempDir() + "/shadinglab_meshio_" + name;
+  std::ofstream(path) << contents;
+  return path;
+}
+
+std::string ErrorOf(const std::string& path)
+{
+  try
+  {
+    vtkSmartPointer<vtkPolyData> mesh;
+    mesh.TakeReference(shadinglab::ReadMesh(path));
+  }
+  catch (const shadinglab::MeshError& e)
+  {
+    return e.what();
+  }
+  return {};
+}
+
+} // namespace
+
+TEST(MeshIOTest, MissingFile)
+{
+  EXPECT_NE(ErrorOf("/nonexistent/x.vtp").find("no such file"), std::string::npos);
+}
+
+TEST(MeshIOTest, EmptyFile)
+{
+  EXPECT_NE(ErrorOf(TempFile("empty.stl", "")).find("empty file"), std::string::npos);
+}
+
+TEST(MeshIOTest, UnknownExtension)
+{
+  EXPECT_NE(ErrorOf(TempFile("mesh.xyz", "1 2 3\n")).find("unknown extension"), std::string::npos);
+}
+
+TEST(MeshIOTest, GarbageInEveryFormat)
+{
+  for (const char* ext : { "vtp", "vtk", "ply", "obj", "stl", "off", "vtu" })
+  {
+    const std::string err =
+      ErrorOf(TempFile(std::string("garbage.") + ext, "this is not a mesh\n\x01\x02garbage\n"));
+    EXPECT_FALSE(err.empty()) << ext;
+    EXPECT_EQ(err.find('\n'), std::string::npos) << ext << ": " << err;
+  }
+}
+
+TEST(MeshIOTest, NaNCoordinatesAreRejected)
+{
+  const std::string err =
+    ErrorOf(TempFile("nan.off", "OFF\n3 1 0\n0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n"));
+  EXPECT_NE(err.find("non-finite"), std::string::npos) << err;
+  EXPECT_NE(err.find("point 1"), std::string::npos) << err;
+}
+
+TEST(MeshIOTest, MeshWithoutPolygonsIsEmpty)
+{
+  const std::string err = ErrorOf(TempFile("nofaces.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n"));
+  EXPECT_NE(err.find("empty mesh"), std::string::npos) << err;
+}
+
+TEST(MeshIOTest, MalformedOff)
+{
+  EXPECT_NE(ErrorOf(TempFile("short.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n")).find("malformed"),
+    std::string::npos);
+  EXPECT_NE(ErrorOf(TempFile("index.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n"))
+              .find("out of range"),
+    std::string::npos);
+  EXPECT_NE(ErrorOf(TempFile("count.off", "OFF\n-3 1 0\n")).find("counts"), std::string::npos);
+}
+
+TEST(MeshIOTest, OffRoundTripWithFaceColours)
+{
+  const std::string path =
+    TempFile("colour.off", "OFF\n# comment\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n"
+                           "3 0 1 2 255 0 0\n3 0 2 3 0 255 0\n");
+  vtkSmartPointer<vtkPolyData> mesh;
+  mesh.TakeReference(shadinglab::ReadMesh(path));
+  EXPECT_EQ(mesh->GetNumberOfPolys(), 2);
+  EXPECT_EQ(mesh->GetNumberOfPoints(), 4);
+}
+
+TEST(MeshIOTest, EveryWriterRoundTrips)
+{
+  vtkSmartPointer<vtkPolyData> sphere;
+  sphere.TakeReference(shadinglab::datasets::MakeIcosphere(1));
+  for (const char* ext : { "vtp", "vtk", "ply", "obj", "stl", "off" })
+  {
+    const std::string path = ::testing::TempDir() + "/shadinglab_roundtrip." + ext;
+    shadinglab::WriteMesh(sphere, path);
+    vtkSmartPointer<vtkPolyData> back;
+    back.TakeReference(shadinglab::ReadMesh(path));
+    EXPECT_EQ(back->GetNumberOfPolys(), 80) << ext;
+    std::remove(path.c_str());
+  }
+}

@@ -10,7 +10,7 @@ namespace shadinglab::cli
 {
 
 Arguments::Arguments(int argc, char** argv, const std::vector<std::string>& valued,
-  const std::vector<std::string>& flags)
+  const std::vector<std::string>& flags, const std::vector<std::string>& repeatable)
 {
   for (int i = 0; i < argc; ++i)
   {
@@ -36,7 +36,9 @@ Arguments::Arguments(int argc, char** argv, const std::vector<std::string>& valu
         this->Values[name] = "1";
         continue;
       }
-      if (std::find(valued.begin(), valued.end(), name) == valued.end())
+      const bool isRepeatable =
+        std::find(repeatable.begin(), repeatable.end(), name) != repeatable.end();
+      if (!isRepeatable && std::find(valued.begin(), valued.end(), name) == valued.end())
       {
         throw UsageError("unknown option --" + name);
       }
@@ -47,6 +49,12 @@ Arguments::Arguments(int argc, char** argv, const std::vector<std::string>& valu
           throw UsageError("option --" + name + " needs a value");
         }
         value = argv[++i];
+      }
+      if (isRepeatable)
+      {
+        this->Repeated[name].push_back(value);
+        this->Values[name] = value;
+        continue;
       }
       if (this->Values.count(name))
       {
@@ -65,6 +73,12 @@ std::string Arguments::Get(const std::string& name, const std::string& fallback)
 {
   const auto it = this->Values.find(name);
   return it == this->Values.end() ? fallback : it->second;
+}
+
+std::vector<std::string> Arguments::GetAll(const std::string& name) const
+{
+  const auto it = this->Repeated.find(name);
+  return it == this->Repeated.end() ? std::vector<std::string>{} : it->second;
 }
 
 double Arguments::GetDouble(const std::string& name, double fallback) const

@@ -22,17 +22,21 @@ class Arguments
 {
 public:
   /// @param flags option names that take no value (e.g. "stats").
+  /// @param repeatable valued options that may be given more than once.
   Arguments(int argc, char** argv, const std::vector<std::string>& valued,
-    const std::vector<std::string>& flags);
+    const std::vector<std::string>& flags, const std::vector<std::string>& repeatable = {});
 
   bool Has(const std::string& name) const { return this->Values.count(name) > 0; }
   std::string Get(const std::string& name, const std::string& fallback = {}) const;
   double GetDouble(const std::string& name, double fallback) const;
   int GetInt(const std::string& name, int fallback) const;
   const std::vector<std::string>& Positionals() const { return this->Positional; }
+  /// Every value of a repeatable option, in command-line order.
+  std::vector<std::string> GetAll(const std::string& name) const;
 
 private:
   std::map<std::string, std::string> Values;
+  std::map<std::string, std::vector<std::string>> Repeated;
   std::vector<std::string> Positional;
 };
 

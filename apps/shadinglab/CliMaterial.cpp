@@ -60,12 +60,21 @@ Vec3<double> ParseRGB(const std::string& text, const std::string& what)
 
 } // namespace
 
-Material<double> MaterialFromArguments(const Arguments& args)
+Material<double> MaterialFromArguments(const Arguments& args, bool forRender)
 {
   Material<double> m;
-  m.model = ReflectanceModel::CookTorrance;
-  m.kd = 0.0;
-  m.ks = 1.0;
+  if (forRender)
+  {
+    m.model = ReflectanceModel::BlinnPhong;
+    m.kd = 0.7;
+    m.ks = 0.3;
+  }
+  else
+  {
+    m.model = ReflectanceModel::CookTorrance;
+    m.kd = 0.0;
+    m.ks = 1.0;
+  }
   if (args.Has("material"))
   {
     const auto* preset = FindMaterialPreset(args.Get("material"));

@@ -11,7 +11,8 @@ namespace
 
 const char* kUsage = "usage: shadinglab COMMAND [options]   (shadinglab COMMAND --help)\n"
                      "commands:\n"
-                     "  brdf      tabulate a reflectance model or one of its terms as CSV\n";
+                     "  brdf      tabulate a reflectance model or one of its terms as CSV\n"
+                     "  render    render a mesh in one shading mode to PNG\n";
 
 } // namespace
 
@@ -28,6 +29,10 @@ int main(int argc, char** argv)
     if (command == "brdf")
     {
       return shadinglab::cli::RunBrdf(argc - 2, argv + 2);
+    }
+    if (command == "render")
+    {
+      return shadinglab::cli::RunRender(argc - 2, argv + 2);
     }
     std::cerr << "shadinglab: error: unknown command '" << command
               << "' (see shadinglab --help)\n";

@@ -1,0 +1,357 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// shadinglab render: one image of a mesh in one shading mode.
+#include "Commands.h"
+
+#include "MeshIO.h"
+#include "PolyDataMesh.h"
+#include "shadinglab/cpu/SoftwareRenderer.h"
+
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPNGWriter.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkPointData.h>
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <sstream>
+
+namespace shadinglab::cli
+{
+
+namespace
+{
+
+const char* kRenderHelp =
+  "usage: shadinglab render INPUT [--backend auto|cpu|gpu] [--mode MODE] [--size WxH]\n"
+  "                         [--out OUT.png] [options]\n"
+  "\n"
+  "INPUT: .vtp .vtk .vtu .ply .obj .stl .off\n"
+  "  --mode M            flat | gouraud | phong | fast-phong | cook-torrance (default phong)\n"
+  "  --size WxH          image size (default 1024x768)\n"
+  "  --out FILE.png      output image (default out.png)\n"
+  "  --backend B         cpu | gpu | auto (default auto: gpu when an X display with\n"
+  "                      OpenGL >= 3.2 exists, cpu otherwise)\n"
+  "  --interp I          perspective (perspective-correct, default) | screen (linear in\n"
+  "                      screen space, as the lecture: shows perspective distortion)\n"
+  "  --polygons P        triangulate (default) | direct (scan-convert polygons as such:\n"
+  "                      shows orientation dependence)\n"
+  "  --azimuth DEG --elevation DEG --zoom F   camera about the fitted view\n"
+  "  --parallel          parallel projection\n"
+  "  --camera-position X,Y,Z --focal-point X,Y,Z --view-up X,Y,Z --view-angle DEG\n"
+  "  --light dir:X,Y,Z | point:X,Y,Z   (repeatable; world coordinates, direction\n"
+  "                      towards the light; default: one key light above-left of the camera)\n"
+  "  --light-intensity I  intensity of every light (default 1)\n"
+  "  --ssaa N            supersampling N x N (default 1)\n"
+  "  --threads N         worker threads (default: all cores)\n"
+  "  --cull              cull back faces\n"
+  "  --display D         clamp (default) | srgb\n"
+  "  --expansion E       fast-phong Taylor point: centroid (default) | vertex\n"
+  "  --stats             print one JSON line of timings and counts\n"
+  "\n"
+  "fast-phong uses Blinn's (N.H)^n for the specular term (a phong material's (R.V)^n\n"
+  "has no affine-normal form) and always interpolates in screen space.\n"
+  "\n";
+
+Vec3<double> ParseVector(const std::string& text, const std::string& what)
+{
+  const auto v = ParseList(text, what);
+  if (v.size() != 3)
+  {
+    throw UsageError(what + ": expected X,Y,Z");
+  }
+  return { v[0], v[1], v[2] };
+}
+
+void WritePng(const cpu::Image& image, const std::vector<uint8_t>& rgb8, const std::string& path)
+{
+  vtkNew<vtkImageData> vtkImage;
+  vtkImage->SetDimensions(image.width, image.height, 1);
+  vtkNew<vtkUnsignedCharArray> pixels;
+  pixels->SetNumberOfComponents(3);
+  pixels->SetNumberOfTuples(static_cast<vtkIdType>(image.width) * image.height);
+  // VTK images start at the bottom row.
+  for (int y = 0; y < image.height; ++y)
+  {
+    const int src = image.height - 1 - y;
+    for (int x = 0; x < image.width; ++x)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        pixels->SetTypedComponent(static_cast<vtkIdType>(y) * image.width + x, c,
+          rgb8[(static_cast<size_t>(src) * image.width + x) * 3 + c]);
+      }
+    }
+  }
+  vtkImage->GetPointData()->SetScalars(pixels);
+  vtkNew<vtkPNGWriter> writer;
+  writer->SetInputData(vtkImage);
+  writer->SetFileName(path.c_str());
+  writer->Write();
+  if (writer->GetErrorCode() != 0)
+  {
+    throw std::runtime_error("cannot write '" + path + "'");
+  }
+}
+
+} // namespace
+
+int RunRender(int argc, char** argv)
+{
+  std::vector<std::string> valued = { "backend", "mode", "size", "out", "interp", "polygons",
+    "azimuth", "elevation", "zoom", "camera-position", "focal-point", "view-up", "view-angle",
+    "light-intensity", "ssaa", "threads", "display", "expansion" };
+  for (const auto& o : MaterialOptions())
+  {
+    valued.push_back(o);
+  }
+  const Arguments args(argc, argv, valued, { "help", "stats", "cull", "parallel" }, { "light" });
+  if (args.Has("help"))
+  {
+    std::cout << kRenderHelp << MaterialHelp();
+    return 0;
+  }
+  if (args.Positionals().size() != 1)
+  {
+    throw UsageError(args.Positionals().empty() ? "missing INPUT mesh" : "more than one INPUT given");
+  }
+  const std::string input = args.Positionals()[0];
+
+  cpu::RenderOptions options;
+  if (!cpu::ParseMode(args.Get("mode", "phong"), options.mode))
+  {
+    throw UsageError("unknown --mode '" + args.Get("mode") +
+      "' (expected flat, gouraud, phong, fast-phong or cook-torrance)");
+  }
+  {
+    const std::string size = args.Get("size", "1024x768");
+    const auto x = size.find('x');
+    if (x == std::string::npos)
+    {
+      throw UsageError("--size must be WxH (got '" + size + "')");
+    }
+    const double w = ParseDouble(size.substr(0, x), "--size"),
+                 h = ParseDouble(size.substr(x + 1), "--size");
+    if (w != std::floor(w) || h != std::floor(h) || w < 1 || h < 1 || w > 16384 || h > 16384)
+    {
+      throw UsageError("--size must be WxH with integers 1..16384 (got '" + size + "')");
+    }
+    options.width = static_cast<int>(w);
+    options.height = static_cast<int>(h);
+  }
+  const std::string interp = args.Get("interp", "perspective");
+  if (interp == "perspective")
+  {
+    options.interpolation = cpu::InterpolationSpace::Perspective;
+  }
+  else if (interp == "screen")
+  {
+    options.interpolation = cpu::InterpolationSpace::Screen;
+  }
+  else
+  {
+    throw UsageError("unknown --interp '" + interp + "' (expected perspective or screen)");
+  }
+  const std::string polygons = args.Get("polygons", "triangulate");
+  if (polygons == "triangulate")
+  {
+    options.polygons = cpu::PolygonHandling::Triangulate;
+  }
+  else if (polygons == "direct")
+  {
+    options.polygons = cpu::PolygonHandling::Direct;
+  }
+  else
+  {
+    throw UsageError("unknown --polygons '" + polygons + "' (expected triangulate or direct)");
+  }
+  const std::string expansion = args.Get("expansion", "centroid");
+  if (expansion == "centroid" || expansion == "vertex")
+  {
+    options.expansion = expansion == "vertex" ? ExpansionPoint::Vertex : ExpansionPoint::Centroid;
+  }
+  else
+  {
+    throw UsageError("unknown --expansion '" + expansion + "' (expected centroid or vertex)");
+  }
+  const std::string displayName = args.Get("display", "clamp");
+  cpu::DisplayTransform display = cpu::DisplayTransform::Clamp;
+  if (displayName == "srgb")
+  {
+    display = cpu::DisplayTransform::SRGB;
+  }
+  else if (displayName != "clamp")
+  {
+    throw UsageError("unknown --display '" + displayName + "' (expected clamp or srgb)");
+  }
+  options.ssaa = args.GetInt("ssaa", 1);
+  if (options.ssaa < 1 || options.ssaa > 8)
+  {
+    throw UsageError("--ssaa must be 1..8");
+  }
+  options.threads = args.GetInt("threads", 0);
+  if (options.threads < 0 || options.threads > 256)
+  {
+    throw UsageError("--threads must be 0..256");
+  }
+  options.cullBackFaces = args.Has("cull");
+  const double zoom = args.GetDouble("zoom", 1.0);
+  if (!(zoom > 0 && zoom <= 1e3))
+  {
+    throw UsageError("--zoom must be in (0, 1000]");
+  }
+  const double lightIntensity = args.GetDouble("light-intensity", 1.0);
+  if (!(lightIntensity >= 0 && lightIntensity <= 1e6))
+  {
+    throw UsageError("--light-intensity must be in [0, 1e6]");
+  }
+  const Material<double> material = MaterialFromArguments(args, true);
+
+  const std::string backend = args.Get("backend", "auto");
+  if (backend == "gpu")
+  {
+    throw UsageError("--backend gpu: the GPU mapper is not built yet; use --backend cpu");
+  }
+  if (backend != "cpu" && backend != "auto")
+  {
+    throw UsageError("unknown --backend '" + backend + "' (expected auto, cpu or gpu)");
+  }
+  if (backend == "auto")
+  {
+    std::cerr << "shadinglab render: backend auto: using the CPU renderer\n";
+  }
+
+  vtkSmartPointer<vtkPolyData> polydata;
+  try
+  {
+    polydata.TakeReference(ReadMesh(input));
+  }
+  catch (const MeshError& e)
+  {
+    throw UsageError(e.what());
+  }
+  const cpu::Mesh mesh = cpu::MeshFromPolyData(polydata);
+
+  double bounds[6];
+  mesh.Bounds(bounds);
+  const double aspect = static_cast<double>(options.width) / options.height;
+  cpu::Camera camera = cpu::FitCamera(bounds, args.GetDouble("azimuth", 0.0),
+    args.GetDouble("elevation", 0.0), zoom, aspect, args.Has("parallel"));
+  if (args.Has("camera-position") || args.Has("focal-point"))
+  {
+    if (args.Has("camera-position"))
+    {
+      camera.position = ParseVector(args.Get("camera-position"), "--camera-position");
+    }
+    if (args.Has("focal-point"))
+    {
+      camera.focalPoint = ParseVector(args.Get("focal-point"), "--focal-point");
+    }
+    if (Length(camera.position - camera.focalPoint) <= 0)
+    {
+      throw UsageError("--camera-position and --focal-point coincide");
+    }
+    // Near/far from the bounds as seen from the new position.
+    const Vec3<double> center(0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]),
+      0.5 * (bounds[4] + bounds[5]));
+    const double radius = 0.5 *
+      Length(Vec3<double>(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4]));
+    const double d = Length(camera.position - center);
+    camera.farClip = d + 1.01 * radius + 1e-6;
+    camera.nearClip = std::max(1e-4 * camera.farClip, d - 1.01 * radius);
+  }
+  if (args.Has("view-up"))
+  {
+    camera.viewUp = ParseVector(args.Get("view-up"), "--view-up");
+  }
+  if (args.Has("view-angle"))
+  {
+    camera.viewAngle = args.GetDouble("view-angle", 30.0);
+    if (!(camera.viewAngle > 0 && camera.viewAngle < 180))
+    {
+      throw UsageError("--view-angle must be in (0, 180)");
+    }
+  }
+
+  Lighting<double> lighting;
+  lighting.lightCount = 0;
+  const auto lights = args.GetAll("light");
+  if (lights.size() > static_cast<size_t>(kMaxLights))
+  {
+    throw UsageError("at most " + std::to_string(kMaxLights) + " --light options");
+  }
+  for (const auto& spec : lights)
+  {
+    Light<double> light;
+    if (spec.rfind("dir:", 0) == 0)
+    {
+      light.type = LightType::Directional;
+      light.vector = ParseVector(spec.substr(4), "--light dir");
+      if (!(Length(light.vector) > 0))
+      {
+        throw UsageError("--light dir: direction has zero length");
+      }
+    }
+    else if (spec.rfind("point:", 0) == 0)
+    {
+      light.type = LightType::Point;
+      light.vector = ParseVector(spec.substr(6), "--light point");
+    }
+    else
+    {
+      throw UsageError("--light must be dir:X,Y,Z or point:X,Y,Z (got '" + spec + "')");
+    }
+    light.intensity = Vec3<double>(lightIntensity, lightIntensity, lightIntensity);
+    lighting.lights[lighting.lightCount++] = light;
+  }
+  if (lighting.lightCount == 0)
+  {
+    // Key light above-left of the camera, in world coordinates.
+    const Vec3<double> toEye = NormalizeOr(camera.position - camera.focalPoint, Vec3<double>(0, 0, 1));
+    const Vec3<double> right = NormalizeOr(Cross(camera.viewUp, toEye), Vec3<double>(1, 0, 0));
+    const Vec3<double> up = Cross(toEye, right);
+    Light<double> key;
+    key.vector = NormalizeOr(toEye + up * 0.5 - right * 0.4, toEye);
+    key.intensity = Vec3<double>(lightIntensity, lightIntensity, lightIntensity);
+    lighting.lights[0] = key;
+    lighting.lightCount = 1;
+  }
+  lighting.ambientIntensity = Vec3<double>(1, 1, 1);
+
+  cpu::RenderStats stats;
+  cpu::Image image;
+  try
+  {
+    image = cpu::Render(mesh, camera, lighting.Cast<float>(), material.Cast<float>(), options, &stats);
+  }
+  catch (const std::invalid_argument& e)
+  {
+    throw UsageError(e.what());
+  }
+  if (stats.normalsComputed)
+  {
+    std::cerr << "shadinglab render: notice: '" << input
+              << "' has no point normals; using area-weighted vertex normals\n";
+  }
+  const std::string out = args.Get("out", "out.png");
+  WritePng(image, image.ToRGB8(display), out);
+  if (args.Has("stats"))
+  {
+    std::printf("{\"backend\":\"cpu\",\"mode\":\"%s\",\"width\":%d,\"height\":%d,\"ssaa\":%d,"
+                "\"milliseconds\":%.3f,\"polygons\":%lld,\"triangles\":%lld,\"rasterized\":%lld,"
+                "\"clipped\":%lld,\"degenerate\":%lld,\"pixels_covered\":%lld,"
+                "\"pixels_shaded\":%lld,\"threads\":%d,\"normals_computed\":%s}\n",
+      cpu::ModeName(options.mode), options.width, options.height, options.ssaa,
+      stats.milliseconds, static_cast<long long>(stats.polygons),
+      static_cast<long long>(stats.triangles), static_cast<long long>(stats.rasterized),
+      static_cast<long long>(stats.clipped), static_cast<long long>(stats.degenerate),
+      static_cast<long long>(stats.pixelsCovered), static_cast<long long>(stats.pixelsShaded),
+      stats.threads, stats.normalsComputed ? "true" : "false");
+  }
+  return 0;
+}
+
+} // namespace shadinglab::cli

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <sstream>
 #include <vector>
 
@@ -136,5 +137,102 @@ TEST(CliTest, BadArgumentsExitTwoWithOneLineError)
     EXPECT_EQ(r.status, 2) << args;
     EXPECT_EQ(CountLines(r.err), 1) << args << ": " << r.err.substr(0, 300);
     EXPECT_NE(r.err.find("error"), std::string::npos) << args;
+  }
+}
+
+namespace
+{
+const std::string kData = std::string(SHADINGLAB_SOURCE_DIR) + "/datasets/";
+
+// Width and height from a PNG's IHDR chunk.
+bool PngSize(const std::string& path, int& w, int& h)
+{
+  std::ifstream f(path, std::ios::binary);
+  unsigned char b[24];
+  if (!f.read(reinterpret_cast<char*>(b), 24) || b[1] != 'P' || b[2] != 'N' || b[3] != 'G')
+  {
+    return false;
+  }
+  w = (b[16] << 24) | (b[17] << 16) | (b[18] << 8) | b[19];
+  h = (b[20] << 24) | (b[21] << 16) | (b[22] << 8) | b[23];
+  return true;
+}
+
+std::string WriteTemp(const std::string& name, const std::string& contents)
+{
+  const std::string path = ::testing::TempDir() + "/shadinglab_cli_" + name;
+  std::ofstream(path) << contents;
+  return path;
+}
+} // namespace
+
+TEST(CliTest, RenderEveryFormatAndMode)
+{
+  const char* files[] = { "icosphere_2.vtp", "quad_strip.vtk", "sphere_lowpoly.ply",
+    "corrugated_plane.obj", "cylinder_8.stl", "t_junctions.off" };
+  const char* modes[] = { "flat", "gouraud", "phong", "fast-phong", "cook-torrance" };
+  int k = 0;
+  for (const char* f : files)
+  {
+    for (const char* m : modes)
+    {
+      const std::string out = ::testing::TempDir() + "/shadinglab_render_" + std::to_string(k++) + ".png";
+      const auto r = RunCli("render " + kData + f + " --backend cpu --mode " + m +
+        " --size 96x64 --out " + out);
+      ASSERT_EQ(r.status, 0) << f << " " << m << ": " << r.err;
+      int w = 0, h = 0;
+      ASSERT_TRUE(PngSize(out, w, h)) << out;
+      EXPECT_EQ(w, 96);
+      EXPECT_EQ(h, 64);
+    }
+  }
+}
+
+TEST(CliTest, RenderStatsIsOneJsonLine)
+{
+  const std::string out = ::testing::TempDir() + "/shadinglab_stats.png";
+  const auto r = RunCli("render " + kData + "torus_24x12.vtp --backend cpu --size 64x48 --ssaa 2 "
+                        "--polygons direct --interp screen --light dir:0,0,1 --light point:3,3,3 "
+                        "--stats --out " + out);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(CountLines(r.out), 1);
+  EXPECT_EQ(r.out.front(), '{');
+  EXPECT_NE(r.out.find("\"triangles\":576"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"milliseconds\":"), std::string::npos) << r.out;
+  // No normals in the file: the renderer says it computed them.
+  EXPECT_NE(r.err.find("area-weighted"), std::string::npos) << r.err;
+}
+
+TEST(CliTest, RenderBadInputExitsTwoWithOneLine)
+{
+  const std::string empty = WriteTemp("empty.stl", "");
+  const std::string nan = WriteTemp("nan.off", "OFF\n3 1 0\n0 0 0\nnan 1 0\n0 1 0\n3 0 1 2\n");
+  const std::string garbage = WriteTemp("garbage.vtp", "<VTKFile garbage");
+  const std::string noFaces = WriteTemp("nofaces.off", "OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n");
+  const std::string good = kData + "icosphere_1.vtp";
+  const std::string out = " --out " + ::testing::TempDir() + "/shadinglab_bad.png";
+  const std::string bad[] = {
+    "render /nonexistent.vtp" + out,
+    "render " + empty + out,
+    "render " + nan + out,
+    "render " + garbage + out,
+    "render " + noFaces + out,
+    "render" + out,
+    "render " + good + " --mode toon" + out,
+    "render " + good + " --size 0x10" + out,
+    "render " + good + " --size 100000x10" + out,
+    "render " + good + " --ssaa 100" + out,
+    "render " + good + " --zoom -1" + out,
+    "render " + good + " --light dir:0,0,0" + out,
+    "render " + good + " --light sun:1,1,1" + out,
+    "render " + good + " --mode fast-phong --material gold" + out,
+    "render " + good + " --kd 2" + out,
+    "render " + good + " --interp curved" + out,
+  };
+  for (const auto& args : bad)
+  {
+    const auto r = RunCli(args);
+    EXPECT_EQ(r.status, 2) << args;
+    EXPECT_EQ(CountLines(r.err), 1) << args << ": " << r.err.substr(0, 300);
   }
 }

@@ -219,10 +219,6 @@ int RunRender(int argc, char** argv)
   {
     throw UsageError("unknown --backend '" + backend + "' (expected auto, cpu or gpu)");
   }
-  if (backend == "auto")
-  {
-    std::cerr << "shadinglab render: backend auto: using the CPU renderer\n";
-  }
 
   vtkSmartPointer<vtkPolyData> polydata;
   try
@@ -338,6 +334,10 @@ int RunRender(int argc, char** argv)
   }
   const std::string out = args.Get("out", "out.png");
   WritePng(image, image.ToRGB8(display), out);
+  if (backend == "auto")
+  {
+    std::cerr << "shadinglab render: backend auto: used the CPU renderer\n";
+  }
   if (args.Has("stats"))
   {
     std::printf("{\"backend\":\"cpu\",\"mode\":\"%s\",\"width\":%d,\"height\":%d,\"ssaa\":%d,"

@@ -1,0 +1,566 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The CPU renderer: fill rule, determinism across threads, clipping,
+// degenerate input, and accuracy against an analytic per-pixel reference.
+#include "AnalyticMeshes.h"
+#include "PolyDataMesh.h"
+#include "shadinglab/cpu/SoftwareRenderer.h"
+
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <functional>
+#include <map>
+#include <random>
+#include <string>
+
+namespace sl = shadinglab;
+namespace cpu = shadinglab::cpu;
+using sl::Vec3d;
+using sl::Vec3f;
+
+namespace
+{
+
+cpu::Mesh MeshOf(vtkPolyData* raw, bool exactNormals = false)
+{
+  vtkSmartPointer<vtkPolyData> pd;
+  pd.TakeReference(raw);
+  if (exactNormals)
+  {
+    pd->GetPointData()->SetNormals(pd->GetPointData()->GetArray(sl::datasets::kExactNormalArray));
+  }
+  return cpu::MeshFromPolyData(pd);
+}
+
+sl::Lighting<float> OneLight(const Vec3f& direction)
+{
+  sl::Lighting<float> lighting;
+  lighting.lightCount = 1;
+  lighting.lights[0].vector = direction;
+  lighting.ambientIntensity = Vec3f(1, 1, 1);
+  return lighting;
+}
+
+sl::Material<float> BlinnPhong()
+{
+  sl::Material<float> m;
+  m.model = sl::ReflectanceModel::BlinnPhong;
+  m.kd = 0.7f;
+  m.ks = 0.3f;
+  m.shininess = 32.0f;
+  m.ambient = Vec3f(0.05f, 0.05f, 0.05f);
+  return m;
+}
+
+cpu::Camera CameraLookingAt(const Vec3d& position, const Vec3d& focal, double viewAngle)
+{
+  cpu::Camera cam;
+  cam.position = position;
+  cam.focalPoint = focal;
+  cam.viewUp = Vec3d(0, 1, 0);
+  cam.viewAngle = viewAngle;
+  cam.nearClip = 0.1;
+  cam.farClip = 100;
+  return cam;
+}
+
+/// Ray through the centre of pixel (i, j) for the renderer's camera model.
+Vec3d PixelRay(const cpu::Camera& cam, int width, int height, int i, int j)
+{
+  const Vec3d forward = sl::NormalizeOr(cam.focalPoint - cam.position, Vec3d(0, 0, -1));
+  const Vec3d right = sl::NormalizeOr(sl::Cross(forward, cam.viewUp), Vec3d(1, 0, 0));
+  const Vec3d up = sl::Cross(right, forward);
+  const double t = std::tan(0.5 * cam.viewAngle * sl::kPi<double> / 180.0);
+  const double aspect = static_cast<double>(width) / height;
+  const double nx = 2.0 * (i + 0.5) / width - 1.0, ny = 1.0 - 2.0 * (j + 0.5) / height;
+  return sl::NormalizeOr(forward + right * (nx * t * aspect) + up * (ny * t), forward);
+}
+
+/// Analytic surface: returns true and the hit point and exact normal.
+using Intersector = std::function<bool(const Vec3d& o, const Vec3d& d, Vec3d& p, Vec3d& n)>;
+
+bool IntersectUnitSphere(const Vec3d& o, const Vec3d& d, Vec3d& p, Vec3d& n)
+{
+  const double b = sl::Dot(o, d), c = sl::Dot(o, o) - 1.0, disc = b * b - c;
+  if (disc < 0)
+  {
+    return false;
+  }
+  const double t = -b - std::sqrt(disc);
+  if (t <= 0)
+  {
+    return false;
+  }
+  p = o + d * t;
+  n = p;
+  return true;
+}
+
+bool IntersectTorus(const Vec3d& o, const Vec3d& d, Vec3d& p, Vec3d& n)
+{
+  // (|p|^2 + R^2 - r^2)^2 - 4 R^2 (x^2 + y^2) = 0, R = 1, r = 0.4: march
+  // with steps well below the minor radius, then bisect the sign change.
+  const double R = 1.0, r = 0.4;
+  auto f = [&](double t) {
+    const Vec3d q = o + d * t;
+    const double s = sl::Dot(q, q) + R * R - r * r;
+    return s * s - 4 * R * R * (q.x * q.x + q.y * q.y);
+  };
+  double t0 = 0, f0 = f(0);
+  for (double t = 0.002; t < 20; t += 0.002)
+  {
+    const double ft = f(t);
+    if ((ft < 0) != (f0 < 0))
+    {
+      double a = t0, b = t;
+      for (int k = 0; k < 60; ++k)
+      {
+        const double m = 0.5 * (a + b);
+        if ((f(m) < 0) == (f(a) < 0))
+        {
+          a = m;
+        }
+        else
+        {
+          b = m;
+        }
+      }
+      p = o + d * (0.5 * (a + b));
+      const double rho = std::sqrt(p.x * p.x + p.y * p.y);
+      const Vec3d centre(p.x / rho * R, p.y / rho * R, 0.0);
+      n = sl::NormalizeOr(p - centre, Vec3d(0, 0, 1));
+      return true;
+    }
+    t0 = t;
+    f0 = ft;
+  }
+  return false;
+}
+
+struct ErrorStats
+{
+  double mean = 0;
+  double p99 = 0;
+  int64_t pixels = 0;
+};
+
+/// Mean absolute difference (per channel, linear) between the rendered image
+/// and the analytic reference over pixels covered by both.
+ErrorStats CompareToReference(const cpu::Image& image, const cpu::Camera& cam,
+  const sl::Lighting<float>& lighting, const sl::Material<float>& material, const Intersector& hit)
+{
+  const auto md = material.Cast<double>();
+  const auto ld = lighting.Cast<double>();
+  std::vector<double> errors;
+  for (int j = 0; j < image.height; ++j)
+  {
+    for (int i = 0; i < image.width; ++i)
+    {
+      const size_t pix = static_cast<size_t>(j) * image.width + i;
+      if (!image.covered[pix])
+      {
+        continue;
+      }
+      const Vec3d d = PixelRay(cam, image.width, image.height, i, j);
+      Vec3d p, n;
+      if (!hit(cam.position, d, p, n))
+      {
+        continue;
+      }
+      const Vec3d ref = sl::Shade(md, ld, md.diffuseColor, p, n, -d);
+      double e = 0;
+      for (int c = 0; c < 3; ++c)
+      {
+        e += std::abs(image.rgb[3 * pix + c] - ref[c]) / 3.0;
+      }
+      errors.push_back(e);
+    }
+  }
+  ErrorStats s;
+  s.pixels = static_cast<int64_t>(errors.size());
+  if (errors.empty())
+  {
+    return s;
+  }
+  double sum = 0;
+  for (double e : errors)
+  {
+    sum += e;
+  }
+  s.mean = sum / errors.size();
+  std::sort(errors.begin(), errors.end());
+  s.p99 = errors[static_cast<size_t>(0.99 * (errors.size() - 1))];
+  return s;
+}
+
+} // namespace
+
+TEST(CpuRendererTest, ClosedConvexMeshCoversEveryPixelExactlyOnce)
+{
+  const cpu::Mesh mesh = MeshOf(sl::datasets::MakeIcosphere(3));
+  cpu::RenderOptions opt;
+  opt.width = 320;
+  opt.height = 240;
+  opt.countCoverage = true;
+  opt.cullBackFaces = true;
+  const auto cam = CameraLookingAt(Vec3d(0.3, 0.2, 4), Vec3d(0, 0, 0), 40);
+  const auto image = cpu::Render(mesh, cam, OneLight(Vec3f(0, 0, 1)), BlinnPhong(), opt);
+  int64_t covered = 0, multiple = 0;
+  for (size_t i = 0; i < image.coverage.size(); ++i)
+  {
+    covered += image.coverage[i] > 0;
+    multiple += image.coverage[i] > 1;
+  }
+  EXPECT_GT(covered, 10000);
+  EXPECT_EQ(multiple, 0);
+}
+
+TEST(CpuRendererTest, TessellatedPlaneHasNoCracksOrOverlaps)
+{
+  // A 40 x 30 grid with jittered interior vertices (sub-pixel positions
+  // everywhere), facing the camera: every pixel inside is covered once.
+  cpu::Mesh mesh;
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<float> jitter(-0.3f, 0.3f);
+  const int nx = 40, ny = 30;
+  for (int j = 0; j <= ny; ++j)
+  {
+    for (int i = 0; i <= nx; ++i)
+    {
+      const bool border = i == 0 || j == 0 || i == nx || j == ny;
+      const float x = (i + (border ? 0 : jitter(rng))) / nx * 2 - 1;
+      const float y = (j + (border ? 0 : jitter(rng))) / ny * 2 - 1;
+      mesh.points.insert(mesh.points.end(), { x, y, 0.0f });
+    }
+  }
+  mesh.offsets.push_back(0);
+  for (int j = 0; j < ny; ++j)
+  {
+    for (int i = 0; i < nx; ++i)
+    {
+      const int64_t a = j * (nx + 1) + i;
+      for (int64_t v : { a, a + 1, a + nx + 2, a, a + nx + 2, a + nx + 1 })
+      {
+        mesh.connectivity.push_back(v);
+      }
+      mesh.offsets.push_back(static_cast<int64_t>(mesh.connectivity.size()) - 3);
+      mesh.offsets.push_back(static_cast<int64_t>(mesh.connectivity.size()));
+    }
+  }
+  cpu::RenderOptions opt;
+  opt.width = 301;
+  opt.height = 233;
+  opt.countCoverage = true;
+  const auto cam = CameraLookingAt(Vec3d(0.01, -0.02, 2.9), Vec3d(0.01, -0.02, 0), 45);
+  const auto image = cpu::Render(mesh, cam, OneLight(Vec3f(0, 0, 1)), BlinnPhong(), opt);
+  int64_t holes = 0, overlaps = 0, covered = 0;
+  int x0 = opt.width, x1 = 0, y0 = opt.height, y1 = 0;
+  for (int j = 0; j < opt.height; ++j)
+  {
+    for (int i = 0; i < opt.width; ++i)
+    {
+      if (image.coverage[j * opt.width + i])
+      {
+        x0 = std::min(x0, i), x1 = std::max(x1, i), y0 = std::min(y0, j), y1 = std::max(y1, j);
+      }
+    }
+  }
+  for (int j = y0; j <= y1; ++j)
+  {
+    for (int i = x0; i <= x1; ++i)
+    {
+      const uint16_t c = image.coverage[j * opt.width + i];
+      holes += c == 0;
+      overlaps += c > 1;
+      covered += c > 0;
+    }
+  }
+  EXPECT_GT(covered, 20000);
+  EXPECT_EQ(holes, 0);
+  EXPECT_EQ(overlaps, 0);
+}
+
+TEST(CpuRendererTest, OutputIsBitIdenticalForAnyThreadCount)
+{
+  const cpu::Mesh mesh = MeshOf(sl::datasets::MakeTorus(1.0, 0.4, 48, 24));
+  const auto cam = CameraLookingAt(Vec3d(0.5, 2.0, 3.0), Vec3d(0, 0, 0), 40);
+  for (cpu::ShadingMode mode : { cpu::ShadingMode::Flat, cpu::ShadingMode::Gouraud,
+         cpu::ShadingMode::Phong, cpu::ShadingMode::FastPhong, cpu::ShadingMode::CookTorrance })
+  {
+    cpu::RenderOptions opt;
+    opt.width = 257;
+    opt.height = 199;
+    opt.mode = mode;
+    opt.threads = 1;
+    const auto ref = cpu::Render(mesh, cam, OneLight(Vec3f(0.3f, 0.6f, 0.7f)), BlinnPhong(), opt);
+    for (int threads : { 2, 3, 7 })
+    {
+      opt.threads = threads;
+      const auto img = cpu::Render(mesh, cam, OneLight(Vec3f(0.3f, 0.6f, 0.7f)), BlinnPhong(), opt);
+      EXPECT_EQ(img.rgb, ref.rgb) << cpu::ModeName(mode) << " threads " << threads;
+    }
+  }
+}
+
+TEST(CpuRendererTest, PolygonsCrossingTheCameraPlaneAreClipped)
+{
+  // A large floor under the camera extends behind it: its triangles cross
+  // the camera plane and must be clipped, not wrapped around or crashed on.
+  cpu::Mesh mesh;
+  mesh.points = { -50, -1, -50, 50, -1, -50, 50, -1, 50, -50, -1, 50 };
+  mesh.offsets = { 0, 4 };
+  mesh.connectivity = { 0, 3, 2, 1 };
+  const auto cam = CameraLookingAt(Vec3d(0, 0, 0), Vec3d(0, 0, -1), 60);
+  for (auto poly : { cpu::PolygonHandling::Triangulate, cpu::PolygonHandling::Direct })
+  {
+    cpu::RenderOptions opt;
+    opt.width = 200;
+    opt.height = 150;
+    opt.polygons = poly;
+    cpu::RenderStats stats;
+    const auto image = cpu::Render(mesh, cam, OneLight(Vec3f(0, 1, 0)), BlinnPhong(), opt, &stats);
+    EXPECT_GE(stats.clipped, 1);
+    // The floor's far edge (z = -50, y = -1) is at row
+    // (0.5 + 0.5 f / 50) H with f = 1/tan(30 deg); every row below it is
+    // floor across the whole width (|x| = 50 at z = -50 is outside the view),
+    // every row above it is sky.
+    const double f = 1.0 / std::tan(30.0 * sl::kPi<double> / 180.0);
+    const double farRow = (0.5 + 0.5 * f / 50.0) * opt.height;
+    for (int j = 0; j < opt.height; ++j)
+    {
+      const bool lower = j + 0.5 > farRow + 0.5;
+      const bool upper = j + 0.5 < farRow - 0.5;
+      for (int i = 0; i < opt.width; ++i)
+      {
+        const uint8_t c = image.covered[j * opt.width + i];
+        if (lower)
+        {
+          ASSERT_EQ(c, 1) << i << "," << j;
+        }
+        if (upper)
+        {
+          ASSERT_EQ(c, 0) << i << "," << j;
+        }
+      }
+    }
+    for (float v : image.rgb)
+    {
+      ASSERT_TRUE(std::isfinite(v));
+    }
+  }
+}
+
+TEST(CpuRendererTest, DegenerateTrianglesAreSkipped)
+{
+  cpu::Mesh mesh;
+  mesh.points = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 2, 2, 0 };
+  mesh.offsets = { 0, 3, 6, 9 };
+  // A good triangle, a repeated-index one and a collinear one.
+  mesh.connectivity = { 0, 1, 2, 0, 0, 1, 0, 1, 1 };
+  mesh.points.insert(mesh.points.end(), { 3, 0, 0 });
+  mesh.connectivity[6] = 0, mesh.connectivity[7] = 1, mesh.connectivity[8] = 4;
+  cpu::RenderOptions opt;
+  opt.width = 64;
+  opt.height = 64;
+  cpu::RenderStats stats;
+  const auto cam = CameraLookingAt(Vec3d(0.5, 0.5, 4), Vec3d(0.5, 0.5, 0), 40);
+  const auto image = cpu::Render(mesh, cam, OneLight(Vec3f(0, 0, 1)), BlinnPhong(), opt, &stats);
+  EXPECT_EQ(stats.degenerate, 2);
+  EXPECT_EQ(stats.rasterized, 1);
+  EXPECT_GT(stats.pixelsCovered, 100);
+}
+
+TEST(CpuRendererTest, ScreenSpaceInterpolationDistortsAsPredicted)
+{
+  // A quad receding from the camera with colour 0 on its near edge and 1 on
+  // its far edge, lit head-on by a unit light (kd = 1, no ambient): the
+  // image shows the interpolated colour itself. Along the centre column,
+  // screen-linear interpolation gives the screen parameter s while the
+  // perspective-correct value is t = (s/w1) / ((1-s)/w0 + s/w1).
+  cpu::Mesh mesh;
+  const float zNear = -2.0f, zFar = -12.0f;
+  mesh.points = { -1, -1, zNear, 1, -1, zNear, 1, -1, zFar, -1, -1, zFar };
+  // Tilt: the quad lies in y = -1 (a floor); the camera looks level.
+  mesh.normals = { 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0 };
+  mesh.colors = { 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 1, 1 };
+  mesh.offsets = { 0, 4 };
+  mesh.connectivity = { 0, 1, 2, 3 };
+  sl::Material<float> m;
+  m.model = sl::ReflectanceModel::Lambert;
+  m.kd = 1.0f;
+  m.ks = 0.0f;
+  m.ambient = Vec3f(0, 0, 0);
+  auto lighting = OneLight(Vec3f(0, 1, 0));
+  const auto cam = CameraLookingAt(Vec3d(0, 0, 0), Vec3d(0, 0, -1), 60);
+  cpu::RenderOptions opt;
+  opt.width = 200;
+  opt.height = 300;
+  opt.mode = cpu::ShadingMode::Phong;
+  opt.interpolation = cpu::InterpolationSpace::Perspective;
+  const auto persp = cpu::Render(mesh, cam, lighting, m, opt);
+  opt.interpolation = cpu::InterpolationSpace::Screen;
+  const auto screen = cpu::Render(mesh, cam, lighting, m, opt);
+  // Screen rows of the near and far edges: y_ndc = f * y / (-z).
+  const double f = 1.0 / std::tan(30.0 * sl::kPi<double> / 180.0);
+  auto rowOf = [&](double z) { return (0.5 - 0.5 * f * (-1.0) / (-z)) * opt.height; };
+  const double yNear = rowOf(zNear), yFar = rowOf(zFar);
+  const double w0 = -zNear, w1 = -zFar;
+  double worstScreen = 0, worstPersp = 0, largestGap = 0;
+  const int i = opt.width / 2;
+  for (int j = 0; j < opt.height; ++j)
+  {
+    const size_t pix = static_cast<size_t>(j) * opt.width + i;
+    if (!persp.covered[pix])
+    {
+      continue;
+    }
+    const double s = (j + 0.5 - yNear) / (yFar - yNear);
+    const double t = (s / w1) / ((1 - s) / w0 + s / w1);
+    worstScreen = std::max(worstScreen, std::abs(screen.rgb[3 * pix] - s));
+    worstPersp = std::max(worstPersp, std::abs(persp.rgb[3 * pix] - t));
+    largestGap = std::max(largestGap, std::abs(s - t));
+  }
+  // Float interpolation error, ~1e-6 per step over a few hundred steps.
+  EXPECT_LT(worstScreen, 2e-4);
+  EXPECT_LT(worstPersp, 2e-4);
+  // With w1/w0 = 6 the two differ by up to (sqrt(6)-1)/(sqrt(6)+1) = 0.42.
+  EXPECT_NEAR(largestGap, (std::sqrt(6.0) - 1) / (std::sqrt(6.0) + 1), 0.01);
+}
+
+TEST(CpuRendererTest, AccuracyAgainstAnalyticSphereAndTorus)
+{
+  struct Case
+  {
+    const char* name;
+    std::function<vtkPolyData*(int)> make;
+    std::vector<int> levels;
+    Intersector hit;
+    Vec3d eye;
+  };
+  const std::vector<Case> cases = {
+    { "icosphere", [](int l) { return sl::datasets::MakeIcosphere(l); }, { 1, 2, 3, 4 },
+      IntersectUnitSphere, Vec3d(0.4, 0.5, 3.5) },
+    { "torus", [](int l) { return sl::datasets::MakeTorus(1.0, 0.4, 12 << l, 6 << l); },
+      { 0, 1, 2, 3 }, IntersectTorus, Vec3d(0.3, 2.2, 2.6) },
+  };
+  const auto material = BlinnPhong();
+  const auto lighting = OneLight(sl::NormalizeOr(Vec3f(-0.4f, 0.5f, 1.0f), Vec3f(0, 0, 1)));
+  std::printf("%-10s %-6s %-14s %10s %10s\n", "surface", "level", "mode", "mean", "p99");
+  for (const auto& c : cases)
+  {
+    const auto cam = CameraLookingAt(c.eye, Vec3d(0, 0, 0), 40);
+    std::map<cpu::ShadingMode, std::vector<double>> errors;
+    for (int level : c.levels)
+    {
+      // Exact vertex normals: the comparison isolates interpolation error.
+      const cpu::Mesh mesh = MeshOf(c.make(level), true);
+      for (auto mode : { cpu::ShadingMode::Flat, cpu::ShadingMode::Gouraud,
+             cpu::ShadingMode::Phong, cpu::ShadingMode::FastPhong })
+      {
+        cpu::RenderOptions opt;
+        opt.width = 240;
+        opt.height = 180;
+        opt.mode = mode;
+        opt.cullBackFaces = true;
+        // Fast Phong is a screen-space method: compare it with Phong in
+        // the same space; the others perspective-correct.
+        if (mode == cpu::ShadingMode::FastPhong)
+        {
+          opt.interpolation = cpu::InterpolationSpace::Screen;
+        }
+        const auto image = cpu::Render(mesh, cam, lighting, material, opt);
+        const auto e = CompareToReference(image, cam, lighting, material, c.hit);
+        ASSERT_GT(e.pixels, 2000);
+        errors[mode].push_back(e.mean);
+        std::printf("%-10s %-6d %-14s %10.5f %10.5f\n", c.name, level, cpu::ModeName(mode), e.mean,
+          e.p99);
+      }
+    }
+    for (size_t k = 0; k < c.levels.size(); ++k)
+    {
+      // The lecture's ordering at equal tessellation.
+      EXPECT_LT(errors[cpu::ShadingMode::Phong][k], errors[cpu::ShadingMode::Gouraud][k])
+        << c.name << " level " << c.levels[k];
+      // Known exception, kept visible rather than hidden: on the 80-triangle
+      // icosphere a vertex highlight smears over its five triangles and
+      // Gouraud's mean error (0.116) exceeds flat's (0.109). From 320
+      // triangles on, the lecture's ordering holds.
+      const bool coarseIcosphere = std::string(c.name) == "icosphere" && c.levels[k] == 1;
+      if (coarseIcosphere)
+      {
+        EXPECT_GT(errors[cpu::ShadingMode::Gouraud][k], errors[cpu::ShadingMode::Flat][k]);
+      }
+      else
+      {
+        EXPECT_LT(errors[cpu::ShadingMode::Gouraud][k], errors[cpu::ShadingMode::Flat][k])
+          << c.name << " level " << c.levels[k];
+      }
+      if (k > 0)
+      {
+        for (auto mode : { cpu::ShadingMode::Flat, cpu::ShadingMode::Gouraud,
+               cpu::ShadingMode::Phong })
+        {
+          EXPECT_LT(errors[mode][k], errors[mode][k - 1])
+            << c.name << " " << cpu::ModeName(mode) << " level " << c.levels[k];
+        }
+      }
+    }
+  }
+}
+
+TEST(CpuRendererTest, FastPhongStaysCloseToPhong)
+{
+  const cpu::Mesh mesh = MeshOf(sl::datasets::MakeTorus(1.0, 0.4, 96, 48), true);
+  const auto cam = CameraLookingAt(Vec3d(0.3, 2.2, 2.6), Vec3d(0, 0, 0), 40);
+  const auto lighting = OneLight(sl::NormalizeOr(Vec3f(-0.4f, 0.5f, 1.0f), Vec3f(0, 0, 1)));
+  cpu::RenderOptions opt;
+  opt.width = 480;
+  opt.height = 360;
+  opt.interpolation = cpu::InterpolationSpace::Screen;
+  opt.mode = cpu::ShadingMode::Phong;
+  const auto phong = cpu::Render(mesh, cam, lighting, BlinnPhong(), opt);
+  opt.mode = cpu::ShadingMode::FastPhong;
+  const auto fast = cpu::Render(mesh, cam, lighting, BlinnPhong(), opt);
+  double sum = 0;
+  int64_t n = 0;
+  for (size_t p = 0; p < phong.covered.size(); ++p)
+  {
+    if (phong.covered[p] && fast.covered[p])
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        sum += std::abs(std::clamp(phong.rgb[3 * p + c], 0.f, 1.f) -
+          std::clamp(fast.rgb[3 * p + c], 0.f, 1.f));
+      }
+      n += 3;
+    }
+  }
+  const double mean = sum / n;
+  std::printf("fast-phong vs phong mean |difference|: %.6f (%.3f/255)\n", mean, mean * 255);
+  // The target: mean error under 1/255 at this tessellation.
+  EXPECT_LT(mean, 1.0 / 255.0);
+}
+
+TEST(CpuRendererTest, BadParametersThrow)
+{
+  const cpu::Mesh mesh = MeshOf(sl::datasets::MakeIcosphere(1));
+  const auto cam = CameraLookingAt(Vec3d(0, 0, 4), Vec3d(0, 0, 0), 40);
+  cpu::RenderOptions opt;
+  opt.width = 0;
+  EXPECT_THROW(cpu::Render(mesh, cam, OneLight(Vec3f(0, 0, 1)), BlinnPhong(), opt),
+    std::invalid_argument);
+  opt.width = 10;
+  auto badCam = cam;
+  badCam.position.x = std::nan("");
+  EXPECT_THROW(cpu::Render(mesh, badCam, OneLight(Vec3f(0, 0, 1)), BlinnPhong(), opt),
+    std::invalid_argument);
+  auto ct = BlinnPhong();
+  ct.model = sl::ReflectanceModel::CookTorrance;
+  opt.mode = cpu::ShadingMode::FastPhong;
+  EXPECT_THROW(cpu::Render(mesh, cam, OneLight(Vec3f(0, 0, 1)), ct, opt), std::invalid_argument);
+}

@@ -2,13 +2,14 @@
 // The CPU renderer. Three stages:
 //   1. per vertex (parallel): clip coordinates, screen position, the
 //      attributes the mode interpolates (Gouraud: the shaded colour).
-//   2. per polygon (parallel, in chunks): trivial frustum reject, near-plane
-//      clipping, facing and culling, flat colour, binning into row bands.
-//   3. per band of rows (parallel): scan conversion as in the lecture, edge
-//      walk in y (slide 5), span in x with I_{p+1} = I_p + dI (slide 6), depth
-//      test, shading. Each pixel belongs to exactly one band and polygons are
-//      visited in input order, so the image is bit-identical for any thread
-//      count.
+//   2. per thread, over an interleaved set of 16-row bands: every polygon in
+//      input order is rejected early when it misses the thread's bands, else
+//      clipped at the near plane, culled, lit (flat) and scan-converted as in
+//      the lecture: edge walk in y (slide 5), span in x with
+//      I_{p+1} = I_p + dI (slide 6), depth test, shading. Each pixel belongs
+//      to one band and sees polygons in input order, and no arithmetic
+//      depends on the band split, so the image is bit-identical for any
+//      thread count.
 #include "shadinglab/cpu/SoftwareRenderer.h"
 
 #include "shadinglab/model/FastPhong.h"
@@ -35,13 +36,10 @@ constexpr int kAttrZ = 0;
 constexpr int kAttrInvW = 1;
 constexpr int kAttrFirst = 2;
 
-/// Rows per band in stage 3. 16 rows keeps ~70 bands at 1080p so two threads
-/// balance dynamically, while a typical small triangle touches one band.
+/// Rows per band. Bands are dealt to threads round-robin: 16 rows gives ~70
+/// bands at 1080p, fine enough that two threads get even work on any image,
+/// coarse enough that a typical small triangle touches one band only.
 constexpr int kBandRows = 16;
-
-/// Polygons per stage-2 chunk: large enough that chunk bookkeeping is
-/// negligible, small enough that two threads balance.
-constexpr int64_t kChunkPolygons = 16384;
 
 /// Screen-space polygon area (pixels^2) below which a polygon is skipped as
 /// degenerate: it cannot contain a pixel centre except on its own edges,
@@ -111,72 +109,59 @@ void ParallelFor(int64_t count, int threads, Fn&& fn)
   }
 }
 
-/// A polygon to scan-convert: vertex references into the global screen
-/// vertices (>= 0) or the chunk's own clipped vertices (~index).
-struct RasterPolygon
+/// Per-thread scratch space and counters of stage 2.
+struct ThreadState
 {
-  int64_t firstRef;
-  int32_t count;
-  bool backFacing;
-  float ymin, ymax;
-  Vec3f flatColor;
+  std::vector<ScreenVertex> clipped; ///< vertices made by near-plane clipping
+  int64_t clippedPolygons = 0, degenerate = 0, rasterized = 0, shaded = 0;
 };
 
-struct Chunk
-{
-  std::vector<RasterPolygon> polygons;
-  std::vector<int64_t> refs;
-  std::vector<ScreenVertex> extra;
-  std::vector<std::vector<int32_t>> bins; ///< per band: polygon indices
-  int64_t clipped = 0, degenerate = 0, rasterized = 0;
-};
+} // namespace
 
-class Renderer
+/// The renderer's state; buffers persist across frames of one SoftwareRenderer.
+class SoftwareRenderer::Internals
 {
 public:
-  Renderer(const Mesh& mesh, const Camera& camera, const Lighting<float>& lighting,
-    const Material<float>& material, const RenderOptions& options)
-    : MeshData(mesh)
-    , Cam(camera)
-    , Lights(lighting)
-    , Mat(material)
-    , Opt(options)
-  {
-  }
-
-  Image Run(RenderStats* stats);
+  const Image& Run(const Mesh& mesh, const Camera& camera, const Lighting<float>& lighting,
+    const Material<float>& material, const RenderOptions& options, RenderStats* stats);
 
 private:
   void SetupTransforms();
   void ComputeVertexAttributes(int64_t v, float* raw) const;
   void ProjectVertex(const double clip[4], const float* raw, ScreenVertex& out) const;
-  void ProcessChunk(int64_t begin, int64_t end, Chunk& chunk) const;
-  void RasterizeBand(int band, std::vector<float>& depth) ;
+  void RasterizeThread(int thread, int threadCount, ThreadState& state);
+  void DrawSourcePolygon(int64_t p, int thread, int threadCount, ThreadState& state);
   template <typename PixelFn, typename SpanFn>
   void ScanConvert(const ScreenVertex* const* verts, int n, int rowBegin, int rowEnd,
     SpanFn&& beginSpan, PixelFn&& pixel) const;
-  void DrawPolygon(const Chunk& chunk, const RasterPolygon& poly, int rowBegin, int rowEnd,
-    std::vector<float>& depth);
-  void DrawTriangleFastPhong(const ScreenVertex* const* verts, const int64_t* meshIds,
-    bool back, int rowBegin, int rowEnd, std::vector<float>& depth);
+  template <typename PixelFn, typename SpanFn>
+  void ScanPolygon(const ScreenVertex* const* verts, int n, int rowBegin, int rowEnd,
+    SpanFn&& beginSpan, PixelFn&& pixel) const;
+  template <int NA, typename PixelFn, typename SpanFn>
+  void ScanTriangle(const ScreenVertex* const* verts, int rowBegin, int rowEnd,
+    SpanFn&& beginSpan, PixelFn&& pixel) const;
+  void DrawPolygon(const ScreenVertex* const* verts, const int64_t* meshIds, int count, bool back,
+    const Vec3f& flatColor, int rowBegin, int rowEnd, ThreadState& state);
+  void DrawTriangleFastPhong(const ScreenVertex* const* verts, const int64_t* meshIds, bool back,
+    int rowBegin, int rowEnd, ThreadState& state);
 
   Vec3f NormalOf(int64_t v) const
   {
-    const float* n = &this->Normals[3 * v];
+    const float* n = this->NormalData + 3 * v;
     return { n[0], n[1], n[2] };
   }
   Vec3f PointOf(int64_t v) const
   {
-    const float* p = &this->MeshData.points[3 * v];
+    const float* p = &this->MeshData->points[3 * v];
     return { p[0], p[1], p[2] };
   }
   Vec3f ColorOf(int64_t v) const
   {
-    if (this->MeshData.colors.empty())
+    if (this->MeshData->colors.empty())
     {
       return this->Mat.diffuseColor;
     }
-    const float* c = &this->MeshData.colors[3 * v];
+    const float* c = &this->MeshData->colors[3 * v];
     return { c[0], c[1], c[2] };
   }
   Vec3f ViewDirection(const Vec3f& P) const
@@ -192,30 +177,33 @@ private:
     return Shade(this->Mat, this->Lights, color, P, N, this->ViewDirection(P));
   }
 
-  const Mesh& MeshData;
-  const Camera& Cam;
-  const Lighting<float>& Lights;
-  const Material<float>& Mat;
-  const RenderOptions& Opt;
+  // Frame inputs.
+  const Mesh* MeshData = nullptr;
+  Camera Cam;
+  Lighting<float> Lights;
+  Material<float> Mat;
+  RenderOptions Opt;
 
   int Width = 0, Height = 0, Threads = 1;
   Matrix4 ViewProjection{};
   Vec3f Eye, ToEye;
-  std::vector<float> Normals;
+  const float* NormalData = nullptr;
+  std::vector<float> ComputedNormals;
   int NumAttributes = 0;   // beyond z and 1/w
-  bool HasPosition = false; // phong: world position interpolated
   int NormalSlot = -1, PositionSlot = -1, ColorSlot = -1;
   bool Perspective = true;
+
+  // Buffers reused across frames.
   std::vector<ScreenVertex> Screen;
   std::vector<uint8_t> Behind; // vertex outside the near plane
-  std::vector<Chunk> Chunks;
   std::vector<float> Rgb;
+  std::vector<float> Depth;
   std::vector<uint8_t> Covered;
   std::vector<uint16_t> Coverage;
-  std::atomic<int64_t> Shaded{ 0 };
+  Image Output;
 };
 
-void Renderer::SetupTransforms()
+void SoftwareRenderer::Internals::SetupTransforms()
 {
   const Vec3<double> eye = this->Cam.position, focal = this->Cam.focalPoint;
   const Vec3<double> forward = NormalizeOr(focal - eye, Vec3<double>(0, 0, -1));
@@ -257,7 +245,7 @@ void Renderer::SetupTransforms()
   this->ToEye = Vec3f(-forward);
 }
 
-void Renderer::ComputeVertexAttributes(int64_t v, float* raw) const
+void SoftwareRenderer::Internals::ComputeVertexAttributes(int64_t v, float* raw) const
 {
   switch (this->Opt.mode)
   {
@@ -297,7 +285,7 @@ void Renderer::ComputeVertexAttributes(int64_t v, float* raw) const
   }
 }
 
-void Renderer::ProjectVertex(const double clip[4], const float* raw, ScreenVertex& out) const
+void SoftwareRenderer::Internals::ProjectVertex(const double clip[4], const float* raw, ScreenVertex& out) const
 {
   const double invW = 1.0 / clip[3];
   out.x = static_cast<float>((clip[0] * invW * 0.5 + 0.5) * this->Width);
@@ -313,9 +301,16 @@ void Renderer::ProjectVertex(const double clip[4], const float* raw, ScreenVerte
   }
 }
 
-Image Renderer::Run(RenderStats* stats)
+const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh, const Camera& camera,
+  const Lighting<float>& lighting, const Material<float>& material, const RenderOptions& options,
+  RenderStats* stats)
 {
   const auto start = std::chrono::steady_clock::now();
+  this->MeshData = &mesh;
+  this->Cam = camera;
+  this->Lights = lighting;
+  this->Mat = material;
+  this->Opt = options;
   const int ssaa = this->Opt.ssaa;
   this->Width = this->Opt.width * ssaa;
   this->Height = this->Opt.height * ssaa;
@@ -324,21 +319,23 @@ Image Renderer::Run(RenderStats* stats)
     : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   this->Perspective =
     this->Opt.interpolation == InterpolationSpace::Perspective && !this->Cam.parallel;
+  this->NormalSlot = this->PositionSlot = this->ColorSlot = -1;
   this->SetupTransforms();
 
-  const int64_t nv = this->MeshData.NumberOfPoints();
-  const int64_t np = this->MeshData.NumberOfPolygons();
+  const int64_t nv = mesh.NumberOfPoints();
+  const int64_t np = mesh.NumberOfPolygons();
   bool computedNormals = false;
-  const bool needNormals = this->Opt.mode != ShadingMode::Flat;
-  if (needNormals)
+  this->NormalData = nullptr;
+  if (this->Opt.mode != ShadingMode::Flat)
   {
-    if (static_cast<int64_t>(this->MeshData.normals.size()) == 3 * nv)
+    if (static_cast<int64_t>(mesh.normals.size()) == 3 * nv)
     {
-      this->Normals = this->MeshData.normals;
+      this->NormalData = mesh.normals.data();
     }
     else
     {
-      this->Normals = AreaWeightedNormals(this->MeshData);
+      this->ComputedNormals = AreaWeightedNormals(mesh);
+      this->NormalData = this->ComputedNormals.data();
       computedNormals = true;
     }
   }
@@ -360,13 +357,14 @@ Image Renderer::Run(RenderStats* stats)
     {
       pointLight |= this->Lights.lights[j].type == LightType::Point;
     }
+    // The world position is only needed for a local viewer or point lights.
     if (!this->Cam.parallel || pointLight)
     {
       this->PositionSlot = slot;
       slot += 3;
     }
   }
-  if ((perPixel || this->Opt.mode == ShadingMode::FastPhong) && !this->MeshData.colors.empty())
+  if ((perPixel || this->Opt.mode == ShadingMode::FastPhong) && !mesh.colors.empty())
   {
     this->ColorSlot = slot;
     slot += 3;
@@ -380,8 +378,7 @@ Image Renderer::Run(RenderStats* stats)
     float raw[kMaxAttributes];
     for (int64_t v = b; v < e; ++v)
     {
-      const double p[3] = { this->MeshData.points[3 * v], this->MeshData.points[3 * v + 1],
-        this->MeshData.points[3 * v + 2] };
+      const double p[3] = { mesh.points[3 * v], mesh.points[3 * v + 1], mesh.points[3 * v + 2] };
       double clip[4];
       this->ViewProjection.Apply(p, clip);
       this->Behind[v] = clip[2] < -clip[3];
@@ -394,67 +391,39 @@ Image Renderer::Run(RenderStats* stats)
     }
   });
 
-  // Stage 2: polygons.
-  const int64_t chunkCount = (np + kChunkPolygons - 1) / kChunkPolygons;
-  this->Chunks.assign(static_cast<size_t>(chunkCount), Chunk());
-  const int bands = (this->Height + kBandRows - 1) / kBandRows;
-  std::atomic<int64_t> nextChunk{ 0 };
-  ParallelFor(this->Threads, this->Threads, [&](int64_t, int64_t, int) {
-    for (;;)
-    {
-      const int64_t c = nextChunk.fetch_add(1);
-      if (c >= chunkCount)
-      {
-        break;
-      }
-      Chunk& chunk = this->Chunks[c];
-      chunk.bins.assign(static_cast<size_t>(bands), {});
-      this->ProcessChunk(c * kChunkPolygons, std::min(np, (c + 1) * kChunkPolygons), chunk);
-    }
-  });
-
-  // Stage 3: bands of rows.
+  // Stage 2: each thread owns an interleaved set of row bands, clears them
+  // and draws every polygon, in input order, into its own rows.
   const size_t pixels = static_cast<size_t>(this->Width) * this->Height;
-  this->Rgb.assign(pixels * 3, 0.0f);
-  for (size_t i = 0; i < pixels; ++i)
-  {
-    this->Rgb[3 * i] = this->Opt.background.x;
-    this->Rgb[3 * i + 1] = this->Opt.background.y;
-    this->Rgb[3 * i + 2] = this->Opt.background.z;
-  }
-  this->Covered.assign(pixels, 0);
+  this->Rgb.resize(pixels * 3);
+  this->Depth.resize(pixels);
+  this->Covered.resize(pixels);
   if (this->Opt.countCoverage)
   {
     this->Coverage.assign(pixels, 0);
   }
-  std::atomic<int> nextBand{ 0 };
-  ParallelFor(this->Threads, this->Threads, [&](int64_t, int64_t, int) {
-    std::vector<float> depth(static_cast<size_t>(kBandRows) * this->Width);
-    for (;;)
+  std::vector<ThreadState> states(static_cast<size_t>(this->Threads));
+  ParallelFor(this->Threads, this->Threads, [&](int64_t b, int64_t e, int) {
+    for (int64_t t = b; t < e; ++t)
     {
-      const int band = nextBand.fetch_add(1);
-      if (band >= bands)
-      {
-        break;
-      }
-      this->RasterizeBand(band, depth);
+      this->RasterizeThread(static_cast<int>(t), this->Threads, states[t]);
     }
   });
 
   // Resolve supersampling with a box filter.
-  Image image;
+  Image& image = this->Output;
   image.width = this->Opt.width;
   image.height = this->Opt.height;
   if (ssaa == 1)
   {
-    image.rgb = std::move(this->Rgb);
-    image.covered = std::move(this->Covered);
-    image.coverage = std::move(this->Coverage);
+    image.rgb.swap(this->Rgb);
+    image.covered.swap(this->Covered);
+    image.coverage.swap(this->Coverage);
   }
   else
   {
     image.rgb.assign(static_cast<size_t>(image.width) * image.height * 3, 0.0f);
     image.covered.assign(static_cast<size_t>(image.width) * image.height, 0);
+    image.coverage.clear();
     const float norm = 1.0f / static_cast<float>(ssaa * ssaa);
     for (int y = 0; y < image.height; ++y)
     {
@@ -486,26 +455,23 @@ Image Renderer::Run(RenderStats* stats)
 
   if (stats)
   {
+    *stats = RenderStats();
     stats->polygons = np;
-    stats->triangles = 0;
     for (int64_t p = 0; p < np; ++p)
     {
-      stats->triangles += std::max<int64_t>(0,
-        this->MeshData.offsets[p + 1] - this->MeshData.offsets[p] - 2);
+      stats->triangles += std::max<int64_t>(0, mesh.offsets[p + 1] - mesh.offsets[p] - 2);
     }
-    stats->rasterized = stats->clipped = stats->degenerate = 0;
-    for (const auto& chunk : this->Chunks)
+    for (const auto& st : states)
     {
-      stats->rasterized += chunk.rasterized;
-      stats->clipped += chunk.clipped;
-      stats->degenerate += chunk.degenerate;
+      stats->rasterized += st.rasterized;
+      stats->clipped += st.clippedPolygons;
+      stats->degenerate += st.degenerate;
+      stats->pixelsShaded += st.shaded;
     }
-    stats->pixelsCovered = 0;
     for (uint8_t c : image.covered)
     {
       stats->pixelsCovered += c;
     }
-    stats->pixelsShaded = this->Shaded.load();
     stats->threads = this->Threads;
     stats->normalsComputed = computedNormals;
     stats->milliseconds =
@@ -514,228 +480,428 @@ Image Renderer::Run(RenderStats* stats)
   return image;
 }
 
-void Renderer::ProcessChunk(int64_t begin, int64_t end, Chunk& chunk) const
+void SoftwareRenderer::Internals::RasterizeThread(int thread, int threadCount, ThreadState& state)
 {
-  const auto& offsets = this->MeshData.offsets;
-  const auto& conn = this->MeshData.connectivity;
-  const bool triangulate = this->Opt.polygons == PolygonHandling::Triangulate ||
-    this->Opt.mode == ShadingMode::FastPhong;
-  int64_t local[kMaxPolygonVertices];
-
-  for (int64_t p = begin; p < end; ++p)
+  const Vec3f bg = this->Opt.background;
+  const int bands = (this->Height + kBandRows - 1) / kBandRows;
+  for (int b = thread; b < bands; b += threadCount)
   {
-    const int64_t first = offsets[p];
-    const int n = static_cast<int>(std::min<int64_t>(offsets[p + 1] - first, kMaxPolygonVertices - 1));
-    if (n < 3)
+    const size_t first = static_cast<size_t>(b) * kBandRows * this->Width;
+    const size_t last =
+      static_cast<size_t>(std::min(this->Height, (b + 1) * kBandRows)) * this->Width;
+    for (size_t i = first; i < last; ++i)
     {
-      continue;
+      this->Rgb[3 * i] = bg.x;
+      this->Rgb[3 * i + 1] = bg.y;
+      this->Rgb[3 * i + 2] = bg.z;
     }
-    bool anyBehind = false;
-    for (int k = 0; k < n; ++k)
+    std::fill(this->Depth.begin() + first, this->Depth.begin() + last,
+      std::numeric_limits<float>::infinity());
+    std::fill(this->Covered.begin() + first, this->Covered.begin() + last, uint8_t(0));
+  }
+  const int64_t np = this->MeshData->NumberOfPolygons();
+  for (int64_t p = 0; p < np; ++p)
+  {
+    this->DrawSourcePolygon(p, thread, threadCount, state);
+  }
+}
+
+void SoftwareRenderer::Internals::DrawSourcePolygon(
+  int64_t p, int thread, int threadCount, ThreadState& state)
+{
+  const auto& offsets = this->MeshData->offsets;
+  const auto& conn = this->MeshData->connectivity;
+  const int64_t first = offsets[p];
+  const int n =
+    static_cast<int>(std::min<int64_t>(offsets[p + 1] - first, kMaxPolygonVertices - 1));
+  if (n < 3)
+  {
+    return;
+  }
+  // Counters are kept by the thread that owns the polygon's first band (or
+  // thread 0 for polygons rejected before rows are known), so they do not
+  // depend on the thread count.
+  const ScreenVertex* verts[kMaxPolygonVertices];
+  int64_t ids[kMaxPolygonVertices];
+  bool anyBehind = false;
+  for (int k = 0; k < n; ++k)
+  {
+    ids[k] = conn[first + k];
+    anyBehind |= this->Behind[ids[k]] != 0;
+  }
+  int count = 0;
+  bool wasClipped = false;
+  if (!anyBehind)
+  {
+    // Fast reject on rows before anything else: most polygons of a large
+    // mesh lie in another thread's bands.
+    float ymin = this->Screen[ids[0]].y, ymax = ymin;
+    for (int k = 1; k < n; ++k)
     {
-      anyBehind |= this->Behind[conn[first + k]] != 0;
+      ymin = std::min(ymin, this->Screen[ids[k]].y);
+      ymax = std::max(ymax, this->Screen[ids[k]].y);
     }
-    int count = 0;
-    if (!anyBehind)
+    const int j0 = std::max(0, static_cast<int>(std::ceil(ymin - 0.5f)));
+    const int j1 = std::min(this->Height, static_cast<int>(std::ceil(ymax - 0.5f)));
+    if (j1 <= j0)
     {
+      // No pixel row: count it if it is degenerate (zero screen area).
+      double area = 0;
       for (int k = 0; k < n; ++k)
       {
-        local[count++] = conn[first + k];
+        const ScreenVertex& a = this->Screen[ids[k]];
+        const ScreenVertex& b = this->Screen[ids[(k + 1) % n]];
+        area += static_cast<double>(a.x) * b.y - static_cast<double>(b.x) * a.y;
       }
+      const int band = std::clamp(j0, 0, std::max(0, this->Height - 1)) / kBandRows;
+      state.degenerate += !(std::abs(area) * 0.5 >= kDegenerateArea) && band % threadCount == thread;
+      return;
     }
-    else
+    const int b0 = j0 / kBandRows, b1 = (j1 - 1) / kBandRows;
+    if (b1 - b0 + 1 < threadCount)
     {
-      // Sutherland-Hodgman against the near plane z + w >= 0 in clip space,
-      // attributes interpolated linearly there (exact before the divide).
-      // Each crossing is computed from its inside end towards its outside
-      // end, so two polygons sharing an edge get bit-identical vertices.
-      ++chunk.clipped;
-      struct ClipVertex
+      bool mine = false;
+      for (int b = b0; b <= b1 && !mine; ++b)
       {
-        double c[4];
-        float raw[kMaxAttributes];
-      };
-      ClipVertex in[kMaxPolygonVertices];
-      for (int k = 0; k < n; ++k)
-      {
-        const int64_t v = conn[first + k];
-        const double pt[3] = { this->MeshData.points[3 * v], this->MeshData.points[3 * v + 1],
-          this->MeshData.points[3 * v + 2] };
-        this->ViewProjection.Apply(pt, in[k].c);
-        this->ComputeVertexAttributes(v, in[k].raw);
+        mine = b % threadCount == thread;
       }
-      for (int k = 0; k < n; ++k)
-      {
-        const ClipVertex& a = in[k];
-        const ClipVertex& b = in[(k + 1) % n];
-        const double da = a.c[2] + a.c[3], db = b.c[2] + b.c[3];
-        const bool aIn = da >= 0, bIn = db >= 0;
-        auto emit = [&](const ClipVertex& cv) {
-          ScreenVertex sv;
-          this->ProjectVertex(cv.c, cv.raw, sv);
-          chunk.extra.push_back(sv);
-          local[count++] = ~static_cast<int64_t>(chunk.extra.size() - 1);
-        };
-        if (aIn)
-        {
-          emit(a);
-        }
-        if (aIn != bIn)
-        {
-          const ClipVertex& inside = aIn ? a : b;
-          const ClipVertex& outside = aIn ? b : a;
-          const double di = aIn ? da : db, dout = aIn ? db : da;
-          const double t = di / (di - dout);
-          ClipVertex x;
-          for (int i = 0; i < 4; ++i)
-          {
-            x.c[i] = inside.c[i] + t * (outside.c[i] - inside.c[i]);
-          }
-          // Land exactly on the plane so 1/w stays finite.
-          x.c[2] = -x.c[3];
-          for (int i = 0; i < this->NumAttributes; ++i)
-          {
-            x.raw[i] = static_cast<float>(inside.raw[i] + t * (outside.raw[i] - inside.raw[i]));
-          }
-          emit(x);
-        }
-      }
-      if (count < 3)
-      {
-        continue;
-      }
-    }
-    auto vertex = [&](int64_t ref) -> const ScreenVertex& {
-      return ref >= 0 ? this->Screen[ref] : chunk.extra[~ref];
-    };
-    // Trivial reject outside the viewport or beyond the far plane, signed
-    // area (y down: front faces have negative area) and bounds.
-    float xmin = std::numeric_limits<float>::infinity(), xmax = -xmin, ymin = xmin, ymax = -xmin;
-    float zmin = xmin;
-    double area = 0;
-    for (int k = 0; k < count; ++k)
-    {
-      const ScreenVertex& a = vertex(local[k]);
-      const ScreenVertex& b = vertex(local[(k + 1) % count]);
-      area += static_cast<double>(a.x) * b.y - static_cast<double>(b.x) * a.y;
-      xmin = std::min(xmin, a.x);
-      xmax = std::max(xmax, a.x);
-      ymin = std::min(ymin, a.y);
-      ymax = std::max(ymax, a.y);
-      zmin = std::min(zmin, a.a[kAttrZ]);
-    }
-    if (xmax < 0 || ymax < 0 || xmin > this->Width || ymin > this->Height || zmin > 1.0f)
-    {
-      continue;
-    }
-    if (std::abs(area) * 0.5 < kDegenerateArea || !std::isfinite(area))
-    {
-      ++chunk.degenerate;
-      continue;
-    }
-    const bool back = area > 0;
-    if (back && this->Opt.cullBackFaces)
-    {
-      continue;
-    }
-    Vec3f flat;
-    if (this->Opt.mode == ShadingMode::Flat && !this->Opt.countCoverage)
-    {
-      // Face normal: given cell normal, else Newell's method (exact for
-      // planar polygons, a least-squares normal otherwise).
-      Vec3f N;
-      Vec3f centroid;
-      Vec3f color;
-      for (int k = 0; k < n; ++k)
-      {
-        const int64_t v = conn[first + k];
-        centroid += this->PointOf(v);
-        color += this->ColorOf(v);
-        const Vec3f a = this->PointOf(v), b = this->PointOf(conn[first + (k + 1) % n]);
-        N += Vec3f((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
-      }
-      if (!this->MeshData.faceNormals.empty())
-      {
-        N = Vec3f(this->MeshData.faceNormals[3 * p], this->MeshData.faceNormals[3 * p + 1],
-          this->MeshData.faceNormals[3 * p + 2]);
-      }
-      centroid *= 1.0f / n;
-      color *= 1.0f / n;
-      N = NormalizeOr(N, this->ToEye);
-      if (this->Opt.twoSidedLighting && back)
-      {
-        N = -N;
-      }
-      flat = this->ShadeAt(centroid, N, color);
-    }
-    // Gouraud back faces: relight their vertices with flipped normals.
-    if (this->Opt.mode == ShadingMode::Gouraud && back && this->Opt.twoSidedLighting &&
-      !this->Opt.countCoverage)
-    {
-      for (int k = 0; k < count; ++k)
-      {
-        if (local[k] < 0)
-        {
-          continue; // clipped vertices: keep front lighting (rare, at the near plane)
-        }
-        const int64_t v = local[k];
-        ScreenVertex sv = this->Screen[v];
-        const Vec3f c = this->ShadeAt(this->PointOf(v), -this->NormalOf(v), this->ColorOf(v));
-        const float scale = sv.a[kAttrInvW];
-        sv.a[kAttrFirst] = c.x * scale;
-        sv.a[kAttrFirst + 1] = c.y * scale;
-        sv.a[kAttrFirst + 2] = c.z * scale;
-        chunk.extra.push_back(sv);
-        local[k] = ~static_cast<int64_t>(chunk.extra.size() - 1);
-      }
-    }
-    auto addPolygon = [&](const int64_t* refs, int m) {
-      RasterPolygon rp;
-      rp.firstRef = static_cast<int64_t>(chunk.refs.size());
-      rp.count = m;
-      rp.backFacing = back;
-      rp.flatColor = flat;
-      rp.ymin = std::numeric_limits<float>::infinity();
-      rp.ymax = -rp.ymin;
-      for (int k = 0; k < m; ++k)
-      {
-        chunk.refs.push_back(refs[k]);
-        const float y = vertex(refs[k]).y;
-        rp.ymin = std::min(rp.ymin, y);
-        rp.ymax = std::max(rp.ymax, y);
-      }
-      const int firstRow = std::max(0, static_cast<int>(std::ceil(rp.ymin - 0.5f)));
-      const int lastRow =
-        std::min(this->Height, static_cast<int>(std::ceil(rp.ymax - 0.5f))) - 1;
-      if (lastRow < firstRow)
+      if (!mine)
       {
         return;
       }
-      const int32_t index = static_cast<int32_t>(chunk.polygons.size());
-      chunk.polygons.push_back(rp);
-      ++chunk.rasterized;
-      for (int b = firstRow / kBandRows; b <= lastRow / kBandRows; ++b)
-      {
-        chunk.bins[b].push_back(index);
-      }
+    }
+    for (int k = 0; k < n; ++k)
+    {
+      verts[count++] = &this->Screen[ids[k]];
+    }
+  }
+  else
+  {
+    // Sutherland-Hodgman against the near plane z + w >= 0 in clip space,
+    // attributes interpolated linearly there (exact before the divide).
+    // Each crossing is computed from its inside end towards its outside
+    // end, so two polygons sharing an edge get bit-identical vertices.
+    wasClipped = true;
+    struct ClipVertex
+    {
+      double c[4];
+      float raw[kMaxAttributes];
     };
-    if (triangulate && count > 3)
+    ClipVertex in[kMaxPolygonVertices];
+    for (int k = 0; k < n; ++k)
     {
-      for (int k = 1; k + 1 < count; ++k)
+      const int64_t v = ids[k];
+      const double pt[3] = { this->MeshData->points[3 * v], this->MeshData->points[3 * v + 1],
+        this->MeshData->points[3 * v + 2] };
+      this->ViewProjection.Apply(pt, in[k].c);
+      this->ComputeVertexAttributes(v, in[k].raw);
+    }
+    state.clipped.clear();
+    int64_t clippedIds[kMaxPolygonVertices];
+    for (int k = 0; k < n; ++k)
+    {
+      const ClipVertex& a = in[k];
+      const ClipVertex& b = in[(k + 1) % n];
+      const double da = a.c[2] + a.c[3], db = b.c[2] + b.c[3];
+      const bool aIn = da >= 0, bIn = db >= 0;
+      auto emit = [&](const ClipVertex& cv, int64_t id) {
+        ScreenVertex sv;
+        this->ProjectVertex(cv.c, cv.raw, sv);
+        clippedIds[state.clipped.size()] = id;
+        state.clipped.push_back(sv);
+      };
+      if (aIn)
       {
-        const int64_t tri[3] = { local[0], local[k], local[k + 1] };
-        addPolygon(tri, 3);
+        emit(a, ids[k]);
+      }
+      if (aIn != bIn)
+      {
+        const ClipVertex& inside = aIn ? a : b;
+        const ClipVertex& outside = aIn ? b : a;
+        const double di = aIn ? da : db, dout = aIn ? db : da;
+        const double t = di / (di - dout);
+        ClipVertex x;
+        for (int i = 0; i < 4; ++i)
+        {
+          x.c[i] = inside.c[i] + t * (outside.c[i] - inside.c[i]);
+        }
+        // Land exactly on the plane so 1/w stays finite.
+        x.c[2] = -x.c[3];
+        for (int i = 0; i < this->NumAttributes; ++i)
+        {
+          x.raw[i] = static_cast<float>(inside.raw[i] + t * (outside.raw[i] - inside.raw[i]));
+        }
+        emit(x, aIn ? ids[k] : ids[(k + 1) % n]);
       }
     }
-    else
+    count = static_cast<int>(state.clipped.size());
+    if (count < 3)
     {
-      addPolygon(local, count);
+      return;
     }
+    for (int k = 0; k < count; ++k)
+    {
+      verts[k] = &state.clipped[k];
+      ids[k] = clippedIds[k];
+    }
+  }
+  // Trivial reject outside the viewport or beyond the far plane, signed
+  // area (y down: front faces have negative area) and row range.
+  float xmin = std::numeric_limits<float>::infinity(), xmax = -xmin, ymin = xmin, ymax = -xmin;
+  float zmin = xmin;
+  double area = 0;
+  for (int k = 0; k < count; ++k)
+  {
+    const ScreenVertex& a = *verts[k];
+    const ScreenVertex& b = *verts[(k + 1) % count];
+    area += static_cast<double>(a.x) * b.y - static_cast<double>(b.x) * a.y;
+    xmin = std::min(xmin, a.x);
+    xmax = std::max(xmax, a.x);
+    ymin = std::min(ymin, a.y);
+    ymax = std::max(ymax, a.y);
+    zmin = std::min(zmin, a.a[kAttrZ]);
+  }
+  const int j0 = std::max(0, static_cast<int>(std::ceil(ymin - 0.5f)));
+  const int j1 = std::min(this->Height, static_cast<int>(std::ceil(ymax - 0.5f)));
+  if (xmax < 0 || xmin > this->Width || j1 <= j0 || zmin > 1.0f)
+  {
+    return;
+  }
+  const bool owner = (j0 / kBandRows) % threadCount == thread;
+  if (!(std::abs(area) * 0.5 >= kDegenerateArea) || !std::isfinite(area))
+  {
+    state.degenerate += owner;
+    return;
+  }
+  const bool back = area > 0;
+  if (back && this->Opt.cullBackFaces)
+  {
+    return;
+  }
+  state.clippedPolygons += owner && wasClipped;
+  state.rasterized += owner;
+
+  Vec3f flat;
+  if (this->Opt.mode == ShadingMode::Flat && !this->Opt.countCoverage)
+  {
+    // Face normal: given cell normal, else Newell's method (exact for
+    // planar polygons, a least-squares normal otherwise). Lit at the
+    // polygon's centroid with its mean colour.
+    Vec3f N, centroid, color;
+    for (int k = 0; k < n; ++k)
+    {
+      const int64_t v = conn[first + k];
+      const Vec3f a = this->PointOf(v), b = this->PointOf(conn[first + (k + 1) % n]);
+      centroid += a;
+      color += this->ColorOf(v);
+      N += Vec3f((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
+    }
+    if (!this->MeshData->faceNormals.empty())
+    {
+      const float* fn = &this->MeshData->faceNormals[3 * p];
+      N = Vec3f(fn[0], fn[1], fn[2]);
+    }
+    centroid *= 1.0f / n;
+    color *= 1.0f / n;
+    N = NormalizeOr(N, this->ToEye);
+    if (this->Opt.twoSidedLighting && back)
+    {
+      N = -N;
+    }
+    flat = this->ShadeAt(centroid, N, color);
+  }
+  // Gouraud back faces: relight their vertices with flipped normals.
+  ScreenVertex relit[kMaxPolygonVertices];
+  if (this->Opt.mode == ShadingMode::Gouraud && back && this->Opt.twoSidedLighting &&
+    !this->Opt.countCoverage)
+  {
+    for (int k = 0; k < count; ++k)
+    {
+      relit[k] = *verts[k];
+      const int64_t v = ids[k];
+      const Vec3f c = this->ShadeAt(this->PointOf(v), -this->NormalOf(v), this->ColorOf(v));
+      const float scale = relit[k].a[kAttrInvW];
+      relit[k].a[kAttrFirst] = c.x * scale;
+      relit[k].a[kAttrFirst + 1] = c.y * scale;
+      relit[k].a[kAttrFirst + 2] = c.z * scale;
+      verts[k] = &relit[k];
+    }
+  }
+  // Scan-convert each part into the bands of this thread.
+  auto drawPart = [&](const ScreenVertex* const* partVerts, const int64_t* partIds, int m) {
+    float pymin = partVerts[0]->y, pymax = pymin;
+    for (int k = 1; k < m; ++k)
+    {
+      pymin = std::min(pymin, partVerts[k]->y);
+      pymax = std::max(pymax, partVerts[k]->y);
+    }
+    const int r0 = std::max(0, static_cast<int>(std::ceil(pymin - 0.5f)));
+    const int r1 = std::min(this->Height, static_cast<int>(std::ceil(pymax - 0.5f)));
+    if (r1 <= r0)
+    {
+      return;
+    }
+    const int bFirst = r0 / kBandRows, bLast = (r1 - 1) / kBandRows;
+    // First band of this thread at or after bFirst.
+    int b = bFirst + ((thread - bFirst % threadCount) + threadCount) % threadCount;
+    for (; b <= bLast; b += threadCount)
+    {
+      this->DrawPolygon(partVerts, partIds, m, back, flat, std::max(r0, b * kBandRows),
+        std::min(r1, (b + 1) * kBandRows), state);
+    }
+  };
+  const bool triangulate = this->Opt.polygons == PolygonHandling::Triangulate ||
+    this->Opt.mode == ShadingMode::FastPhong;
+  if (triangulate && count > 3)
+  {
+    for (int k = 1; k + 1 < count; ++k)
+    {
+      const ScreenVertex* tri[3] = { verts[0], verts[k], verts[k + 1] };
+      const int64_t triIds[3] = { ids[0], ids[k], ids[k + 1] };
+      drawPart(tri, triIds, 3);
+    }
+  }
+  else
+  {
+    drawPart(verts, ids, count);
   }
 }
 
 template <typename PixelFn, typename SpanFn>
-void Renderer::ScanConvert(const ScreenVertex* const* verts, int n, int rowBegin, int rowEnd,
+void SoftwareRenderer::Internals::ScanConvert(const ScreenVertex* const* verts, int n, int rowBegin, int rowEnd,
+  SpanFn&& beginSpan, PixelFn&& pixel) const
+{
+  if (n != 3)
+  {
+    this->ScanPolygon(verts, n, rowBegin, rowEnd, beginSpan, pixel);
+    return;
+  }
+  // The attribute count is fixed per frame; a compile-time count lets the
+  // span loop unroll.
+  switch (kAttrFirst + this->NumAttributes)
+  {
+    case 2:
+      this->ScanTriangle<2>(verts, rowBegin, rowEnd, beginSpan, pixel);
+      return;
+    case 5:
+      this->ScanTriangle<5>(verts, rowBegin, rowEnd, beginSpan, pixel);
+      return;
+    case 8:
+      this->ScanTriangle<8>(verts, rowBegin, rowEnd, beginSpan, pixel);
+      return;
+    case 11:
+      this->ScanTriangle<11>(verts, rowBegin, rowEnd, beginSpan, pixel);
+      return;
+    default:
+      this->ScanPolygon(verts, n, rowBegin, rowEnd, beginSpan, pixel);
+  }
+}
+
+/*
+ * Triangles. Slide 5's interpolation along the edges and slide 6's across
+ * the span give, on a triangle, the one linear function of (x, y) through
+ * the three vertex values: its gradients dI/dx and dI/dy are constant. They
+ * are computed once per triangle; each span starts from the plane value at
+ * its first pixel centre and steps I_{p+1} = I_p + dI/dx (slide 6). Edge
+ * crossings are computed from each edge's canonical endpoint order, as in
+ * ScanPolygon, so shared edges stay watertight.
+ */
+template <int NA, typename PixelFn, typename SpanFn>
+void SoftwareRenderer::Internals::ScanTriangle(const ScreenVertex* const* verts, int rowBegin, int rowEnd,
+  SpanFn&& beginSpan, PixelFn&& pixel) const
+{
+  const ScreenVertex& v0 = *verts[0];
+  const ScreenVertex& v1 = *verts[1];
+  const ScreenVertex& v2 = *verts[2];
+  const double e1x = v1.x - v0.x, e1y = v1.y - v0.y;
+  const double e2x = v2.x - v0.x, e2y = v2.y - v0.y;
+  const double det = e1x * e2y - e2x * e1y;
+  if (!(std::abs(det) > 0.0))
+  {
+    return;
+  }
+  const double invDet = 1.0 / det;
+  double dadx[NA], dady[NA];
+  float stepX[NA];
+  for (int k = 0; k < NA; ++k)
+  {
+    const double d1 = static_cast<double>(v1.a[k]) - v0.a[k];
+    const double d2 = static_cast<double>(v2.a[k]) - v0.a[k];
+    dadx[k] = (d1 * e2y - d2 * e1y) * invDet;
+    dady[k] = (d2 * e1x - d1 * e2x) * invDet;
+    stepX[k] = static_cast<float>(dadx[k]);
+  }
+  struct Edge
+  {
+    float px, py, qy, invSlope;
+  };
+  Edge edges[3];
+  float ymin = v0.y, ymax = v0.y;
+  for (int k = 0; k < 3; ++k)
+  {
+    const ScreenVertex* p = verts[k];
+    const ScreenVertex* q = verts[(k + 1) % 3];
+    if (q->y < p->y || (q->y == p->y && q->x < p->x))
+    {
+      std::swap(p, q);
+    }
+    edges[k] = { p->x, p->y, q->y, q->y > p->y ? (q->x - p->x) / (q->y - p->y) : 0.0f };
+    ymin = std::min(ymin, p->y);
+    ymax = std::max(ymax, q->y);
+  }
+  const int j0 = std::max(rowBegin, static_cast<int>(std::ceil(ymin - 0.5f)));
+  const int j1 = std::min(rowEnd, static_cast<int>(std::ceil(ymax - 0.5f)));
+  float value[kMaxAttributes] = {}; // full size: pixel functors index by slot
+  for (int j = j0; j < j1; ++j)
+  {
+    const float yc = static_cast<float>(j) + 0.5f;
+    float xs[2];
+    int nc = 0;
+    for (int k = 0; k < 3 && nc < 2; ++k)
+    {
+      const Edge& e = edges[k];
+      if (e.py <= yc && yc < e.qy)
+      {
+        xs[nc++] = e.px + (yc - e.py) * e.invSlope;
+      }
+    }
+    if (nc < 2)
+    {
+      continue;
+    }
+    const float xl = std::min(xs[0], xs[1]), xr = std::max(xs[0], xs[1]);
+    const int i0 = std::max(0, static_cast<int>(std::ceil(xl - 0.5f)));
+    const int i1 = std::min(this->Width, static_cast<int>(std::ceil(xr - 0.5f)));
+    if (i1 <= i0)
+    {
+      continue;
+    }
+    const double dx = static_cast<double>(i0) + 0.5 - v0.x, dy = static_cast<double>(yc) - v0.y;
+    for (int k = 0; k < NA; ++k)
+    {
+      value[k] = static_cast<float>(v0.a[k] + dadx[k] * dx + dady[k] * dy);
+    }
+    beginSpan(j, i0);
+    for (int i = i0; i < i1; ++i)
+    {
+      pixel(j, i, value);
+      for (int k = 0; k < NA; ++k)
+      {
+        value[k] += stepX[k];
+      }
+    }
+  }
+}
+
+/*
+ * General polygons (--polygons direct): the lecture's algorithm literally.
+ * For each scanline, every edge crossing is interpolated along its edge in y
+ * (slide 5), crossings are paired left to right, and each span is
+ * interpolated in x (slide 6). For a polygon of more than three vertices the
+ * result depends on the polygon's orientation on screen (slide 9).
+ */
+template <typename PixelFn, typename SpanFn>
+void SoftwareRenderer::Internals::ScanPolygon(const ScreenVertex* const* verts, int n, int rowBegin, int rowEnd,
   SpanFn&& beginSpan, PixelFn&& pixel) const
 {
   const int na = kAttrFirst + this->NumAttributes;
@@ -825,31 +991,10 @@ void Renderer::ScanConvert(const ScreenVertex* const* verts, int n, int rowBegin
   }
 }
 
-void Renderer::RasterizeBand(int band, std::vector<float>& depth)
+void SoftwareRenderer::Internals::DrawPolygon(const ScreenVertex* const* verts,
+  const int64_t* meshIds, int count, bool back, const Vec3f& flatColor, int rowBegin, int rowEnd,
+  ThreadState& state)
 {
-  const int rowBegin = band * kBandRows;
-  const int rowEnd = std::min(this->Height, rowBegin + kBandRows);
-  std::fill(depth.begin(), depth.end(), std::numeric_limits<float>::infinity());
-  for (const Chunk& chunk : this->Chunks)
-  {
-    for (int32_t index : chunk.bins[band])
-    {
-      this->DrawPolygon(chunk, chunk.polygons[index], rowBegin, rowEnd, depth);
-    }
-  }
-}
-
-void Renderer::DrawPolygon(const Chunk& chunk, const RasterPolygon& poly, int rowBegin,
-  int rowEnd, std::vector<float>& depth)
-{
-  const ScreenVertex* verts[kMaxPolygonVertices];
-  int64_t meshIds[kMaxPolygonVertices];
-  for (int k = 0; k < poly.count; ++k)
-  {
-    const int64_t ref = chunk.refs[poly.firstRef + k];
-    verts[k] = ref >= 0 ? &this->Screen[ref] : &chunk.extra[~ref];
-    meshIds[k] = ref;
-  }
   const int W = this->Width;
   float* rgb = this->Rgb.data();
   uint8_t* covered = this->Covered.data();
@@ -858,7 +1003,7 @@ void Renderer::DrawPolygon(const Chunk& chunk, const RasterPolygon& poly, int ro
   if (this->Opt.countCoverage)
   {
     uint16_t* coverage = this->Coverage.data();
-    this->ScanConvert(verts, poly.count, rowBegin, rowEnd, noSpan, [&](int j, int i, const float*) {
+    this->ScanConvert(verts, count, rowBegin, rowEnd, noSpan, [&](int j, int i, const float*) {
       const size_t pix = static_cast<size_t>(j) * W + i;
       ++coverage[pix];
       covered[pix] = 1;
@@ -871,7 +1016,7 @@ void Renderer::DrawPolygon(const Chunk& chunk, const RasterPolygon& poly, int ro
     {
       return nullptr; // beyond the far plane
     }
-    float& d = depth[static_cast<size_t>(j - rowBegin) * W + i];
+    float& d = this->Depth[static_cast<size_t>(j) * W + i];
     if (!(z < d))
     {
       return nullptr;
@@ -886,8 +1031,8 @@ void Renderer::DrawPolygon(const Chunk& chunk, const RasterPolygon& poly, int ro
   {
     case ShadingMode::Flat:
     {
-      const Vec3f c = poly.flatColor;
-      this->ScanConvert(verts, poly.count, rowBegin, rowEnd, noSpan, [&](int j, int i, const float* a) {
+      const Vec3f c = flatColor;
+      this->ScanConvert(verts, count, rowBegin, rowEnd, noSpan, [&](int j, int i, const float* a) {
         if (float* out = depthTest(j, i, a))
         {
           out[0] = c.x;
@@ -899,7 +1044,7 @@ void Renderer::DrawPolygon(const Chunk& chunk, const RasterPolygon& poly, int ro
     }
     case ShadingMode::Gouraud:
     {
-      this->ScanConvert(verts, poly.count, rowBegin, rowEnd, noSpan, [&](int j, int i, const float* a) {
+      this->ScanConvert(verts, count, rowBegin, rowEnd, noSpan, [&](int j, int i, const float* a) {
         if (float* out = depthTest(j, i, a))
         {
           const float w = this->Perspective ? 1.0f / a[kAttrInvW] : 1.0f;
@@ -911,15 +1056,15 @@ void Renderer::DrawPolygon(const Chunk& chunk, const RasterPolygon& poly, int ro
       return;
     }
     case ShadingMode::FastPhong:
-      this->DrawTriangleFastPhong(verts, meshIds, poly.backFacing, rowBegin, rowEnd, depth);
+      this->DrawTriangleFastPhong(verts, meshIds, back, rowBegin, rowEnd, state);
       return;
     case ShadingMode::Phong:
     case ShadingMode::CookTorrance:
       break;
   }
-  const float flip = (poly.backFacing && this->Opt.twoSidedLighting) ? -1.0f : 1.0f;
+  const float flip = (back && this->Opt.twoSidedLighting) ? -1.0f : 1.0f;
   int64_t shaded = 0;
-  this->ScanConvert(verts, poly.count, rowBegin, rowEnd, noSpan, [&](int j, int i, const float* a) {
+  this->ScanConvert(verts, count, rowBegin, rowEnd, noSpan, [&](int j, int i, const float* a) {
     float* out = depthTest(j, i, a);
     if (!out)
     {
@@ -947,11 +1092,11 @@ void Renderer::DrawPolygon(const Chunk& chunk, const RasterPolygon& poly, int ro
     out[2] = I.z;
     ++shaded;
   });
-  this->Shaded += shaded;
+  state.shaded += shaded;
 }
 
-void Renderer::DrawTriangleFastPhong(const ScreenVertex* const* verts, const int64_t* meshIds,
-  bool back, int rowBegin, int rowEnd, std::vector<float>& depth)
+void SoftwareRenderer::Internals::DrawTriangleFastPhong(const ScreenVertex* const* verts, const int64_t* meshIds,
+  bool back, int rowBegin, int rowEnd, ThreadState& state)
 {
   // Bishop & Weimer 1986: L and H constant over the triangle (their
   // assumption of a distant light and viewer), evaluated at its centroid;
@@ -1031,7 +1176,7 @@ void Renderer::DrawTriangleFastPhong(const ScreenVertex* const* verts, const int
         NoH[l] = specular ? specularLine[l].Next() : 0.0f;
       }
       const float z = a[kAttrZ];
-      float& d = depth[static_cast<size_t>(j - rowBegin) * W + i];
+      float& d = this->Depth[static_cast<size_t>(j) * W + i];
       if (!(z <= 1.0f) || !(z < d))
       {
         return;
@@ -1067,8 +1212,11 @@ void Renderer::DrawTriangleFastPhong(const ScreenVertex* const* verts, const int
       rgb[3 * pix + 2] = I.z;
       ++shaded;
     });
-  this->Shaded += shaded;
+  state.shaded += shaded;
 }
+
+namespace
+{
 
 float EncodeSRGB(float v)
 {
@@ -1145,7 +1293,7 @@ Camera FitCamera(const double bounds[6], double azimuthDeg, double elevationDeg,
   {
     radius = 0.5;
   }
-  // vtkRenderer::ResetCamera: distance so the bounding sphere fits the view
+  // vtkSoftwareRenderer::Internals::ResetCamera: distance so the bounding sphere fits the view
   // angle (the narrower of the vertical and horizontal angles).
   cam.viewAngle = 30.0;
   double half = 0.5 * cam.viewAngle * kPi<double> / 180.0;
@@ -1217,8 +1365,16 @@ bool ParseMode(const std::string& name, ShadingMode& mode)
   return false;
 }
 
-Image Render(const Mesh& mesh, const Camera& camera, const Lighting<float>& lighting,
-  const Material<float>& material, const RenderOptions& options, RenderStats* stats)
+SoftwareRenderer::SoftwareRenderer()
+  : Impl(new Internals)
+{
+}
+
+SoftwareRenderer::~SoftwareRenderer() = default;
+
+const Image& SoftwareRenderer::Render(const Mesh& mesh, const Camera& camera,
+  const Lighting<float>& lighting, const Material<float>& material, const RenderOptions& options,
+  RenderStats* stats)
 {
   if (options.width < 1 || options.height < 1 || options.width > 16384 || options.height > 16384)
   {
@@ -1254,8 +1410,14 @@ Image Render(const Mesh& mesh, const Camera& camera, const Lighting<float>& ligh
   {
     effective.model = ReflectanceModel::CookTorrance;
   }
-  Renderer renderer(mesh, camera, lighting, effective, options);
-  return renderer.Run(stats);
+  return this->Impl->Run(mesh, camera, lighting, effective, options, stats);
+}
+
+Image Render(const Mesh& mesh, const Camera& camera, const Lighting<float>& lighting,
+  const Material<float>& material, const RenderOptions& options, RenderStats* stats)
+{
+  SoftwareRenderer renderer;
+  return renderer.Render(mesh, camera, lighting, material, options, stats);
 }
 
 } // namespace shadinglab::cpu

@@ -10,6 +10,7 @@
 #include "shadinglab/model/Shading.h"
 
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -130,6 +131,29 @@ struct Image
   /// 8-bit RGB after the display transform. NaN never occurs (tested) but
   /// would map to 0.
   std::vector<uint8_t> ToRGB8(DisplayTransform transform) const;
+};
+
+/**
+ * The renderer as an object: its frame buffers, depth buffer and projected
+ * vertices persist between frames, so rendering the same size again does not
+ * reallocate (the steady state an interactive viewer sees).
+ */
+class SoftwareRenderer
+{
+public:
+  SoftwareRenderer();
+  ~SoftwareRenderer();
+  SoftwareRenderer(const SoftwareRenderer&) = delete;
+  SoftwareRenderer& operator=(const SoftwareRenderer&) = delete;
+
+  /// As Render() below; the image stays valid until the next call.
+  const Image& Render(const Mesh& mesh, const Camera& camera, const Lighting<float>& lighting,
+    const Material<float>& material, const RenderOptions& options, RenderStats* stats = nullptr);
+
+  class Internals;
+
+private:
+  std::unique_ptr<Internals> Impl;
 };
 
 /**

@@ -177,11 +177,12 @@ template <typename T>
 Vec3<T> HalfVector(const Vec3<T>& L, const Vec3<T>& V, const Vec3<T>& N)
 {
   const Vec3<T> sum = L + V;
-  if (Length(sum) < kMinHalfVectorLength<T>)
+  const T lengthSq = Dot(sum, sum);
+  if (!(lengthSq >= kMinHalfVectorLength<T> * kMinHalfVectorLength<T>))
   {
     return N;
   }
-  return NormalizeOr(sum, N);
+  return sum * (T(1) / std::sqrt(lengthSq));
 }
 
 } // namespace shadinglab

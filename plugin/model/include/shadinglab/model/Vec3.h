@@ -80,9 +80,24 @@ T MaxAbsComponent(const Vec3<T>& v)
   return std::max(std::abs(v.x), std::max(std::abs(v.y), std::abs(v.z)));
 }
 
+/// Squared lengths inside [kSafeMinLengthSq, kSafeMaxLengthSq] are computed
+/// directly; outside it (denormal or huge components, zero, NaN) the slow
+/// path rescales first. The bounds sit a factor 1e8 inside float's normal
+/// range (1.2e-38 .. 3.4e38) so the direct square cannot have under- or
+/// overflowed.
+template <typename T>
+constexpr T kSafeMinLengthSq = T(1e-30);
+template <typename T>
+constexpr T kSafeMaxLengthSq = T(1e30);
+
 template <typename T>
 T Length(const Vec3<T>& v)
 {
+  const T d = Dot(v, v);
+  if (d >= kSafeMinLengthSq<T> && d <= kSafeMaxLengthSq<T>)
+  {
+    return std::sqrt(d);
+  }
   // Scale by the largest component first so neither huge (1e30f squared
   // overflows float) nor denormal components (whose squares flush to 0) lose
   // the length.
@@ -97,12 +112,18 @@ T Length(const Vec3<T>& v)
 
 /**
  * Unit vector along v, or `fallback` when v has no usable direction (zero,
- * NaN or infinite components). Robust against overflow and denormals: the
- * vector is scaled by its largest component before squaring.
+ * NaN or infinite components). Robust against overflow and denormals: outside
+ * the safe range the vector is scaled by its largest component before
+ * squaring.
  */
 template <typename T>
 Vec3<T> NormalizeOr(const Vec3<T>& v, const Vec3<T>& fallback)
 {
+  const T d = Dot(v, v);
+  if (d >= kSafeMinLengthSq<T> && d <= kSafeMaxLengthSq<T>)
+  {
+    return v * (T(1) / std::sqrt(d));
+  }
   const T s = MaxAbsComponent(v);
   if (!(s > T(0)) || !std::isfinite(s))
   {

@@ -1,0 +1,169 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// CPU renderer frame time per mode, 1 and 2 threads, at 1920x1080, beside
+// VTK's own OpenGL pipeline (Mesa llvmpipe under Xvfb: the software GL a user
+// without a GPU gets) on the same mesh and view in the same run.
+//
+//   build/bin/shadinglab_bench_render --benchmark_repetitions=7
+//       --benchmark_report_aggregates_only=true   (under scripts/with-xvfb)
+//
+// Meshes: a ~100k-triangle torus (316 x 158 x 2 = 99,856) and a ~1M-triangle
+// icosphere (level 8: 1,310,720). VTK rows are skipped without DISPLAY.
+#include "AnalyticMeshes.h"
+#include "PolyDataMesh.h"
+#include "shadinglab/cpu/SoftwareRenderer.h"
+
+#include <benchmark/benchmark.h>
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataMapper.h>
+#include <vtkPolyDataNormals.h>
+#include <vtkProperty.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
+
+#include <cstdlib>
+#include <map>
+#include <memory>
+
+namespace sl = shadinglab;
+namespace cpu = shadinglab::cpu;
+
+namespace
+{
+
+constexpr int kWidth = 1920;
+constexpr int kHeight = 1080;
+
+struct Scene
+{
+  vtkSmartPointer<vtkPolyData> polydata; // with area-weighted point normals
+  cpu::Mesh mesh;
+  cpu::Camera camera;
+};
+
+const Scene& GetScene(int which)
+{
+  static std::map<int, std::unique_ptr<Scene>> scenes;
+  auto& s = scenes[which];
+  if (!s)
+  {
+    s = std::make_unique<Scene>();
+    vtkSmartPointer<vtkPolyData> raw;
+    raw.TakeReference(which == 0 ? sl::datasets::MakeTorus(1.0, 0.4, 316, 158)
+                                 : sl::datasets::MakeIcosphere(8));
+    raw->GetPointData()->SetNormals(raw->GetPointData()->GetArray(sl::datasets::kExactNormalArray));
+    s->polydata = raw;
+    s->mesh = cpu::MeshFromPolyData(raw);
+    double bounds[6];
+    s->mesh.Bounds(bounds);
+    s->camera = cpu::FitCamera(bounds, 20.0, 35.0, 1.6, double(kWidth) / kHeight, false);
+  }
+  return *s;
+}
+
+sl::Lighting<float> KeyLight(const cpu::Camera& cam)
+{
+  sl::Lighting<float> l;
+  l.lightCount = 1;
+  l.lights[0].vector = sl::Vec3f(sl::NormalizeOr(cam.position - cam.focalPoint, sl::Vec3d(0, 0, 1)));
+  return l;
+}
+
+void BM_Cpu(benchmark::State& state)
+{
+  const Scene& scene = GetScene(static_cast<int>(state.range(0)));
+  cpu::RenderOptions opt;
+  opt.width = kWidth;
+  opt.height = kHeight;
+  opt.mode = static_cast<cpu::ShadingMode>(state.range(1));
+  opt.threads = static_cast<int>(state.range(2));
+  sl::Material<float> material;
+  material.model = sl::ReflectanceModel::BlinnPhong;
+  const auto lighting = KeyLight(scene.camera);
+  cpu::RenderStats stats;
+  // One renderer for all frames: buffers persist, as in VTK's render window.
+  cpu::SoftwareRenderer renderer;
+  for (auto _ : state)
+  {
+    const auto& image = renderer.Render(scene.mesh, scene.camera, lighting, material, opt, &stats);
+    benchmark::DoNotOptimize(image.rgb.data());
+  }
+  state.counters["triangles"] = static_cast<double>(stats.triangles);
+  state.counters["pixels_shaded"] = static_cast<double>(stats.pixelsShaded);
+  state.counters["pixels_covered"] = static_cast<double>(stats.pixelsCovered);
+  state.SetLabel(std::string(cpu::ModeName(opt.mode)) + " threads=" + std::to_string(opt.threads));
+}
+
+void BM_VtkOpenGL(benchmark::State& state)
+{
+  if (!std::getenv("DISPLAY"))
+  {
+    state.SkipWithError("no DISPLAY: run under xvfb-run for the VTK OpenGL rows");
+    return;
+  }
+  const Scene& scene = GetScene(static_cast<int>(state.range(0)));
+  const int interpolation = static_cast<int>(state.range(1)); // VTK_GOURAUD / VTK_PHONG
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(scene.polydata);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetInterpolation(interpolation);
+  actor->GetProperty()->SetSpecular(0.3);
+  actor->GetProperty()->SetDiffuse(0.7);
+  actor->GetProperty()->SetSpecularPower(32);
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddActor(actor);
+  renderer->SetBackground(0.32, 0.34, 0.43);
+  vtkCamera* cam = renderer->GetActiveCamera();
+  cam->SetPosition(scene.camera.position.x, scene.camera.position.y, scene.camera.position.z);
+  cam->SetFocalPoint(
+    scene.camera.focalPoint.x, scene.camera.focalPoint.y, scene.camera.focalPoint.z);
+  cam->SetViewUp(scene.camera.viewUp.x, scene.camera.viewUp.y, scene.camera.viewUp.z);
+  cam->SetViewAngle(scene.camera.viewAngle);
+  cam->SetClippingRange(scene.camera.nearClip, scene.camera.farClip);
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetMultiSamples(0);
+  window->SetSize(kWidth, kHeight);
+  window->AddRenderer(renderer);
+  window->Render(); // upload once; frames below are steady-state redraws
+  for (auto _ : state)
+  {
+    cam->Azimuth(0.0); // marks the camera modified so the frame is redrawn
+    window->Render();
+    window->WaitForCompletion();
+  }
+  state.SetLabel(interpolation == VTK_PHONG ? "vtk-phong llvmpipe" : "vtk-gouraud llvmpipe");
+}
+
+void CpuArgs(benchmark::internal::Benchmark* b)
+{
+  for (int mesh : { 0, 1 })
+  {
+    for (int mode = 0; mode < 5; ++mode)
+    {
+      for (int threads : { 1, 2 })
+      {
+        b->Args({ mesh, mode, threads });
+      }
+    }
+  }
+}
+
+} // namespace
+
+BENCHMARK(BM_Cpu)->Apply(CpuArgs)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_VtkOpenGL)
+  ->Args({ 0, VTK_GOURAUD })
+  ->Args({ 0, VTK_PHONG })
+  ->Args({ 1, VTK_GOURAUD })
+  ->Args({ 1, VTK_PHONG })
+  ->Unit(benchmark::kMillisecond)
+  ->UseRealTime();
+
+BENCHMARK_MAIN();

@@ -205,3 +205,21 @@ TEST(FastPhongTest, CancellingNormalsGiveZeroNotNaN)
   EXPECT_EQ(q.T0, 0.0);
   EXPECT_EQ(tri.Exact(Vec3d(0, 0, 1), 5.0, 2.0), 0.0);
 }
+
+TEST(FastPhongTest, SpecularPowerTableMatchesPow)
+{
+  for (double n : { 1.0, 8.0, 32.0, 128.0, 1000.0, 10000.0 })
+  {
+    sl::SpecularPowerTable table;
+    table.Build(n);
+    EXPECT_LE(table.Size(), sl::SpecularPowerTable::kMaxEntries);
+    double worst = 0;
+    for (int i = 0; i <= 100000; ++i)
+    {
+      const float x = static_cast<float>(i) / 100000.0f;
+      worst = std::max(worst, std::abs(table.Lookup(x) - std::pow(double(x), n)));
+    }
+    // Interpolation tolerance 1e-5, plus the floor 1e-6 cut, plus float rounding.
+    EXPECT_LT(worst, 2e-5) << "n = " << n;
+  }
+}

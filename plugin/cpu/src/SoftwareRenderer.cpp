@@ -50,6 +50,17 @@ constexpr float kDegenerateArea = 1e-10f;
 /// Largest polygon after near-plane clipping: one more vertex than the input.
 constexpr int kMaxPolygonVertices = 64;
 
+/// ceil(x) as an int for the pixel-centre rules, without a libm call (this
+/// build targets baseline x86-64, where std::ceil is not a single
+/// instruction). x is clamped to +-1e9 pixels first: beyond any viewport, and
+/// the int conversion stays defined.
+inline int CeilToInt(float x)
+{
+  x = x < -1e9f ? -1e9f : (x > 1e9f ? 1e9f : x);
+  const int i = static_cast<int>(x);
+  return i + (x > static_cast<float>(i) ? 1 : 0);
+}
+
 struct ScreenVertex
 {
   float x, y;
@@ -119,9 +130,12 @@ struct ThreadState
 } // namespace
 
 /// The renderer's state; buffers persist across frames of one SoftwareRenderer.
+struct FlatColor;
+
 class SoftwareRenderer::Internals
 {
 public:
+  Vec3f ComputeFlatColor(int64_t p, bool back) const;
   const Image& Run(const Mesh& mesh, const Camera& camera, const Lighting<float>& lighting,
     const Material<float>& material, const RenderOptions& options, RenderStats* stats);
 
@@ -141,7 +155,7 @@ private:
   void ScanTriangle(const ScreenVertex* const* verts, int rowBegin, int rowEnd,
     SpanFn&& beginSpan, PixelFn&& pixel) const;
   void DrawPolygon(const ScreenVertex* const* verts, const int64_t* meshIds, int count, bool back,
-    const Vec3f& flatColor, int rowBegin, int rowEnd, ThreadState& state);
+    FlatColor& flatColor, int rowBegin, int rowEnd, ThreadState& state);
   void DrawTriangleFastPhong(const ScreenVertex* const* verts, const int64_t* meshIds, bool back,
     int rowBegin, int rowEnd, ThreadState& state);
 
@@ -192,6 +206,7 @@ private:
   int NumAttributes = 0;   // beyond z and 1/w
   int NormalSlot = -1, PositionSlot = -1, ColorSlot = -1;
   bool Perspective = true;
+  SpecularPowerTable PowerTable; // fast-phong's (N.H)^n, as Bishop & Weimer
 
   // Buffers reused across frames.
   std::vector<ScreenVertex> Screen;
@@ -201,6 +216,26 @@ private:
   std::vector<uint8_t> Covered;
   std::vector<uint16_t> Coverage;
   Image Output;
+};
+
+/// A polygon's flat-shaded colour, computed when its first pixel passes the
+/// depth test: hidden polygons are never lit.
+struct FlatColor
+{
+  const SoftwareRenderer::Internals* owner;
+  int64_t polygon;
+  bool back;
+  bool valid = false;
+  Vec3f value;
+  const Vec3f& Get()
+  {
+    if (!this->valid)
+    {
+      this->value = this->owner->ComputeFlatColor(this->polygon, this->back);
+      this->valid = true;
+    }
+    return this->value;
+  }
 };
 
 void SoftwareRenderer::Internals::SetupTransforms()
@@ -370,6 +405,10 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh, const Camera& ca
     slot += 3;
   }
   this->NumAttributes = slot;
+  if (this->Opt.mode == ShadingMode::FastPhong)
+  {
+    this->PowerTable.Build(this->Mat.shininess);
+  }
 
   // Stage 1: vertices.
   this->Screen.resize(static_cast<size_t>(nv));
@@ -480,6 +519,38 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh, const Camera& ca
   return image;
 }
 
+Vec3f SoftwareRenderer::Internals::ComputeFlatColor(int64_t p, bool back) const
+{
+  // Face normal: given cell normal, else Newell's method (exact for planar
+  // polygons, a least-squares normal otherwise). Lit at the polygon's
+  // centroid with its mean colour.
+  const auto& conn = this->MeshData->connectivity;
+  const int64_t first = this->MeshData->offsets[p];
+  const int n = static_cast<int>(this->MeshData->offsets[p + 1] - first);
+  Vec3f N, centroid, color;
+  for (int k = 0; k < n; ++k)
+  {
+    const int64_t v = conn[first + k];
+    const Vec3f a = this->PointOf(v), b = this->PointOf(conn[first + (k + 1) % n]);
+    centroid += a;
+    color += this->ColorOf(v);
+    N += Vec3f((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
+  }
+  if (!this->MeshData->faceNormals.empty())
+  {
+    const float* fn = &this->MeshData->faceNormals[3 * p];
+    N = Vec3f(fn[0], fn[1], fn[2]);
+  }
+  centroid *= 1.0f / n;
+  color *= 1.0f / n;
+  N = NormalizeOr(N, this->ToEye);
+  if (this->Opt.twoSidedLighting && back)
+  {
+    N = -N;
+  }
+  return this->ShadeAt(centroid, N, color);
+}
+
 void SoftwareRenderer::Internals::RasterizeThread(int thread, int threadCount, ThreadState& state)
 {
   const Vec3f bg = this->Opt.background;
@@ -541,8 +612,8 @@ void SoftwareRenderer::Internals::DrawSourcePolygon(
       ymin = std::min(ymin, this->Screen[ids[k]].y);
       ymax = std::max(ymax, this->Screen[ids[k]].y);
     }
-    const int j0 = std::max(0, static_cast<int>(std::ceil(ymin - 0.5f)));
-    const int j1 = std::min(this->Height, static_cast<int>(std::ceil(ymax - 0.5f)));
+    const int j0 = std::max(0, CeilToInt(ymin - 0.5f));
+    const int j1 = std::min(this->Height, CeilToInt(ymax - 0.5f));
     if (j1 <= j0)
     {
       // No pixel row: count it if it is degenerate (zero screen area).
@@ -661,8 +732,8 @@ void SoftwareRenderer::Internals::DrawSourcePolygon(
     ymax = std::max(ymax, a.y);
     zmin = std::min(zmin, a.a[kAttrZ]);
   }
-  const int j0 = std::max(0, static_cast<int>(std::ceil(ymin - 0.5f)));
-  const int j1 = std::min(this->Height, static_cast<int>(std::ceil(ymax - 0.5f)));
+  const int j0 = std::max(0, CeilToInt(ymin - 0.5f));
+  const int j1 = std::min(this->Height, CeilToInt(ymax - 0.5f));
   if (xmax < 0 || xmin > this->Width || j1 <= j0 || zmin > 1.0f)
   {
     return;
@@ -681,35 +752,9 @@ void SoftwareRenderer::Internals::DrawSourcePolygon(
   state.clippedPolygons += owner && wasClipped;
   state.rasterized += owner;
 
-  Vec3f flat;
-  if (this->Opt.mode == ShadingMode::Flat && !this->Opt.countCoverage)
-  {
-    // Face normal: given cell normal, else Newell's method (exact for
-    // planar polygons, a least-squares normal otherwise). Lit at the
-    // polygon's centroid with its mean colour.
-    Vec3f N, centroid, color;
-    for (int k = 0; k < n; ++k)
-    {
-      const int64_t v = conn[first + k];
-      const Vec3f a = this->PointOf(v), b = this->PointOf(conn[first + (k + 1) % n]);
-      centroid += a;
-      color += this->ColorOf(v);
-      N += Vec3f((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
-    }
-    if (!this->MeshData->faceNormals.empty())
-    {
-      const float* fn = &this->MeshData->faceNormals[3 * p];
-      N = Vec3f(fn[0], fn[1], fn[2]);
-    }
-    centroid *= 1.0f / n;
-    color *= 1.0f / n;
-    N = NormalizeOr(N, this->ToEye);
-    if (this->Opt.twoSidedLighting && back)
-    {
-      N = -N;
-    }
-    flat = this->ShadeAt(centroid, N, color);
-  }
+  // Flat colour, computed when the first pixel of the polygon passes the
+  // depth test: hidden polygons are never lit.
+  FlatColor flat{ this, p, back, false, Vec3f() };
   // Gouraud back faces: relight their vertices with flipped normals.
   ScreenVertex relit[kMaxPolygonVertices];
   if (this->Opt.mode == ShadingMode::Gouraud && back && this->Opt.twoSidedLighting &&
@@ -735,8 +780,8 @@ void SoftwareRenderer::Internals::DrawSourcePolygon(
       pymin = std::min(pymin, partVerts[k]->y);
       pymax = std::max(pymax, partVerts[k]->y);
     }
-    const int r0 = std::max(0, static_cast<int>(std::ceil(pymin - 0.5f)));
-    const int r1 = std::min(this->Height, static_cast<int>(std::ceil(pymax - 0.5f)));
+    const int r0 = std::max(0, CeilToInt(pymin - 0.5f));
+    const int r1 = std::min(this->Height, CeilToInt(pymax - 0.5f));
     if (r1 <= r0)
     {
       return;
@@ -849,8 +894,8 @@ void SoftwareRenderer::Internals::ScanTriangle(const ScreenVertex* const* verts,
     ymin = std::min(ymin, p->y);
     ymax = std::max(ymax, q->y);
   }
-  const int j0 = std::max(rowBegin, static_cast<int>(std::ceil(ymin - 0.5f)));
-  const int j1 = std::min(rowEnd, static_cast<int>(std::ceil(ymax - 0.5f)));
+  const int j0 = std::max(rowBegin, CeilToInt(ymin - 0.5f));
+  const int j1 = std::min(rowEnd, CeilToInt(ymax - 0.5f));
   float value[kMaxAttributes] = {}; // full size: pixel functors index by slot
   for (int j = j0; j < j1; ++j)
   {
@@ -870,8 +915,8 @@ void SoftwareRenderer::Internals::ScanTriangle(const ScreenVertex* const* verts,
       continue;
     }
     const float xl = std::min(xs[0], xs[1]), xr = std::max(xs[0], xs[1]);
-    const int i0 = std::max(0, static_cast<int>(std::ceil(xl - 0.5f)));
-    const int i1 = std::min(this->Width, static_cast<int>(std::ceil(xr - 0.5f)));
+    const int i0 = std::max(0, CeilToInt(xl - 0.5f));
+    const int i1 = std::min(this->Width, CeilToInt(xr - 0.5f));
     if (i1 <= i0)
     {
       continue;
@@ -915,8 +960,8 @@ void SoftwareRenderer::Internals::ScanPolygon(const ScreenVertex* const* verts, 
   // and, within a row, pixels with xl <= i + 0.5 < xr: half-open on both
   // axes, so a pixel centre on an edge shared by two polygons belongs to
   // exactly one of them.
-  const int j0 = std::max(rowBegin, static_cast<int>(std::ceil(ymin - 0.5f)));
-  const int j1 = std::min(rowEnd, static_cast<int>(std::ceil(ymax - 0.5f)));
+  const int j0 = std::max(rowBegin, CeilToInt(ymin - 0.5f));
+  const int j1 = std::min(rowEnd, CeilToInt(ymax - 0.5f));
   struct Crossing
   {
     float x;
@@ -963,8 +1008,8 @@ void SoftwareRenderer::Internals::ScanPolygon(const ScreenVertex* const* verts, 
     {
       const Crossing& L = cross[s];
       const Crossing& R = cross[s + 1];
-      const int i0 = std::max(0, static_cast<int>(std::ceil(L.x - 0.5f)));
-      const int i1 = std::min(this->Width, static_cast<int>(std::ceil(R.x - 0.5f)));
+      const int i0 = std::max(0, CeilToInt(L.x - 0.5f));
+      const int i1 = std::min(this->Width, CeilToInt(R.x - 0.5f));
       if (i1 <= i0)
       {
         continue;
@@ -992,7 +1037,7 @@ void SoftwareRenderer::Internals::ScanPolygon(const ScreenVertex* const* verts, 
 }
 
 void SoftwareRenderer::Internals::DrawPolygon(const ScreenVertex* const* verts,
-  const int64_t* meshIds, int count, bool back, const Vec3f& flatColor, int rowBegin, int rowEnd,
+  const int64_t* meshIds, int count, bool back, FlatColor& flatColor, int rowBegin, int rowEnd,
   ThreadState& state)
 {
   const int W = this->Width;
@@ -1031,10 +1076,10 @@ void SoftwareRenderer::Internals::DrawPolygon(const ScreenVertex* const* verts,
   {
     case ShadingMode::Flat:
     {
-      const Vec3f c = flatColor;
       this->ScanConvert(verts, count, rowBegin, rowEnd, noSpan, [&](int j, int i, const float* a) {
         if (float* out = depthTest(j, i, a))
         {
+          const Vec3f& c = flatColor.Get();
           out[0] = c.x;
           out[1] = c.y;
           out[2] = c.z;
@@ -1150,6 +1195,8 @@ void SoftwareRenderer::Internals::DrawTriangleFastPhong(const ScreenVertex* cons
   const Vec3f ambient = this->Mat.ambient * this->Lights.ambientIntensity;
   const float kdOverPi = this->Mat.kd * Fd_Lambert<float>();
   const Vec3f specColor = this->Mat.specularColor * this->Mat.ks;
+  // Fs_BlinnPhong's normalization (n + 8) / (8 pi).
+  const float blinnNorm = (this->Mat.shininess + 8.0f) * (0.125f * kInvPi<float>);
   int64_t shaded = 0;
   const int W = this->Width;
   float* rgb = this->Rgb.data();
@@ -1201,7 +1248,8 @@ void SoftwareRenderer::Internals::DrawTriangleFastPhong(const ScreenVertex* cons
         Vec3f f = color * kdOverPi;
         if (specular)
         {
-          f += specColor * Fs_BlinnPhong(std::min(NoH[l], 1.0f), this->Mat.shininess);
+          // Fs_BlinnPhong with the power from the table.
+          f += specColor * (blinnNorm * this->PowerTable.Lookup(NoH[l]));
         }
         I += irradiance[l] * f * cl;
       }

@@ -38,7 +38,9 @@
 #include "shadinglab/model/Constants.h"
 #include "shadinglab/model/Vec3.h"
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace shadinglab
 {
@@ -192,6 +194,72 @@ struct FastPhongTriangle
     out.T3 = r * (-T(0.5) * b * py - T(0.5) * n0 * f / q0 + T(0.375) * n0 * py * py);
     return out;
   }
+};
+
+} // namespace shadinglab
+
+namespace shadinglab
+{
+
+/**
+ * x^n for x in [0, 1] by table lookup with linear interpolation, as Bishop &
+ * Weimer evaluate the specular power. The table spans [x0, 1] where
+ * x0^n = kPowTableFloor (below it the term is returned as 0), with a step
+ * chosen so that the interpolation error, bounded by n(n-1) h^2 / 8 near
+ * x = 1, stays under kPowTableTolerance.
+ */
+class SpecularPowerTable
+{
+public:
+  /// Values of x^n below this are 0: 1e-6 of the peak is 4e-4 of one 8-bit
+  /// display step even at the largest normalization (n + 8)/(8 pi) ~ 400.
+  static constexpr double kPowTableFloor = 1e-6;
+  /// Target interpolation error (absolute, relative to the peak 1).
+  static constexpr double kPowTableTolerance = 1e-5;
+  /// Entries cap: 4096 floats (16 KiB) stay in L1 cache.
+  static constexpr int kMaxEntries = 4096;
+
+  void Build(double n)
+  {
+    this->Exponent = n;
+    // X0 rounded to float first: lookups subtract the float X0 from a float
+    // x, and at n = 1e4 one float ulp of offset would shift values by 6e-4.
+    this->X0 = static_cast<float>(n > 0 ? std::pow(kPowTableFloor, 1.0 / n) : 0.0);
+    const double h = n > 1 ? std::sqrt(8.0 * kPowTableTolerance / (n * (n - 1))) : 1.0;
+    int entries = static_cast<int>(std::ceil((1.0 - this->X0) / h)) + 1;
+    entries = std::max(2, std::min(entries, kMaxEntries));
+    this->Values.resize(static_cast<size_t>(entries));
+    this->Step = (1.0 - this->X0) / (entries - 1);
+    this->InvStep = static_cast<float>(1.0 / this->Step);
+    for (int i = 0; i < entries; ++i)
+    {
+      this->Values[i] = static_cast<float>(std::pow(this->X0 + i * this->Step, n));
+    }
+    this->X0f = static_cast<float>(this->X0);
+  }
+
+  float Lookup(float x) const
+  {
+    if (!(x > this->X0f))
+    {
+      return 0.0f;
+    }
+    if (x >= 1.0f)
+    {
+      return 1.0f;
+    }
+    const float t = (x - this->X0f) * this->InvStep;
+    const int i = std::min(static_cast<int>(t), static_cast<int>(this->Values.size()) - 2);
+    const float f = t - static_cast<float>(i);
+    return this->Values[i] + f * (this->Values[i + 1] - this->Values[i]);
+  }
+
+  int Size() const { return static_cast<int>(this->Values.size()); }
+
+private:
+  double Exponent = 1.0, X0 = 0.0, Step = 1.0;
+  float X0f = 0.0f, InvStep = 1.0f;
+  std::vector<float> Values;
 };
 
 } // namespace shadinglab

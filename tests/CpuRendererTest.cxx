@@ -3,8 +3,11 @@
 // degenerate input, and accuracy against an analytic per-pixel reference.
 #include "AnalyticMeshes.h"
 #include "PolyDataMesh.h"
+#include "vtkSoftwareShadingRenderer.h"
 #include "shadinglab/cpu/SoftwareRenderer.h"
 
+#include <vtkImageData.h>
+#include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
@@ -563,4 +566,33 @@ TEST(CpuRendererTest, BadParametersThrow)
   ct.model = sl::ReflectanceModel::CookTorrance;
   opt.mode = cpu::ShadingMode::FastPhong;
   EXPECT_THROW(cpu::Render(mesh, cam, OneLight(Vec3f(0, 0, 1)), ct, opt), std::invalid_argument);
+}
+
+TEST(CpuRendererTest, VtkImageAlgorithmFrontEnd)
+{
+  vtkSmartPointer<vtkPolyData> sphere;
+  sphere.TakeReference(sl::datasets::MakeIcosphere(2));
+  const vtkMTimeType before = sphere->GetMTime();
+  const vtkIdType pointsBefore = sphere->GetNumberOfPoints();
+  vtkNew<vtkSoftwareShadingRenderer> renderer;
+  renderer->SetInputData(sphere);
+  renderer->SetSize(120, 90);
+  renderer->SetMode(vtkSoftwareShadingRenderer::GOURAUD);
+  renderer->Update();
+  vtkImageData* image = renderer->GetOutput();
+  int dims[3];
+  image->GetDimensions(dims);
+  EXPECT_EQ(dims[0], 120);
+  EXPECT_EQ(dims[1], 90);
+  ASSERT_NE(image->GetPointData()->GetArray("LinearRGB"), nullptr);
+  ASSERT_NE(image->GetPointData()->GetArray("Covered"), nullptr);
+  EXPECT_GT(renderer->GetLastStats().pixelsCovered, 1000);
+  // The centre pixel is on the sphere; a corner is background.
+  auto* covered = image->GetPointData()->GetArray("Covered");
+  EXPECT_EQ(covered->GetTuple1(45 * 120 + 60), 1.0);
+  EXPECT_EQ(covered->GetTuple1(0), 0.0);
+  // Filters never modify their input.
+  EXPECT_EQ(sphere->GetMTime(), before);
+  EXPECT_EQ(sphere->GetNumberOfPoints(), pointsBefore);
+  EXPECT_EQ(sphere->GetPointData()->GetNormals(), nullptr);
 }

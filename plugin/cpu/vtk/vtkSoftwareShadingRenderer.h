@@ -1,0 +1,122 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @class   vtkSoftwareShadingRenderer
+ * @brief   renders vtkPolyData with the CPU shading renderer into vtkImageData
+ *
+ * A VTK pipeline front end to shadinglab::cpu::SoftwareRenderer: input port 0
+ * takes vtkPolyData, the output is a Width x Height vtkImageData whose point
+ * scalars are the display image ("RGB", unsigned char), with the linear
+ * intensities ("LinearRGB", float) and the coverage mask ("Covered") beside
+ * them. Row 0 of the VTK image is the bottom of the picture, as usual in VTK.
+ *
+ * The camera is a vtkCamera (SetCamera); without one the view is fitted to
+ * the input bounds. The lights and the material are set from C++.
+ *
+ * @warning The input is never modified. Point normals are used when present;
+ * otherwise area-weighted vertex normals are computed for the render only.
+ */
+#ifndef vtkSoftwareShadingRenderer_h
+#define vtkSoftwareShadingRenderer_h
+
+#include "shadinglab/cpu/SoftwareRenderer.h"
+
+#include <vtkImageAlgorithm.h>
+
+#include <memory>
+
+class vtkCamera;
+
+class vtkSoftwareShadingRenderer : public vtkImageAlgorithm
+{
+public:
+  static vtkSoftwareShadingRenderer* New();
+  vtkTypeMacro(vtkSoftwareShadingRenderer, vtkImageAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum Modes
+  {
+    FLAT = 0,
+    GOURAUD = 1,
+    PHONG = 2,
+    FAST_PHONG = 3,
+    COOK_TORRANCE = 4
+  };
+
+  ///@{
+  /// Shading mode (default PHONG).
+  vtkSetClampMacro(Mode, int, FLAT, COOK_TORRANCE);
+  vtkGetMacro(Mode, int);
+  ///@}
+
+  ///@{
+  /// Image size in pixels (default 640 x 480, 1 .. 16384 each).
+  vtkSetVector2Macro(Size, int);
+  vtkGetVector2Macro(Size, int);
+  ///@}
+
+  ///@{
+  /// Perspective-correct interpolation (default on); off interpolates
+  /// linearly in screen space, as the lecture.
+  vtkSetMacro(PerspectiveCorrect, bool);
+  vtkGetMacro(PerspectiveCorrect, bool);
+  vtkBooleanMacro(PerspectiveCorrect, bool);
+  ///@}
+
+  ///@{
+  /// Scan-convert polygons directly instead of triangulating (default off).
+  vtkSetMacro(DirectPolygons, bool);
+  vtkGetMacro(DirectPolygons, bool);
+  vtkBooleanMacro(DirectPolygons, bool);
+  ///@}
+
+  ///@{
+  /// Supersampling factor per axis, 1 .. 8 (default 1).
+  vtkSetClampMacro(Supersampling, int, 1, 8);
+  vtkGetMacro(Supersampling, int);
+  ///@}
+
+  ///@{
+  /// Worker threads; 0 uses every core (default 0).
+  vtkSetClampMacro(NumberOfThreads, int, 0, 256);
+  vtkGetMacro(NumberOfThreads, int);
+  ///@}
+
+  ///@{
+  /// Camera; nullptr (default) fits the view to the input bounds.
+  void SetCamera(vtkCamera* camera);
+  vtkCamera* GetCamera();
+  ///@}
+
+  /// The illumination model's material (default: Blinn-Phong, kd 0.7, ks 0.3).
+  void SetMaterial(const shadinglab::Material<double>& material);
+  /// Lights (default: one key light above-left of the camera).
+  void SetLighting(const shadinglab::Lighting<double>& lighting);
+  void ClearLighting();
+
+  /// Statistics of the last render.
+  const shadinglab::cpu::RenderStats& GetLastStats() const;
+
+protected:
+  vtkSoftwareShadingRenderer();
+  ~vtkSoftwareShadingRenderer() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  int Mode = PHONG;
+  int Size[2] = { 640, 480 };
+  bool PerspectiveCorrect = true;
+  bool DirectPolygons = false;
+  int Supersampling = 1;
+  int NumberOfThreads = 0;
+
+private:
+  vtkSoftwareShadingRenderer(const vtkSoftwareShadingRenderer&) = delete;
+  void operator=(const vtkSoftwareShadingRenderer&) = delete;
+
+  struct Internals;
+  std::unique_ptr<Internals> Internal;
+};
+
+#endif

@@ -6,7 +6,9 @@
 #include "PolyDataMesh.h"
 #include "shadinglab/cpu/SoftwareRenderer.h"
 
+#include <vtkFreeTypeTools.h>
 #include <vtkImageData.h>
+#include <vtkTextProperty.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
 #include <vtkPolyData.h>
@@ -50,6 +52,9 @@ const char* kRenderHelp =
   "  --cull              cull back faces\n"
   "  --display D         clamp (default) | srgb\n"
   "  --expansion E       fast-phong Taylor point: centroid (default) | vertex\n"
+  "  --fast-phong-max-spread DEG  fast-phong evaluates a triangle exactly when its vertex\n"
+  "                      normals spread more than DEG (default 30; 180 shows the raw\n"
+  "                      Taylor quadratic everywhere, artifacts included)\n"
   "  --stats             print one JSON line of timings and counts\n"
   "\n"
   "fast-phong uses Blinn's (N.H)^n for the specular term (a phong material's (R.V)^n\n"
@@ -99,20 +104,45 @@ void WritePng(const cpu::Image& image, const std::vector<uint8_t>& rgb8, const s
 
 } // namespace
 
-int RunRender(int argc, char** argv)
+/// Everything a render needs, parsed from the command line and the input file.
+struct Scene
+{
+  explicit Scene(Arguments arguments)
+    : args(std::move(arguments))
+  {
+  }
+  Arguments args;
+  bool helpShown = false;
+  std::string input;
+  std::string backend;
+  cpu::Mesh mesh;
+  cpu::Camera camera;
+  Lighting<double> lighting;
+  Material<double> material;
+  cpu::RenderOptions options;
+  cpu::DisplayTransform display = cpu::DisplayTransform::Clamp;
+};
+
+Scene SceneFromArguments(int argc, char** argv, const char* help, bool compare)
 {
   std::vector<std::string> valued = { "backend", "mode", "size", "out", "interp", "polygons",
     "azimuth", "elevation", "zoom", "camera-position", "focal-point", "view-up", "view-angle",
-    "light-intensity", "ssaa", "threads", "display", "expansion" };
+    "light-intensity", "ssaa", "threads", "display", "expansion", "fast-phong-max-spread" };
   for (const auto& o : MaterialOptions())
   {
     valued.push_back(o);
   }
-  const Arguments args(argc, argv, valued, { "help", "stats", "cull", "parallel" }, { "light" });
+  if (compare)
+  {
+    valued.push_back("modes");
+  }
+  Scene scene{ Arguments(argc, argv, valued, { "help", "stats", "cull", "parallel" }, { "light" }) };
+  const Arguments& args = scene.args;
   if (args.Has("help"))
   {
-    std::cout << kRenderHelp << MaterialHelp();
-    return 0;
+    std::cout << help << MaterialHelp();
+    scene.helpShown = true;
+    return scene;
   }
   if (args.Positionals().size() != 1)
   {
@@ -120,7 +150,7 @@ int RunRender(int argc, char** argv)
   }
   const std::string input = args.Positionals()[0];
 
-  cpu::RenderOptions options;
+  cpu::RenderOptions& options = scene.options;
   if (!cpu::ParseMode(args.Get("mode", "phong"), options.mode))
   {
     throw UsageError("unknown --mode '" + args.Get("mode") +
@@ -178,7 +208,7 @@ int RunRender(int argc, char** argv)
     throw UsageError("unknown --expansion '" + expansion + "' (expected centroid or vertex)");
   }
   const std::string displayName = args.Get("display", "clamp");
-  cpu::DisplayTransform display = cpu::DisplayTransform::Clamp;
+  cpu::DisplayTransform& display = scene.display;
   if (displayName == "srgb")
   {
     display = cpu::DisplayTransform::SRGB;
@@ -198,6 +228,11 @@ int RunRender(int argc, char** argv)
     throw UsageError("--threads must be 0..256");
   }
   options.cullBackFaces = args.Has("cull");
+  options.fastPhongMaxSpread = args.GetDouble("fast-phong-max-spread", 30.0);
+  if (!(options.fastPhongMaxSpread >= 0 && options.fastPhongMaxSpread <= 180))
+  {
+    throw UsageError("--fast-phong-max-spread must be in [0, 180] degrees");
+  }
   const double zoom = args.GetDouble("zoom", 1.0);
   if (!(zoom > 0 && zoom <= 1e3))
   {
@@ -208,9 +243,9 @@ int RunRender(int argc, char** argv)
   {
     throw UsageError("--light-intensity must be in [0, 1e6]");
   }
-  const Material<double> material = MaterialFromArguments(args, true);
+  scene.material = MaterialFromArguments(args, true);
 
-  const std::string backend = args.Get("backend", "auto");
+  const std::string& backend = scene.backend = args.Get("backend", "auto");
   if (backend == "gpu")
   {
     throw UsageError("--backend gpu: the GPU mapper is not built yet; use --backend cpu");
@@ -229,12 +264,15 @@ int RunRender(int argc, char** argv)
   {
     throw UsageError(e.what());
   }
-  const cpu::Mesh mesh = cpu::MeshFromPolyData(polydata);
+  scene.input = input;
+  scene.mesh = cpu::MeshFromPolyData(polydata);
+  const cpu::Mesh& mesh = scene.mesh;
 
   double bounds[6];
   mesh.Bounds(bounds);
   const double aspect = static_cast<double>(options.width) / options.height;
-  cpu::Camera camera = cpu::FitCamera(bounds, args.GetDouble("azimuth", 0.0),
+  cpu::Camera& camera = scene.camera;
+  camera = cpu::FitCamera(bounds, args.GetDouble("azimuth", 0.0),
     args.GetDouble("elevation", 0.0), zoom, aspect, args.Has("parallel"));
   if (args.Has("camera-position") || args.Has("focal-point"))
   {
@@ -272,7 +310,7 @@ int RunRender(int argc, char** argv)
     }
   }
 
-  Lighting<double> lighting;
+  Lighting<double>& lighting = scene.lighting;
   lighting.lightCount = 0;
   const auto lights = args.GetAll("light");
   if (lights.size() > static_cast<size_t>(kMaxLights))
@@ -317,11 +355,27 @@ int RunRender(int argc, char** argv)
   }
   lighting.ambientIntensity = Vec3<double>(1, 1, 1);
 
+  return scene;
+}
+
+int RunRender(int argc, char** argv)
+{
+  Scene scene = SceneFromArguments(argc, argv, kRenderHelp, false);
+  if (scene.helpShown)
+  {
+    return 0;
+  }
+  const Arguments& args = scene.args;
+  const cpu::RenderOptions& options = scene.options;
+  const std::string& input = scene.input;
+  const std::string& backend = scene.backend;
+  const cpu::DisplayTransform display = scene.display;
   cpu::RenderStats stats;
   cpu::Image image;
   try
   {
-    image = cpu::Render(mesh, camera, lighting.Cast<float>(), material.Cast<float>(), options, &stats);
+    image = cpu::Render(scene.mesh, scene.camera, scene.lighting.Cast<float>(),
+      scene.material.Cast<float>(), options, &stats);
   }
   catch (const std::invalid_argument& e)
   {
@@ -343,14 +397,151 @@ int RunRender(int argc, char** argv)
     std::printf("{\"backend\":\"cpu\",\"mode\":\"%s\",\"width\":%d,\"height\":%d,\"ssaa\":%d,"
                 "\"milliseconds\":%.3f,\"polygons\":%lld,\"triangles\":%lld,\"rasterized\":%lld,"
                 "\"clipped\":%lld,\"degenerate\":%lld,\"pixels_covered\":%lld,"
-                "\"pixels_shaded\":%lld,\"threads\":%d,\"normals_computed\":%s}\n",
+                "\"pixels_shaded\":%lld,\"fast_phong_exact\":%lld,\"threads\":%d,"
+                "\"normals_computed\":%s}\n",
       cpu::ModeName(options.mode), options.width, options.height, options.ssaa,
       stats.milliseconds, static_cast<long long>(stats.polygons),
       static_cast<long long>(stats.triangles), static_cast<long long>(stats.rasterized),
       static_cast<long long>(stats.clipped), static_cast<long long>(stats.degenerate),
       static_cast<long long>(stats.pixelsCovered), static_cast<long long>(stats.pixelsShaded),
-      stats.threads, stats.normalsComputed ? "true" : "false");
+      static_cast<long long>(stats.fastPhongExact), stats.threads, stats.normalsComputed ? "true" : "false");
   }
+  return 0;
+}
+
+} // namespace shadinglab::cli
+
+namespace shadinglab::cli
+{
+
+namespace
+{
+
+const char* kCompareHelp =
+  "usage: shadinglab compare INPUT [--modes M,M,..] [--size WxH] [--out OUT.png] [options]\n"
+  "\n"
+  "Renders INPUT once per shading mode (default: flat,gouraud,phong,fast-phong,cook-torrance)\n"
+  "with the same camera, lights and material, side by side in one labelled PNG.\n"
+  "--size is the size of one panel (default 400x300). Other options as 'render'.\n"
+  "\n";
+
+/// Draws `text` into the RGB8 canvas at (x, y) (top-left origin), white on
+/// the canvas colour, using VTK's FreeType text rendering (no GL needed).
+void DrawLabel(std::vector<uint8_t>& canvas, int canvasWidth, int canvasHeight, int x, int y,
+  const std::string& text)
+{
+  vtkNew<vtkTextProperty> property;
+  property->SetFontSize(15);
+  property->SetColor(1.0, 1.0, 1.0);
+  property->SetFontFamilyToArial();
+  property->BoldOn();
+  vtkNew<vtkImageData> label;
+  if (!vtkFreeTypeTools::GetInstance()->RenderString(property, text, 72, label))
+  {
+    return; // no font: the panel stays unlabelled rather than failing
+  }
+  int dims[3];
+  label->GetDimensions(dims);
+  for (int ly = 0; ly < dims[1]; ++ly)
+  {
+    for (int lx = 0; lx < dims[0]; ++lx)
+    {
+      // VTK images start at the bottom row.
+      const int cx = x + lx, cy = y + (dims[1] - 1 - ly);
+      if (cx < 0 || cy < 0 || cx >= canvasWidth || cy >= canvasHeight)
+      {
+        continue;
+      }
+      const auto* px = static_cast<unsigned char*>(label->GetScalarPointer(lx, ly, 0));
+      const float alpha = px[3] / 255.0f;
+      for (int c = 0; c < 3; ++c)
+      {
+        uint8_t& dst = canvas[(static_cast<size_t>(cy) * canvasWidth + cx) * 3 + c];
+        dst = static_cast<uint8_t>(std::lround(dst * (1 - alpha) + px[c] * alpha));
+      }
+    }
+  }
+}
+
+} // namespace
+
+int RunCompare(int argc, char** argv)
+{
+  // Default panel size for a comparison strip.
+  bool hasSize = false;
+  for (int i = 0; i < argc; ++i)
+  {
+    hasSize |= std::string(argv[i]).rfind("--size", 0) == 0;
+  }
+  std::vector<std::string> arguments(argv, argv + argc);
+  if (!hasSize)
+  {
+    arguments.push_back("--size");
+    arguments.push_back("400x300");
+  }
+  std::vector<char*> raw;
+  for (auto& a : arguments)
+  {
+    raw.push_back(a.data());
+  }
+  Scene scene = SceneFromArguments(static_cast<int>(raw.size()), raw.data(), kCompareHelp, true);
+  if (scene.helpShown)
+  {
+    return 0;
+  }
+  std::vector<cpu::ShadingMode> modes;
+  {
+    std::stringstream ss(scene.args.Get("modes", "flat,gouraud,phong,fast-phong,cook-torrance"));
+    std::string name;
+    while (std::getline(ss, name, ','))
+    {
+      cpu::ShadingMode mode;
+      if (!cpu::ParseMode(name, mode))
+      {
+        throw UsageError("--modes: unknown mode '" + name + "'");
+      }
+      modes.push_back(mode);
+    }
+    if (modes.empty() || modes.size() > 8)
+    {
+      throw UsageError("--modes takes 1 to 8 modes");
+    }
+  }
+  const int W = scene.options.width, H = scene.options.height;
+  constexpr int kLabelBar = 26; // pixels above each panel for its name
+  constexpr int kGap = 4;       // pixels between panels
+  const int canvasW = static_cast<int>(modes.size()) * (W + kGap) - kGap;
+  const int canvasH = H + kLabelBar;
+  std::vector<uint8_t> canvas(static_cast<size_t>(canvasW) * canvasH * 3, 24);
+  cpu::SoftwareRenderer renderer;
+  for (size_t m = 0; m < modes.size(); ++m)
+  {
+    cpu::RenderOptions options = scene.options;
+    options.mode = modes[m];
+    const cpu::Image* image = nullptr;
+    try
+    {
+      image = &renderer.Render(scene.mesh, scene.camera, scene.lighting.Cast<float>(),
+        scene.material.Cast<float>(), options);
+    }
+    catch (const std::invalid_argument& e)
+    {
+      throw UsageError(std::string(cpu::ModeName(modes[m])) + ": " + e.what());
+    }
+    const auto rgb8 = image->ToRGB8(scene.display);
+    const int x0 = static_cast<int>(m) * (W + kGap);
+    for (int y = 0; y < H; ++y)
+    {
+      std::copy(rgb8.begin() + static_cast<size_t>(y) * W * 3,
+        rgb8.begin() + static_cast<size_t>(y + 1) * W * 3,
+        canvas.begin() + (static_cast<size_t>(y + kLabelBar) * canvasW + x0) * 3);
+    }
+    DrawLabel(canvas, canvasW, canvasH, x0 + 8, 4, cpu::ModeName(modes[m]));
+  }
+  cpu::Image strip;
+  strip.width = canvasW;
+  strip.height = canvasH;
+  WritePng(strip, canvas, scene.args.Get("out", "compare.png"));
   return 0;
 }
 

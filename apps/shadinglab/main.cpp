@@ -12,7 +12,8 @@ namespace
 const char* kUsage = "usage: shadinglab COMMAND [options]   (shadinglab COMMAND --help)\n"
                      "commands:\n"
                      "  brdf      tabulate a reflectance model or one of its terms as CSV\n"
-                     "  render    render a mesh in one shading mode to PNG\n";
+                     "  render    render a mesh in one shading mode to PNG\n"
+                     "  compare   render a mesh in every shading mode, side by side\n";
 
 } // namespace
 
@@ -29,6 +30,10 @@ int main(int argc, char** argv)
     if (command == "brdf")
     {
       return shadinglab::cli::RunBrdf(argc - 2, argv + 2);
+    }
+    if (command == "compare")
+    {
+      return shadinglab::cli::RunCompare(argc - 2, argv + 2);
     }
     if (command == "render")
     {

@@ -124,7 +124,7 @@ void ParallelFor(int64_t count, int threads, Fn&& fn)
 struct ThreadState
 {
   std::vector<ScreenVertex> clipped; ///< vertices made by near-plane clipping
-  int64_t clippedPolygons = 0, degenerate = 0, rasterized = 0, shaded = 0;
+  int64_t clippedPolygons = 0, degenerate = 0, rasterized = 0, shaded = 0, fastPhongExact = 0;
 };
 
 } // namespace
@@ -207,6 +207,7 @@ private:
   int NormalSlot = -1, PositionSlot = -1, ColorSlot = -1;
   bool Perspective = true;
   SpecularPowerTable PowerTable; // fast-phong's (N.H)^n, as Bishop & Weimer
+  float FastPhongMinCos = 0.0f;  // cos of RenderOptions::fastPhongMaxSpread
 
   // Buffers reused across frames.
   std::vector<ScreenVertex> Screen;
@@ -408,6 +409,8 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh, const Camera& ca
   if (this->Opt.mode == ShadingMode::FastPhong)
   {
     this->PowerTable.Build(this->Mat.shininess);
+    this->FastPhongMinCos = static_cast<float>(
+      std::cos(std::clamp(this->Opt.fastPhongMaxSpread, 0.0, 180.0) * kPi<double> / 180.0));
   }
 
   // Stage 1: vertices.
@@ -506,6 +509,7 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh, const Camera& ca
       stats->clipped += st.clippedPolygons;
       stats->degenerate += st.degenerate;
       stats->pixelsShaded += st.shaded;
+      stats->fastPhongExact += st.fastPhongExact;
     }
     for (uint8_t c : image.covered)
     {
@@ -1171,6 +1175,20 @@ void SoftwareRenderer::Internals::DrawTriangleFastPhong(const ScreenVertex* cons
   FastPhongTriangle<float> tri;
   tri.Setup(sx, sy, normals);
   const Vec3f V = this->ViewDirection(centroid);
+  // Bishop & Weimer's expansion holds for small normal variation; beyond
+  // the spread limit the triangle is evaluated exactly (the same affine
+  // normal, renormalized per pixel), so no Taylor blow-up reaches a pixel.
+  float minCos = 1.0f;
+  for (int k = 0; k < 3; ++k)
+  {
+    const Vec3f a = NormalizeOr(normals[k], this->ToEye);
+    const Vec3f b = NormalizeOr(normals[(k + 1) % 3], this->ToEye);
+    minCos = std::min(minCos, Dot(a, b));
+  }
+  const bool exact = minCos < this->FastPhongMinCos;
+  // Counted once per triangle: in the call for its first row band.
+  state.fastPhongExact += exact && rowBegin == std::max(0, CeilToInt(std::min({ sy[0], sy[1], sy[2] }) - 0.5f));
+  Vec3f Ls[kMaxLights], Hs[kMaxLights];
   const int nl = this->Lights.lightCount;
   FastPhongQuadratic<float> diffuseQ[kMaxLights], specularQ[kMaxLights];
   Vec3f irradiance[kMaxLights];
@@ -1184,11 +1202,12 @@ void SoftwareRenderer::Internals::DrawTriangleFastPhong(const ScreenVertex* cons
     {
       continue;
     }
+    Ls[l] = L;
+    Hs[l] = HalfVector(L, V, NormalizeOr(tri.Normal(tri.centroidX, tri.centroidY), this->ToEye));
     diffuseQ[l] = tri.Expand(L, this->Opt.expansion);
     if (specular)
     {
-      specularQ[l] = tri.Expand(HalfVector(L, V, tri.Normal(tri.centroidX, tri.centroidY)),
-        this->Opt.expansion);
+      specularQ[l] = tri.Expand(Hs[l], this->Opt.expansion);
     }
   }
   FastPhongScanline<float> diffuseLine[kMaxLights], specularLine[kMaxLights];
@@ -1217,10 +1236,22 @@ void SoftwareRenderer::Internals::DrawTriangleFastPhong(const ScreenVertex* cons
     [&](int j, int i, const float* a) {
       // Forward differences advance for every pixel of the span, drawn or not.
       float NoL[kMaxLights], NoH[kMaxLights];
-      for (int l = 0; l < nl; ++l)
+      if (exact)
       {
-        NoL[l] = diffuseLine[l].Next();
-        NoH[l] = specular ? specularLine[l].Next() : 0.0f;
+        const float xc = static_cast<float>(i) + 0.5f, yc = static_cast<float>(j) + 0.5f;
+        for (int l = 0; l < nl; ++l)
+        {
+          NoL[l] = tri.Exact(Ls[l], xc, yc);
+          NoH[l] = specular ? tri.Exact(Hs[l], xc, yc) : 0.0f;
+        }
+      }
+      else
+      {
+        for (int l = 0; l < nl; ++l)
+        {
+          NoL[l] = diffuseLine[l].Next();
+          NoH[l] = specular ? specularLine[l].Next() : 0.0f;
+        }
       }
       const float z = a[kAttrZ];
       float& d = this->Depth[static_cast<size_t>(j) * W + i];

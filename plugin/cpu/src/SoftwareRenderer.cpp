@@ -144,6 +144,7 @@ private:
   void ComputeVertexAttributes(int64_t v, float* raw) const;
   void ProjectVertex(const double clip[4], const float* raw, ScreenVertex& out) const;
   void RasterizeThread(int thread, int threadCount, ThreadState& state);
+  int64_t BinPolygons(int64_t begin, int64_t end, int worker);
   void DrawSourcePolygon(int64_t p, int thread, int threadCount, ThreadState& state);
   template <typename PixelFn, typename SpanFn>
   void ScanConvert(const ScreenVertex* const* verts, int n, int rowBegin, int rowEnd,
@@ -216,6 +217,7 @@ private:
   std::vector<float> Depth;
   std::vector<uint8_t> Covered;
   std::vector<uint16_t> Coverage;
+  std::vector<std::vector<int64_t>> Bins; // [worker * Threads + thread]: polygon ids
   Image Output;
 };
 
@@ -444,12 +446,30 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh, const Camera& ca
     this->Coverage.assign(pixels, 0);
   }
   std::vector<ThreadState> states(static_cast<size_t>(this->Threads));
-  ParallelFor(this->Threads, this->Threads, [&](int64_t b, int64_t e, int) {
+  // Binning: each worker takes a contiguous range of polygons and lists, for
+  // every rasterizing thread, the polygons that reach its bands. Thread t
+  // then reads lists [0][t], [1][t], ... in order: input order is kept and
+  // the per-polygon reject work is split across threads instead of repeated.
+  const int T = this->Threads;
+  this->Bins.resize(static_cast<size_t>(T) * T);
+  for (auto& list : this->Bins)
+  {
+    list.clear(); // capacity kept across frames
+  }
+  std::vector<int64_t> zeroRowDegenerate(static_cast<size_t>(T), 0);
+  ParallelFor(np, T, [&](int64_t begin, int64_t end, int worker) {
+    zeroRowDegenerate[worker] = this->BinPolygons(begin, end, worker);
+  });
+  ParallelFor(T, T, [&](int64_t b, int64_t e, int) {
     for (int64_t t = b; t < e; ++t)
     {
-      this->RasterizeThread(static_cast<int>(t), this->Threads, states[t]);
+      this->RasterizeThread(static_cast<int>(t), T, states[t]);
     }
   });
+  for (int t = 0; t < T; ++t)
+  {
+    states[0].degenerate += zeroRowDegenerate[t];
+  }
 
   // Resolve supersampling with a box filter.
   Image& image = this->Output;
@@ -574,11 +594,80 @@ void SoftwareRenderer::Internals::RasterizeThread(int thread, int threadCount, T
       std::numeric_limits<float>::infinity());
     std::fill(this->Covered.begin() + first, this->Covered.begin() + last, uint8_t(0));
   }
-  const int64_t np = this->MeshData->NumberOfPolygons();
-  for (int64_t p = 0; p < np; ++p)
+  for (int w = 0; w < threadCount; ++w)
   {
-    this->DrawSourcePolygon(p, thread, threadCount, state);
+    for (const int64_t p : this->Bins[static_cast<size_t>(w) * threadCount + thread])
+    {
+      this->DrawSourcePolygon(p, thread, threadCount, state);
+    }
   }
+}
+
+int64_t SoftwareRenderer::Internals::BinPolygons(int64_t begin, int64_t end, int worker)
+{
+  const int T = this->Threads;
+  const auto& offsets = this->MeshData->offsets;
+  const auto& conn = this->MeshData->connectivity;
+  std::vector<int64_t>* lists = &this->Bins[static_cast<size_t>(worker) * T];
+  int64_t degenerate = 0;
+  for (int64_t p = begin; p < end; ++p)
+  {
+    const int64_t first = offsets[p];
+    const int n = static_cast<int>(std::min<int64_t>(offsets[p + 1] - first, kMaxPolygonVertices - 1));
+    if (n < 3)
+    {
+      continue;
+    }
+    bool anyBehind = false;
+    float ymin = std::numeric_limits<float>::infinity(), ymax = -ymin;
+    for (int k = 0; k < n; ++k)
+    {
+      const int64_t v = conn[first + k];
+      anyBehind |= this->Behind[v] != 0;
+      ymin = std::min(ymin, this->Screen[v].y);
+      ymax = std::max(ymax, this->Screen[v].y);
+    }
+    if (anyBehind)
+    {
+      // Rows are known only after clipping (rare): every thread looks.
+      for (int t = 0; t < T; ++t)
+      {
+        lists[t].push_back(p);
+      }
+      continue;
+    }
+    const int j0 = std::max(0, CeilToInt(ymin - 0.5f));
+    const int j1 = std::min(this->Height, CeilToInt(ymax - 0.5f));
+    if (j1 <= j0)
+    {
+      // No pixel row: count it if it is degenerate (zero screen area).
+      double area = 0;
+      for (int k = 0; k < n; ++k)
+      {
+        const ScreenVertex& a = this->Screen[conn[first + k]];
+        const ScreenVertex& b = this->Screen[conn[first + (k + 1) % n]];
+        area += static_cast<double>(a.x) * b.y - static_cast<double>(b.x) * a.y;
+      }
+      degenerate += !(std::abs(area) * 0.5 >= kDegenerateArea);
+      continue;
+    }
+    const int b0 = j0 / kBandRows, b1 = (j1 - 1) / kBandRows;
+    if (b1 - b0 + 1 >= T)
+    {
+      for (int t = 0; t < T; ++t)
+      {
+        lists[t].push_back(p);
+      }
+    }
+    else
+    {
+      for (int b = b0; b <= b1; ++b)
+      {
+        lists[b % T].push_back(p);
+      }
+    }
+  }
+  return degenerate;
 }
 
 void SoftwareRenderer::Internals::DrawSourcePolygon(
@@ -608,43 +697,6 @@ void SoftwareRenderer::Internals::DrawSourcePolygon(
   bool wasClipped = false;
   if (!anyBehind)
   {
-    // Fast reject on rows before anything else: most polygons of a large
-    // mesh lie in another thread's bands.
-    float ymin = this->Screen[ids[0]].y, ymax = ymin;
-    for (int k = 1; k < n; ++k)
-    {
-      ymin = std::min(ymin, this->Screen[ids[k]].y);
-      ymax = std::max(ymax, this->Screen[ids[k]].y);
-    }
-    const int j0 = std::max(0, CeilToInt(ymin - 0.5f));
-    const int j1 = std::min(this->Height, CeilToInt(ymax - 0.5f));
-    if (j1 <= j0)
-    {
-      // No pixel row: count it if it is degenerate (zero screen area).
-      double area = 0;
-      for (int k = 0; k < n; ++k)
-      {
-        const ScreenVertex& a = this->Screen[ids[k]];
-        const ScreenVertex& b = this->Screen[ids[(k + 1) % n]];
-        area += static_cast<double>(a.x) * b.y - static_cast<double>(b.x) * a.y;
-      }
-      const int band = std::clamp(j0, 0, std::max(0, this->Height - 1)) / kBandRows;
-      state.degenerate += !(std::abs(area) * 0.5 >= kDegenerateArea) && band % threadCount == thread;
-      return;
-    }
-    const int b0 = j0 / kBandRows, b1 = (j1 - 1) / kBandRows;
-    if (b1 - b0 + 1 < threadCount)
-    {
-      bool mine = false;
-      for (int b = b0; b <= b1 && !mine; ++b)
-      {
-        mine = b % threadCount == thread;
-      }
-      if (!mine)
-      {
-        return;
-      }
-    }
     for (int k = 0; k < n; ++k)
     {
       verts[count++] = &this->Screen[ids[k]];

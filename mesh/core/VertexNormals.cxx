@@ -1,0 +1,361 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "VertexNormals.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <utility>
+
+namespace shadinglab::mesh
+{
+
+namespace
+{
+
+/// A weight (area, angle, ...) below this contributes nothing: a face of
+/// area 1e-300 has no direction worth averaging, and squaring edge lengths
+/// in Max's weight must not overflow into Inf. 1e-300 is far below any
+/// real mesh's scale yet above double's smallest normal (2.2e-308).
+constexpr double kTinyWeight = 1e-300;
+
+struct V3
+{
+  double x, y, z;
+};
+inline V3 Sub(const double* a, const double* b)
+{
+  return { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
+}
+inline V3 CrossV(const V3& a, const V3& b)
+{
+  return { a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x };
+}
+inline double DotV(const V3& a, const V3& b)
+{
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+
+/// Newell normal of polygon p: twice its area times the unit normal.
+V3 AreaVector(const PolygonMesh& m, int64_t p)
+{
+  const int64_t b = m.offsets[p], e = m.offsets[p + 1];
+  V3 n{ 0, 0, 0 };
+  if (e - b == 3)
+  {
+    const double* p0 = m.points + 3 * m.connectivity[b];
+    const double* p1 = m.points + 3 * m.connectivity[b + 1];
+    const double* p2 = m.points + 3 * m.connectivity[b + 2];
+    return CrossV(Sub(p1, p0), Sub(p2, p0));
+  }
+  for (int64_t k = b; k < e; ++k)
+  {
+    const double* a = m.points + 3 * m.connectivity[k];
+    const double* c = m.points + 3 * m.connectivity[k + 1 < e ? k + 1 : b];
+    n.x += (a[1] - c[1]) * (a[2] + c[2]);
+    n.y += (a[2] - c[2]) * (a[0] + c[0]);
+    n.z += (a[0] - c[0]) * (a[1] + c[1]);
+  }
+  return n;
+}
+
+/// The contribution of polygon p's corner k (vertex connectivity[b + k]).
+inline V3 CornerContribution(const PolygonMesh& m, int64_t b, int64_t n, int64_t k,
+  const V3& areaVector, double areaLength, NormalWeighting w)
+{
+  switch (w)
+  {
+    case NormalWeighting::Area:
+      return areaVector;
+    case NormalWeighting::Uniform:
+    {
+      if (areaLength < kTinyWeight)
+      {
+        return { 0, 0, 0 };
+      }
+      const double s = 1.0 / areaLength;
+      return { areaVector.x * s, areaVector.y * s, areaVector.z * s };
+    }
+    case NormalWeighting::Angle:
+    case NormalWeighting::Max:
+    {
+      const double* v = m.points + 3 * m.connectivity[b + k];
+      const double* prev = m.points + 3 * m.connectivity[b + (k + n - 1) % n];
+      const double* next = m.points + 3 * m.connectivity[b + (k + 1) % n];
+      const V3 e1 = Sub(next, v), e2 = Sub(prev, v);
+      const double l1 = DotV(e1, e1), l2 = DotV(e2, e2);
+      if (l1 < kTinyWeight || l2 < kTinyWeight || areaLength < kTinyWeight)
+      {
+        return { 0, 0, 0 };
+      }
+      if (w == NormalWeighting::Max)
+      {
+        // Max 1999, "Weights for Computing Vertex Normals from Facet
+        // Normals", eq. 5: (e1 x e2) / (|e1|^2 |e2|^2).
+        const V3 c = CrossV(e1, e2);
+        const double s = 1.0 / (l1 * l2);
+        return { c.x * s, c.y * s, c.z * s };
+      }
+      // Thurmer & Wuthrich 1998: angle at the corner times the unit normal.
+      const double cosA = std::clamp(DotV(e1, e2) / std::sqrt(l1 * l2), -1.0, 1.0);
+      const double s = std::acos(cosA) / areaLength;
+      return { areaVector.x * s, areaVector.y * s, areaVector.z * s };
+    }
+  }
+  return { 0, 0, 0 };
+}
+
+void Normalize(double* n)
+{
+  const double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  if (l > kTinyWeight && std::isfinite(l))
+  {
+    n[0] /= l;
+    n[1] /= l;
+    n[2] /= l;
+  }
+  else
+  {
+    n[0] = 0;
+    n[1] = 0;
+    n[2] = 1;
+  }
+}
+
+} // namespace
+
+void ComputeVertexNormalsNoSplit(
+  const PolygonMesh& m, NormalWeighting weighting, std::vector<double>& normals)
+{
+  normals.assign(static_cast<size_t>(3 * m.numberOfPoints), 0.0);
+  double* out = normals.data();
+  for (int64_t p = 0; p < m.numberOfPolygons; ++p)
+  {
+    const int64_t b = m.offsets[p], n = m.offsets[p + 1] - b;
+    if (n < 3)
+    {
+      continue;
+    }
+    const V3 a = AreaVector(m, p);
+    if (weighting == NormalWeighting::Area)
+    {
+      for (int64_t k = 0; k < n; ++k)
+      {
+        double* o = out + 3 * m.connectivity[b + k];
+        o[0] += a.x;
+        o[1] += a.y;
+        o[2] += a.z;
+      }
+      continue;
+    }
+    const double len = std::sqrt(DotV(a, a));
+    for (int64_t k = 0; k < n; ++k)
+    {
+      const V3 c = CornerContribution(m, b, n, k, a, len, weighting);
+      double* o = out + 3 * m.connectivity[b + k];
+      o[0] += c.x;
+      o[1] += c.y;
+      o[2] += c.z;
+    }
+  }
+  for (int64_t v = 0; v < m.numberOfPoints; ++v)
+  {
+    Normalize(out + 3 * v);
+  }
+}
+
+NormalResult ComputeVertexNormals(const PolygonMesh& m, const NormalOptions& opt)
+{
+  NormalResult r;
+  const int64_t nv = m.numberOfPoints, np = m.numberOfPolygons;
+  const int64_t nc = np > 0 ? m.offsets[np] : 0;
+  r.connectivity.assign(m.connectivity, m.connectivity + nc);
+
+  // Face area vectors and unit normals.
+  std::vector<V3> area(static_cast<size_t>(np));
+  std::vector<V3> unit(static_cast<size_t>(np));
+  std::vector<double> areaLength(static_cast<size_t>(np));
+  for (int64_t p = 0; p < np; ++p)
+  {
+    area[p] = AreaVector(m, p);
+    areaLength[p] = std::sqrt(DotV(area[p], area[p]));
+    const double s = areaLength[p] > kTinyWeight ? 1.0 / areaLength[p] : 0.0;
+    unit[p] = { area[p].x * s, area[p].y * s, area[p].z * s };
+  }
+
+  // Vertex -> corners (CSR by counting sort): corner index c = offset + k.
+  std::vector<int64_t> start(static_cast<size_t>(nv + 1), 0);
+  for (int64_t c = 0; c < nc; ++c)
+  {
+    ++start[m.connectivity[c] + 1];
+  }
+  std::partial_sum(start.begin(), start.end(), start.begin());
+  std::vector<int64_t> corners(static_cast<size_t>(nc));
+  std::vector<int64_t> cornerPolygon(static_cast<size_t>(nc));
+  {
+    std::vector<int64_t> fill(start.begin(), start.end() - 1);
+    for (int64_t p = 0; p < np; ++p)
+    {
+      for (int64_t c = m.offsets[p]; c < m.offsets[p + 1]; ++c)
+      {
+        corners[fill[m.connectivity[c]]++] = c;
+        cornerPolygon[c] = p;
+      }
+    }
+  }
+
+  // Explicit feature edges, as sorted (min, max) pairs.
+  std::vector<std::pair<int64_t, int64_t>> features;
+  for (size_t i = 0; i + 1 < opt.featureEdges.size(); i += 2)
+  {
+    const int64_t a = opt.featureEdges[i], b = opt.featureEdges[i + 1];
+    features.emplace_back(std::min(a, b), std::max(a, b));
+  }
+  std::sort(features.begin(), features.end());
+  auto isFeature = [&](int64_t a, int64_t b) {
+    return !features.empty() &&
+      std::binary_search(features.begin(), features.end(), std::make_pair(std::min(a, b), std::max(a, b)));
+  };
+  const double cosFeature = std::cos(opt.featureAngle * 3.14159265358979323846 / 180.0);
+
+  std::vector<double> normals(static_cast<size_t>(3 * nv), 0.0);
+  r.originalPointIds.resize(static_cast<size_t>(nv));
+  std::iota(r.originalPointIds.begin(), r.originalPointIds.end(), 0);
+
+  // Per-vertex scratch: (other vertex, corner-local index) for both edges of
+  // each incident corner, and a union-find over the incident corners.
+  struct EdgeEnd
+  {
+    int64_t other;
+    int32_t local;
+  };
+  std::vector<EdgeEnd> ends;
+  std::vector<int32_t> parent;
+  std::vector<int32_t> groupOf;
+  for (int64_t v = 0; v < nv; ++v)
+  {
+    const int64_t cb = start[v], ce = start[v + 1];
+    const int32_t count = static_cast<int32_t>(ce - cb);
+    if (count == 0)
+    {
+      normals[3 * v + 2] = 1.0;
+      continue;
+    }
+    parent.resize(static_cast<size_t>(count));
+    std::iota(parent.begin(), parent.end(), 0);
+    auto find = [&](int32_t x) {
+      while (parent[x] != x)
+      {
+        parent[x] = parent[parent[x]];
+        x = parent[x];
+      }
+      return x;
+    };
+    if (opt.splitting)
+    {
+      ends.clear();
+      for (int32_t i = 0; i < count; ++i)
+      {
+        const int64_t c = corners[cb + i];
+        const int64_t p = cornerPolygon[c];
+        const int64_t b = m.offsets[p], n = m.offsets[p + 1] - b, k = c - b;
+        ends.push_back({ m.connectivity[b + (k + 1) % n], i });
+        ends.push_back({ m.connectivity[b + (k + n - 1) % n], i });
+      }
+      std::sort(ends.begin(), ends.end(), [](const EdgeEnd& a, const EdgeEnd& b) {
+        return a.other < b.other || (a.other == b.other && a.local < b.local);
+      });
+      for (size_t i = 0; i < ends.size();)
+      {
+        size_t j = i;
+        while (j < ends.size() && ends[j].other == ends[i].other)
+        {
+          ++j;
+        }
+        const size_t faces = j - i;
+        const int64_t w = ends[i].other;
+        // Each undirected edge is seen from both its ends; count it at v < w.
+        const bool countHere = v < w;
+        if (faces == 1)
+        {
+          r.boundaryEdges += countHere;
+        }
+        else if (faces > 2)
+        {
+          r.nonManifoldEdges += countHere;
+          if (!opt.splitNonManifold)
+          {
+            for (size_t k = i + 1; k < j; ++k)
+            {
+              parent[find(ends[k].local)] = find(ends[i].local);
+            }
+          }
+        }
+        else
+        {
+          const int32_t a = ends[i].local, b = ends[i + 1].local;
+          const V3& na = unit[cornerPolygon[corners[cb + a]]];
+          const V3& nb = unit[cornerPolygon[corners[cb + b]]];
+          const bool crease = DotV(na, nb) < cosFeature || isFeature(v, w);
+          if (crease)
+          {
+            r.creaseEdges += countHere;
+          }
+          else
+          {
+            parent[find(a)] = find(b);
+          }
+        }
+        i = j;
+      }
+    }
+    else
+    {
+      for (int32_t i = 1; i < count; ++i)
+      {
+        parent[i] = 0;
+      }
+    }
+    // One output point per group of corners; the first group keeps v.
+    groupOf.assign(static_cast<size_t>(count), -1);
+    int32_t groups = 0;
+    std::vector<int64_t> groupPoint;
+    for (int32_t i = 0; i < count; ++i)
+    {
+      const int32_t root = find(i);
+      if (groupOf[root] < 0)
+      {
+        groupOf[root] = groups++;
+        int64_t point = v;
+        if (groupOf[root] > 0)
+        {
+          point = static_cast<int64_t>(r.originalPointIds.size());
+          r.originalPointIds.push_back(v);
+          normals.insert(normals.end(), { 0.0, 0.0, 0.0 });
+          ++r.splitPoints;
+        }
+        groupPoint.push_back(point);
+      }
+      const int64_t point = groupPoint[groupOf[root]];
+      const int64_t c = corners[cb + i];
+      const int64_t p = cornerPolygon[c];
+      const int64_t b = m.offsets[p], n = m.offsets[p + 1] - b;
+      if (n < 3)
+      {
+        continue;
+      }
+      r.connectivity[c] = point;
+      const V3 w = CornerContribution(m, b, n, c - b, area[p], areaLength[p], opt.weighting);
+      normals[3 * point] += w.x;
+      normals[3 * point + 1] += w.y;
+      normals[3 * point + 2] += w.z;
+    }
+  }
+  for (size_t i = 0; i < normals.size(); i += 3)
+  {
+    Normalize(&normals[i]);
+  }
+  r.normals = std::move(normals);
+  return r;
+}
+
+} // namespace shadinglab::mesh

@@ -1,0 +1,66 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Vertex normals from a polygon mesh held as flat arrays (the layout of
+// vtkCellArray's offsets and connectivity), with selectable weights and
+// crease splitting. Plain loops over the arrays: no halfedge structure is
+// needed for this, and none is built (see README "Where OpenMesh is used").
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+namespace shadinglab::mesh
+{
+
+enum class NormalWeighting
+{
+  Uniform, ///< sum of unit face normals (Gouraud 1971; OpenMesh update_vertex_normals)
+  Area,    ///< sum of face area vectors (area-weighted)
+  Angle,   ///< corner angle times unit face normal (Thurmer & Wuthrich 1998)
+  Max      ///< corner cross product / (|e1|^2 |e2|^2) (Max 1999), exact on spheres
+};
+
+struct PolygonMesh
+{
+  const double* points = nullptr; ///< 3 per point
+  int64_t numberOfPoints = 0;
+  const int64_t* offsets = nullptr; ///< numberOfPolygons + 1 entries
+  const int64_t* connectivity = nullptr;
+  int64_t numberOfPolygons = 0;
+};
+
+struct NormalOptions
+{
+  NormalWeighting weighting = NormalWeighting::Area;
+  /// Split normals across edges whose dihedral angle exceeds featureAngle.
+  bool splitting = true;
+  double featureAngle = 30.0; ///< degrees
+  /// Explicit feature edges (pairs of point ids), split whatever their angle.
+  std::vector<int64_t> featureEdges;
+  /// Split across boundary edges and non-manifold edges (more than two faces).
+  bool splitNonManifold = true;
+};
+
+struct NormalResult
+{
+  /// Unit normal per output point (3 per point).
+  std::vector<double> normals;
+  /// Output point -> input point (identity for the first copy of each point).
+  std::vector<int64_t> originalPointIds;
+  /// Output connectivity (same offsets as the input): corners re-pointed to
+  /// the copy of their vertex on their side of a crease.
+  std::vector<int64_t> connectivity;
+  int64_t creaseEdges = 0;       ///< edges split because of the feature angle or explicit marks
+  int64_t nonManifoldEdges = 0;  ///< edges with more than two faces
+  int64_t boundaryEdges = 0;
+  int64_t splitPoints = 0;       ///< points added by splitting
+};
+
+/// Computes the normals. Zero-area polygons contribute nothing; a point with
+/// no usable face gets (0, 0, 1) rather than NaN.
+NormalResult ComputeVertexNormals(const PolygonMesh& mesh, const NormalOptions& options);
+
+/// The crease-free normals only (one per input point), the fast path.
+void ComputeVertexNormalsNoSplit(
+  const PolygonMesh& mesh, NormalWeighting weighting, std::vector<double>& normals);
+
+} // namespace shadinglab::mesh

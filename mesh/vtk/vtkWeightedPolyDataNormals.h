@@ -1,0 +1,94 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @class   vtkWeightedPolyDataNormals
+ * @brief   vertex normals with selectable weights and crease splitting
+ *
+ * Computes point normals of a polygonal surface from its face normals with
+ * one of four weightings: UNIFORM (unit face normals, what OpenMesh's
+ * update_vertex_normals and Gouraud's average do), AREA (face area, the
+ * default), ANGLE (corner angle; Thurmer & Wuthrich 1998) or MAX (Max 1999,
+ * exact for a sphere). Edges whose dihedral angle exceeds FeatureAngle
+ * (default 30 degrees), boundary and non-manifold edges, and edges given as
+ * input lines (UseLinesAsFeatureEdges) are creases: the points on them are
+ * split so each side keeps its own normal. Split points copy the point data
+ * of their original; "OriginalPointIds" maps every output point to its input
+ * point. Cell data is passed unchanged.
+ *
+ * @warning Triangle strips are triangulated first. The input is never
+ * modified. Polygons are assumed consistently oriented (see vtkMeshRepair).
+ */
+#ifndef vtkWeightedPolyDataNormals_h
+#define vtkWeightedPolyDataNormals_h
+
+#include <vtkPolyDataAlgorithm.h>
+
+class vtkWeightedPolyDataNormals : public vtkPolyDataAlgorithm
+{
+public:
+  static vtkWeightedPolyDataNormals* New();
+  vtkTypeMacro(vtkWeightedPolyDataNormals, vtkPolyDataAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum Weightings
+  {
+    UNIFORM = 0,
+    AREA = 1,
+    ANGLE = 2,
+    MAX = 3
+  };
+
+  ///@{
+  /// Face-normal weighting (default AREA).
+  vtkSetClampMacro(Weighting, int, UNIFORM, MAX);
+  vtkGetMacro(Weighting, int);
+  ///@}
+
+  ///@{
+  /// Split points on creases (default on).
+  vtkSetMacro(Splitting, bool);
+  vtkGetMacro(Splitting, bool);
+  vtkBooleanMacro(Splitting, bool);
+  ///@}
+
+  ///@{
+  /// Dihedral angle in degrees above which an edge is a crease (default 30,
+  /// range 0..180).
+  vtkSetClampMacro(FeatureAngle, double, 0.0, 180.0);
+  vtkGetMacro(FeatureAngle, double);
+  ///@}
+
+  ///@{
+  /// Treat the input's line cells as explicit feature edges (default on).
+  vtkSetMacro(UseLinesAsFeatureEdges, bool);
+  vtkGetMacro(UseLinesAsFeatureEdges, bool);
+  vtkBooleanMacro(UseLinesAsFeatureEdges, bool);
+  ///@}
+
+  ///@{
+  /// Counts from the last execution.
+  vtkGetMacro(NumberOfCreaseEdges, vtkIdType);
+  vtkGetMacro(NumberOfSplitPoints, vtkIdType);
+  vtkGetMacro(NumberOfNonManifoldEdges, vtkIdType);
+  vtkGetMacro(NumberOfBoundaryEdges, vtkIdType);
+  ///@}
+
+protected:
+  vtkWeightedPolyDataNormals() = default;
+  ~vtkWeightedPolyDataNormals() override = default;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  int Weighting = AREA;
+  bool Splitting = true;
+  double FeatureAngle = 30.0;
+  bool UseLinesAsFeatureEdges = true;
+  vtkIdType NumberOfCreaseEdges = 0;
+  vtkIdType NumberOfSplitPoints = 0;
+  vtkIdType NumberOfNonManifoldEdges = 0;
+  vtkIdType NumberOfBoundaryEdges = 0;
+
+private:
+  vtkWeightedPolyDataNormals(const vtkWeightedPolyDataNormals&) = delete;
+  void operator=(const vtkWeightedPolyDataNormals&) = delete;
+};
+
+#endif

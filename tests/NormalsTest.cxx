@@ -1,0 +1,227 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// vtkWeightedPolyDataNormals: weights, creases, boundaries, non-manifold
+// edges, data carried through, input untouched, accuracy on analytic shapes.
+#include "AnalyticMeshes.h"
+#include "vtkWeightedPolyDataNormals.h"
+
+#include <vtkCellArray.h>
+#include <vtkDataArray.h>
+#include <vtkFloatArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+namespace
+{
+
+vtkSmartPointer<vtkPolyData> MakePolyData(
+  const std::vector<double>& pts, const std::vector<std::vector<vtkIdType>>& polys)
+{
+  auto pd = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  for (size_t i = 0; i < pts.size(); i += 3)
+  {
+    points->InsertNextPoint(pts[i], pts[i + 1], pts[i + 2]);
+  }
+  vtkNew<vtkCellArray> cells;
+  for (const auto& p : polys)
+  {
+    cells->InsertNextCell(static_cast<vtkIdType>(p.size()), p.data());
+  }
+  pd->SetPoints(points);
+  pd->SetPolys(cells);
+  return pd;
+}
+
+vtkSmartPointer<vtkPolyData> Cube()
+{
+  return MakePolyData({ 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 1, 0, 1, 1, 1, 1, 0, 1, 1 },
+    { { 0, 3, 2, 1 }, { 4, 5, 6, 7 }, { 0, 1, 5, 4 }, { 1, 2, 6, 5 }, { 2, 3, 7, 6 },
+      { 3, 0, 4, 7 } });
+}
+
+vtkSmartPointer<vtkPolyData> RunNormals(vtkPolyData* input, int weighting, bool splitting = true,
+  vtkWeightedPolyDataNormals** filterOut = nullptr)
+{
+  static vtkSmartPointer<vtkWeightedPolyDataNormals> keep;
+  keep = vtkSmartPointer<vtkWeightedPolyDataNormals>::New();
+  keep->SetInputData(input);
+  keep->SetWeighting(weighting);
+  keep->SetSplitting(splitting);
+  keep->Update();
+  if (filterOut)
+  {
+    *filterOut = keep;
+  }
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->ShallowCopy(keep->GetOutput());
+  return out;
+}
+
+// atan2(|a x b|, a.b): unlike acos(a.b) it stays accurate for nearly equal
+// vectors (acos turns float rounding of 3e-8 into 0.014 degrees).
+double AngleDeg(const double* a, const double* b)
+{
+  const double c[3] = { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
+    a[0] * b[1] - a[1] * b[0] };
+  const double d = a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+  return std::atan2(std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]), d) * 180.0 /
+    3.14159265358979;
+}
+
+} // namespace
+
+TEST(NormalsTest, AreaWeightingReallyWeighsByArea)
+{
+  // Vertex 0 at the apex of a large triangle tilted one way and a small one
+  // tilted the other: uniform averages the unit normals, area weighs by size.
+  auto pd = MakePolyData({ 0, 0, 0, 4, 0, 1, 0, 4, 1, -0.5, -0.5, 0.2 },
+    { { 0, 1, 2 }, { 0, 3, 1 } });
+  auto area = RunNormals(pd, vtkWeightedPolyDataNormals::AREA, false);
+  auto uniform = RunNormals(pd, vtkWeightedPolyDataNormals::UNIFORM, false);
+  const double* na = area->GetPointData()->GetNormals()->GetTuple3(0);
+  double a[3] = { na[0], na[1], na[2] };
+  const double* nu = uniform->GetPointData()->GetNormals()->GetTuple3(0);
+  // Expected area-weighted normal: normalized sum of the cross products.
+  auto cross = [](const double* p0, const double* p1, const double* p2, double* out) {
+    const double u[3] = { p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2] };
+    const double v[3] = { p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2] };
+    out[0] = u[1] * v[2] - u[2] * v[1];
+    out[1] = u[2] * v[0] - u[0] * v[2];
+    out[2] = u[0] * v[1] - u[1] * v[0];
+  };
+  double P[4][3];
+  for (int i = 0; i < 4; ++i)
+  {
+    pd->GetPoint(i, P[i]);
+  }
+  double c1[3], c2[3];
+  cross(P[0], P[1], P[2], c1);
+  cross(P[0], P[3], P[1], c2);
+  double e[3] = { c1[0] + c2[0], c1[1] + c2[1], c1[2] + c2[2] };
+  const double l = std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2]);
+  for (double& x : e)
+  {
+    x /= l;
+  }
+  EXPECT_LT(AngleDeg(a, e), 1e-4);
+  EXPECT_GT(AngleDeg(a, nu), 5.0); // the two weightings really differ here
+}
+
+TEST(NormalsTest, CubeHasTwelveCreasesAndThreeNormalsPerCorner)
+{
+  vtkWeightedPolyDataNormals* filter = nullptr;
+  auto out = RunNormals(Cube(), vtkWeightedPolyDataNormals::AREA, true, &filter);
+  EXPECT_EQ(filter->GetNumberOfCreaseEdges(), 12);
+  EXPECT_EQ(out->GetNumberOfPoints(), 24);
+  EXPECT_EQ(filter->GetNumberOfSplitPoints(), 16);
+  // Every output normal is axis aligned.
+  vtkDataArray* n = out->GetPointData()->GetNormals();
+  for (vtkIdType i = 0; i < n->GetNumberOfTuples(); ++i)
+  {
+    const double* v = n->GetTuple3(i);
+    EXPECT_NEAR(std::abs(v[0]) + std::abs(v[1]) + std::abs(v[2]), 1.0, 1e-12);
+  }
+  ASSERT_NE(out->GetPointData()->GetArray("OriginalPointIds"), nullptr);
+  // Without splitting: 8 points, normals along the diagonals.
+  auto smooth = RunNormals(Cube(), vtkWeightedPolyDataNormals::AREA, false);
+  EXPECT_EQ(smooth->GetNumberOfPoints(), 8);
+  const double* d = smooth->GetPointData()->GetNormals()->GetTuple3(0);
+  EXPECT_NEAR(d[0], -1 / std::sqrt(3.0), 1e-7); // float output
+}
+
+TEST(NormalsTest, FeatureAngleDecidesAndLinesForceCreases)
+{
+  // A folded strip: two quads meeting at 20 degrees.
+  const double t = std::tan(20.0 * 3.14159265358979 / 180.0);
+  auto pd = MakePolyData({ 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 2, 0, t, 2, 1, t },
+    { { 0, 1, 2, 3 }, { 1, 4, 5, 2 } });
+  vtkNew<vtkWeightedPolyDataNormals> filter;
+  filter->SetInputData(pd);
+  filter->SetFeatureAngle(30);
+  filter->Update();
+  EXPECT_EQ(filter->GetNumberOfCreaseEdges(), 0);
+  filter->SetFeatureAngle(10);
+  filter->Update();
+  EXPECT_EQ(filter->GetNumberOfCreaseEdges(), 1);
+  EXPECT_EQ(filter->GetNumberOfSplitPoints(), 2);
+  // An explicit feature edge (a line cell) splits even at 30 degrees.
+  vtkNew<vtkCellArray> lines;
+  const vtkIdType seg[2] = { 1, 2 };
+  lines->InsertNextCell(2, seg);
+  pd->SetLines(lines);
+  filter->SetFeatureAngle(30);
+  filter->Update();
+  EXPECT_EQ(filter->GetNumberOfCreaseEdges(), 1);
+  EXPECT_EQ(filter->GetNumberOfBoundaryEdges(), 6);
+}
+
+TEST(NormalsTest, NonManifoldEdgesAreCountedAndSplit)
+{
+  // Three triangles sharing edge (0, 1).
+  auto pd = MakePolyData({ 0, 0, 0, 1, 0, 0, 0.5, 1, 0, 0.5, -1, 0.2, 0.5, 0, 1 },
+    { { 0, 1, 2 }, { 1, 0, 3 }, { 0, 1, 4 } });
+  vtkWeightedPolyDataNormals* filter = nullptr;
+  auto out = RunNormals(pd, vtkWeightedPolyDataNormals::AREA, true, &filter);
+  EXPECT_EQ(filter->GetNumberOfNonManifoldEdges(), 1);
+  EXPECT_EQ(out->GetNumberOfPolys(), 3);
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    const double* v = out->GetPointData()->GetNormals()->GetTuple3(i);
+    ASSERT_TRUE(std::isfinite(v[0]) && std::isfinite(v[1]) && std::isfinite(v[2]));
+  }
+}
+
+TEST(NormalsTest, PointDataIsCarriedAndInputUntouched)
+{
+  auto cube = Cube();
+  vtkNew<vtkFloatArray> temperature;
+  temperature->SetName("Temperature");
+  for (int i = 0; i < 8; ++i)
+  {
+    temperature->InsertNextValue(10.0f * i);
+  }
+  cube->GetPointData()->AddArray(temperature);
+  const vtkMTimeType mtime = cube->GetMTime();
+  auto out = RunNormals(cube, vtkWeightedPolyDataNormals::ANGLE);
+  EXPECT_EQ(cube->GetMTime(), mtime);
+  EXPECT_EQ(cube->GetNumberOfPoints(), 8);
+  EXPECT_EQ(cube->GetPointData()->GetNormals(), nullptr);
+  vtkDataArray* t = out->GetPointData()->GetArray("Temperature");
+  vtkDataArray* ids = out->GetPointData()->GetArray("OriginalPointIds");
+  ASSERT_NE(t, nullptr);
+  for (vtkIdType i = 0; i < out->GetNumberOfPoints(); ++i)
+  {
+    EXPECT_EQ(t->GetTuple1(i), 10.0 * ids->GetTuple1(i));
+  }
+}
+
+TEST(NormalsTest, MaxWeightsAreExactOnTheSphere)
+{
+  vtkSmartPointer<vtkPolyData> sphere;
+  sphere.TakeReference(shadinglab::datasets::MakeIcosphere(3));
+  double worst[4] = { 0, 0, 0, 0 };
+  for (int w = 0; w < 4; ++w)
+  {
+    auto out = RunNormals(sphere, w, false);
+    vtkDataArray* n = out->GetPointData()->GetNormals();
+    vtkDataArray* exact = out->GetPointData()->GetArray("ExactNormal");
+    ASSERT_NE(exact, nullptr);
+    for (vtkIdType i = 0; i < n->GetNumberOfTuples(); ++i)
+    {
+      double a[3], b[3];
+      n->GetTuple(i, a);
+      exact->GetTuple(i, b);
+      worst[w] = std::max(worst[w], AngleDeg(a, b));
+    }
+  }
+  // Max 1999: exact for points on a sphere (float output: ~1e-5 degrees).
+  EXPECT_LT(worst[vtkWeightedPolyDataNormals::MAX], 1e-3);
+  EXPECT_GT(worst[vtkWeightedPolyDataNormals::UNIFORM], worst[vtkWeightedPolyDataNormals::MAX]);
+}

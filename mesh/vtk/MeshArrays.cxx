@@ -2,37 +2,58 @@
 #include "MeshArrays.h"
 
 #include <vtkCellArray.h>
+#include <vtkDoubleArray.h>
 #include <vtkIdList.h>
 #include <vtkNew.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkTypeInt64Array.h>
+
+#include <type_traits>
 
 namespace shadinglab::mesh
 {
 
-FlatPolygons FlatPolygonsFromPolyData(vtkPolyData* input)
+void FlatPolygonsFromPolyData(vtkPolyData* input, FlatPolygons& out)
 {
-  FlatPolygons out;
-  const vtkIdType np = input->GetNumberOfPoints();
-  out.points.resize(static_cast<size_t>(3 * np));
-  for (vtkIdType i = 0; i < np; ++i)
+  out.numberOfPoints = input->GetNumberOfPoints();
+  auto* doubles = vtkDoubleArray::SafeDownCast(input->GetPoints() ? input->GetPoints()->GetData() : nullptr);
+  if (doubles)
   {
-    input->GetPoint(i, &out.points[3 * i]);
+    out.points = doubles->GetPointer(0);
+  }
+  else
+  {
+    out.pointStorage.resize(static_cast<size_t>(3 * out.numberOfPoints));
+    for (vtkIdType i = 0; i < out.numberOfPoints; ++i)
+    {
+      input->GetPoint(i, &out.pointStorage[3 * i]);
+    }
+    out.points = out.pointStorage.data();
+  }
+  vtkCellArray* polys = input->GetPolys();
+  out.numberOfPolygons = polys->GetNumberOfCells();
+  if (polys->IsStorage64Bit())
+  {
+    static_assert(sizeof(vtkTypeInt64) == sizeof(int64_t), "64-bit ids");
+    out.offsets = reinterpret_cast<const int64_t*>(polys->GetOffsetsArray64()->GetPointer(0));
+    out.connectivity =
+      reinterpret_cast<const int64_t*>(polys->GetConnectivityArray64()->GetPointer(0));
+    return;
   }
   vtkNew<vtkIdList> ids;
-  vtkCellArray* polys = input->GetPolys();
-  out.offsets.reserve(static_cast<size_t>(polys->GetNumberOfCells() + 1));
-  out.connectivity.reserve(static_cast<size_t>(polys->GetNumberOfConnectivityIds()));
+  out.offsetStorage.assign(1, 0);
   for (vtkIdType c = 0; c < polys->GetNumberOfCells(); ++c)
   {
     polys->GetCellAtId(c, ids);
     for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
     {
-      out.connectivity.push_back(ids->GetId(k));
+      out.connectivityStorage.push_back(ids->GetId(k));
     }
-    out.offsets.push_back(static_cast<int64_t>(out.connectivity.size()));
+    out.offsetStorage.push_back(static_cast<int64_t>(out.connectivityStorage.size()));
   }
-  return out;
+  out.offsets = out.offsetStorage.data();
+  out.connectivity = out.connectivityStorage.data();
 }
 
 std::vector<int64_t> LineSegments(vtkPolyData* input)

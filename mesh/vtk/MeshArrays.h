@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// vtkPolyData polygons <-> flat arrays for the mesh/core algorithms.
+// vtkPolyData polygons -> flat arrays for the mesh/core algorithms, without
+// copying when the data already has the right layout (double points, 64-bit
+// cell array storage).
 #pragma once
 
 #include <cstdint>
@@ -12,14 +14,21 @@ namespace shadinglab::mesh
 
 struct FlatPolygons
 {
-  std::vector<double> points;
-  std::vector<int64_t> offsets{ 0 };
-  std::vector<int64_t> connectivity;
-  int64_t NumberOfPolygons() const { return static_cast<int64_t>(offsets.size()) - 1; }
+  const double* points = nullptr;
+  const int64_t* offsets = nullptr;
+  const int64_t* connectivity = nullptr;
+  int64_t numberOfPoints = 0;
+  int64_t numberOfPolygons = 0;
+
+  // Storage, used only when the input could not be viewed in place.
+  std::vector<double> pointStorage;
+  std::vector<int64_t> offsetStorage;
+  std::vector<int64_t> connectivityStorage;
 };
 
-/// Points and polygons (strips triangulated) of a polydata.
-FlatPolygons FlatPolygonsFromPolyData(vtkPolyData* input);
+/// Views (or copies) points and polygons of a polydata. Strips must have
+/// been triangulated by the caller. The polydata must outlive the result.
+void FlatPolygonsFromPolyData(vtkPolyData* input, FlatPolygons& out);
 
 /// Point id pairs of the input's line cells (each segment of a polyline).
 std::vector<int64_t> LineSegments(vtkPolyData* input);

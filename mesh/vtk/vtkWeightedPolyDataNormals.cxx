@@ -19,6 +19,8 @@
 #include <vtkSmartPointer.h>
 #include <vtkTriangleFilter.h>
 
+#include <algorithm>
+
 vtkStandardNewMacro(vtkWeightedPolyDataNormals);
 
 int vtkWeightedPolyDataNormals::RequestData(
@@ -43,13 +45,14 @@ int vtkWeightedPolyDataNormals::RequestData(
     source = triangles->GetOutput();
   }
   namespace slm = shadinglab::mesh;
-  const slm::FlatPolygons flat = slm::FlatPolygonsFromPolyData(source);
+  slm::FlatPolygons flat;
+  slm::FlatPolygonsFromPolyData(source, flat);
   slm::PolygonMesh mesh;
-  mesh.points = flat.points.data();
-  mesh.numberOfPoints = source->GetNumberOfPoints();
-  mesh.offsets = flat.offsets.data();
-  mesh.connectivity = flat.connectivity.data();
-  mesh.numberOfPolygons = flat.NumberOfPolygons();
+  mesh.points = flat.points;
+  mesh.numberOfPoints = flat.numberOfPoints;
+  mesh.offsets = flat.offsets;
+  mesh.connectivity = flat.connectivity;
+  mesh.numberOfPolygons = flat.numberOfPolygons;
   slm::NormalOptions options;
   options.weighting = static_cast<slm::NormalWeighting>(this->Weighting);
   options.splitting = this->Splitting;
@@ -59,57 +62,92 @@ int vtkWeightedPolyDataNormals::RequestData(
     options.featureEdges = slm::LineSegments(source);
   }
   this->UpdateProgress(0.1);
-  const slm::NormalResult result = slm::ComputeVertexNormals(mesh, options);
+  slm::NormalResult result;
+  if (this->Splitting)
+  {
+    result = slm::ComputeVertexNormals(mesh, options);
+  }
+  else
+  {
+    // Crease-free: one pass over the arrays, no adjacency (edge counts stay 0).
+    slm::ComputeVertexNormalsNoSplit(mesh, options.weighting, result.normals);
+    result.originalPointIds.resize(static_cast<size_t>(mesh.numberOfPoints));
+    for (int64_t i = 0; i < mesh.numberOfPoints; ++i)
+    {
+      result.originalPointIds[i] = i;
+    }
+  }
   this->UpdateProgress(0.8);
   this->NumberOfCreaseEdges = result.creaseEdges;
   this->NumberOfSplitPoints = result.splitPoints;
   this->NumberOfNonManifoldEdges = result.nonManifoldEdges;
   this->NumberOfBoundaryEdges = result.boundaryEdges;
 
+  const vtkIdType nIn = source->GetNumberOfPoints();
   const vtkIdType nOut = static_cast<vtkIdType>(result.originalPointIds.size());
   vtkNew<vtkPoints> points;
   points->SetDataType(source->GetPoints()->GetDataType());
   points->SetNumberOfPoints(nOut);
   vtkPointData* inPD = source->GetPointData();
   vtkPointData* outPD = output->GetPointData();
-  outPD->CopyNormalsOff();
-  outPD->CopyAllocate(inPD, nOut);
+  if (nOut == nIn)
+  {
+    // No split: points and point data are shared with the input as they are.
+    points->ShallowCopy(source->GetPoints());
+    outPD->PassData(inPD);
+    outPD->SetNormals(nullptr);
+  }
+  else
+  {
+    // The first nIn output points are the input points in order; split
+    // copies follow.
+    points->GetData()->InsertTuples(0, nIn, 0, source->GetPoints()->GetData());
+    outPD->CopyNormalsOff();
+    outPD->CopyAllocate(inPD, nOut);
+    for (vtkIdType i = 0; i < nIn; ++i)
+    {
+      outPD->CopyData(inPD, i, i);
+    }
+    for (vtkIdType i = nIn; i < nOut; ++i)
+    {
+      const vtkIdType src = result.originalPointIds[i];
+      points->SetPoint(i, source->GetPoint(src));
+      outPD->CopyData(inPD, src, i);
+    }
+  }
   vtkNew<vtkIdTypeArray> originalIds;
   originalIds->SetName("OriginalPointIds");
   originalIds->SetNumberOfTuples(nOut);
-  for (vtkIdType i = 0; i < nOut; ++i)
-  {
-    const vtkIdType src = result.originalPointIds[i];
-    points->SetPoint(i, source->GetPoint(src));
-    outPD->CopyData(inPD, src, i);
-    originalIds->SetValue(i, src);
-  }
+  std::copy(result.originalPointIds.begin(), result.originalPointIds.end(), originalIds->GetPointer(0));
   vtkNew<vtkFloatArray> normals;
   normals->SetName("Normals");
   normals->SetNumberOfComponents(3);
   normals->SetNumberOfTuples(nOut);
-  for (vtkIdType i = 0; i < nOut; ++i)
+  float* nf = normals->GetPointer(0);
+  for (size_t i = 0; i < result.normals.size(); ++i)
   {
-    normals->SetTuple(i, &result.normals[3 * i]);
+    nf[i] = static_cast<float>(result.normals[i]);
   }
   outPD->SetNormals(normals);
   outPD->AddArray(originalIds);
 
-  vtkNew<vtkIdTypeArray> offsets, connectivity;
-  offsets->SetNumberOfTuples(static_cast<vtkIdType>(flat.offsets.size()));
-  for (size_t i = 0; i < flat.offsets.size(); ++i)
-  {
-    offsets->SetValue(static_cast<vtkIdType>(i), flat.offsets[i]);
-  }
-  connectivity->SetNumberOfTuples(static_cast<vtkIdType>(result.connectivity.size()));
-  for (size_t i = 0; i < result.connectivity.size(); ++i)
-  {
-    connectivity->SetValue(static_cast<vtkIdType>(i), result.connectivity[i]);
-  }
-  vtkNew<vtkCellArray> polys;
-  polys->SetData(offsets, connectivity);
   output->SetPoints(points);
-  output->SetPolys(polys);
+  if (nOut == nIn)
+  {
+    // No point was split: the polygons are the input's, shared.
+    output->SetPolys(source->GetPolys());
+  }
+  else
+  {
+    vtkNew<vtkIdTypeArray> offsets, connectivity;
+    offsets->SetNumberOfTuples(mesh.numberOfPolygons + 1);
+    std::copy(mesh.offsets, mesh.offsets + mesh.numberOfPolygons + 1, offsets->GetPointer(0));
+    connectivity->SetNumberOfTuples(static_cast<vtkIdType>(result.connectivity.size()));
+    std::copy(result.connectivity.begin(), result.connectivity.end(), connectivity->GetPointer(0));
+    vtkNew<vtkCellArray> polys;
+    polys->SetData(offsets, connectivity);
+    output->SetPolys(polys);
+  }
   output->SetVerts(source->GetVerts());
   output->SetLines(source->GetLines());
   // Cell data: verts and lines come before polys in VTK's cell order, so

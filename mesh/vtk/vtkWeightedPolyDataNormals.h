@@ -65,7 +65,7 @@ public:
   ///@}
 
   ///@{
-  /// Counts from the last execution.
+  /// Counts from the last execution (edge counts need Splitting on).
   vtkGetMacro(NumberOfCreaseEdges, vtkIdType);
   vtkGetMacro(NumberOfSplitPoints, vtkIdType);
   vtkGetMacro(NumberOfNonManifoldEdges, vtkIdType);

@@ -340,7 +340,16 @@ vtkPolyData* MakeTJunctionPatch(int coarse)
       return it->second;
     }
     const double x = -1.0 + 2.0 * fi / (2 * fine), y = -1.0 + 2.0 * fj / fine;
-    points.push_back({ x, y, height(x, y) });
+    double z = height(x, y);
+    if (fi == fine && fj % 2 == 1)
+    {
+      // A T-junction vertex sits exactly on the coarse edge (the midpoint
+      // of its ends), as adaptive refinement leaves it: the geometry is
+      // watertight, the interpolated shading is not.
+      const double y0 = -1.0 + 2.0 * (fj - 1) / fine, y1 = -1.0 + 2.0 * (fj + 1) / fine;
+      z = 0.5 * (height(x, y0) + height(x, y1));
+    }
+    points.push_back({ x, y, z });
     normals.push_back(normal(x, y));
     ids[key] = static_cast<vtkIdType>(points.size() - 1);
     return ids[key];

@@ -1,0 +1,499 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "MeshRepair.h"
+
+#include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <iostream>
+#include <limits>
+#include <queue>
+#include <unordered_map>
+
+namespace shadinglab::mesh
+{
+
+namespace
+{
+
+/// Faces whose Newell area is below this fraction of the squared bounding
+/// diagonal are degenerate. 1e-20 is ~100x double's epsilon squared (the
+/// relative rounding of an area computed from coordinates of that scale),
+/// so only faces that are zero up to rounding are removed.
+constexpr double kDegenerateRelativeArea = 1e-20;
+
+/// Spatial-hash cells visited per T-junction edge query before falling back
+/// to scanning every point: bounds the cost of one very long edge.
+constexpr int64_t kMaxCellsPerQuery = 100000;
+
+/// T-junction parameters within this of an edge end are the end itself.
+constexpr double kEdgeEndEpsilon = 1e-9;
+
+struct Key
+{
+  int64_t x, y, z;
+  bool operator==(const Key& o) const { return x == o.x && y == o.y && z == o.z; }
+};
+struct KeyHash
+{
+  size_t operator()(const Key& k) const
+  {
+    return static_cast<size_t>(k.x * 73856093LL ^ k.y * 19349663LL ^ k.z * 83492791LL);
+  }
+};
+
+double Diagonal(const double* points, int64_t n, double lo[3])
+{
+  double hi[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    lo[c] = std::numeric_limits<double>::infinity();
+    hi[c] = -lo[c];
+  }
+  for (int64_t i = 0; i < n; ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      lo[c] = std::min(lo[c], points[3 * i + c]);
+      hi[c] = std::max(hi[c], points[3 * i + c]);
+    }
+  }
+  if (n == 0)
+  {
+    return 0.0;
+  }
+  return std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+    (hi[2] - lo[2]) * (hi[2] - lo[2]));
+}
+
+std::array<double, 3> Newell(const OwnedMesh& m, int64_t p)
+{
+  std::array<double, 3> n{ 0, 0, 0 };
+  const int64_t b = m.offsets[p], e = m.offsets[p + 1];
+  for (int64_t k = b; k < e; ++k)
+  {
+    const double* a = &m.points[3 * m.connectivity[k]];
+    const double* c = &m.points[3 * m.connectivity[k + 1 < e ? k + 1 : b]];
+    n[0] += (a[1] - c[1]) * (a[2] + c[2]);
+    n[1] += (a[2] - c[2]) * (a[0] + c[0]);
+    n[2] += (a[0] - c[0]) * (a[1] + c[1]);
+  }
+  return n;
+}
+
+} // namespace
+
+OwnedMesh RepairMesh(const double* points, int64_t np, const int64_t* offsets,
+  const int64_t* connectivity, int64_t nf, const RepairOptions& opt, RepairReport& report)
+{
+  report = RepairReport();
+  double lo[3];
+  const double diagonal = Diagonal(points, np, lo);
+
+  // 1. Weld: each point maps to the first earlier point within tolerance.
+  std::vector<int64_t> representative(static_cast<size_t>(np));
+  for (int64_t i = 0; i < np; ++i)
+  {
+    representative[i] = i;
+  }
+  if (opt.weld && np > 0)
+  {
+    const double tol = opt.weldTolerance * diagonal;
+    // Cell size: the tolerance, but not so small that coordinates overflow
+    // the integer cell index (diagonal * 1e-12 keeps |index| < 1e12).
+    const double cell = std::max(tol, diagonal * 1e-12 + std::numeric_limits<double>::min());
+    std::unordered_map<Key, std::vector<int64_t>, KeyHash> grid;
+    grid.reserve(static_cast<size_t>(np));
+    for (int64_t i = 0; i < np; ++i)
+    {
+      const double* p = points + 3 * i;
+      const Key k{ static_cast<int64_t>(std::floor((p[0] - lo[0]) / cell)),
+        static_cast<int64_t>(std::floor((p[1] - lo[1]) / cell)),
+        static_cast<int64_t>(std::floor((p[2] - lo[2]) / cell)) };
+      int64_t found = -1;
+      for (int64_t dx = -1; dx <= 1 && found < 0; ++dx)
+      {
+        for (int64_t dy = -1; dy <= 1 && found < 0; ++dy)
+        {
+          for (int64_t dz = -1; dz <= 1 && found < 0; ++dz)
+          {
+            const auto it = grid.find(Key{ k.x + dx, k.y + dy, k.z + dz });
+            if (it == grid.end())
+            {
+              continue;
+            }
+            for (int64_t r : it->second)
+            {
+              const double* q = points + 3 * r;
+              const double d2 = (p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
+                (p[2] - q[2]) * (p[2] - q[2]);
+              const bool sameSeam = !opt.seamKeys || (*opt.seamKeys)[i] == (*opt.seamKeys)[r];
+              if (d2 <= tol * tol && sameSeam)
+              {
+                found = r;
+                break;
+              }
+            }
+          }
+        }
+      }
+      if (found >= 0)
+      {
+        representative[i] = found;
+        ++report.welded;
+      }
+      else
+      {
+        grid[k].push_back(i);
+      }
+    }
+  }
+
+  // Compact the points: representatives only, in input order.
+  OwnedMesh mesh;
+  std::vector<int64_t> newIndex(static_cast<size_t>(np), -1);
+  for (int64_t i = 0; i < np; ++i)
+  {
+    if (representative[i] == i)
+    {
+      newIndex[i] = static_cast<int64_t>(mesh.pointIds.size());
+      mesh.pointIds.push_back(i);
+      mesh.points.insert(mesh.points.end(), points + 3 * i, points + 3 * i + 3);
+    }
+  }
+
+  // 2. Faces: remap, drop repeated consecutive vertices, drop degenerates.
+  const double minArea = kDegenerateRelativeArea * diagonal * diagonal;
+  std::vector<int64_t> face;
+  for (int64_t f = 0; f < nf; ++f)
+  {
+    face.clear();
+    for (int64_t k = offsets[f]; k < offsets[f + 1]; ++k)
+    {
+      const int64_t v = newIndex[representative[connectivity[k]]];
+      if (face.empty() || face.back() != v)
+      {
+        face.push_back(v);
+      }
+    }
+    while (face.size() > 1 && face.front() == face.back())
+    {
+      face.pop_back();
+    }
+    // A vertex repeated non-consecutively (a pinched polygon) also degenerates it.
+    std::vector<int64_t> sorted(face);
+    std::sort(sorted.begin(), sorted.end());
+    const bool repeated = std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end();
+    if (face.size() < 3 || repeated)
+    {
+      ++report.degenerateRemoved;
+      continue;
+    }
+    mesh.connectivity.insert(mesh.connectivity.end(), face.begin(), face.end());
+    mesh.offsets.push_back(static_cast<int64_t>(mesh.connectivity.size()));
+    mesh.cellIds.push_back(f);
+    const auto n = Newell(mesh, mesh.NumberOfPolygons() - 1);
+    if (std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) * 0.5 <= minArea)
+    {
+      mesh.connectivity.resize(static_cast<size_t>(mesh.offsets[mesh.offsets.size() - 2]));
+      mesh.offsets.pop_back();
+      mesh.cellIds.pop_back();
+      ++report.degenerateRemoved;
+    }
+  }
+
+  // 3. Edges: (min, max, face, forward) sorted, to find face neighbours.
+  const int64_t faces = mesh.NumberOfPolygons();
+  struct EdgeUse
+  {
+    int64_t a, b, face;
+    bool forward;
+  };
+  std::vector<EdgeUse> uses;
+  uses.reserve(mesh.connectivity.size());
+  for (int64_t f = 0; f < faces; ++f)
+  {
+    const int64_t b = mesh.offsets[f], e = mesh.offsets[f + 1];
+    for (int64_t k = b; k < e; ++k)
+    {
+      const int64_t u = mesh.connectivity[k], v = mesh.connectivity[k + 1 < e ? k + 1 : b];
+      uses.push_back({ std::min(u, v), std::max(u, v), f, u < v });
+    }
+  }
+  std::sort(uses.begin(), uses.end(), [](const EdgeUse& x, const EdgeUse& y) {
+    return x.a < y.a || (x.a == y.a && (x.b < y.b || (x.b == y.b && x.face < y.face)));
+  });
+  // Neighbour lists through manifold edges; boundary flag per face.
+  std::vector<std::vector<std::pair<int64_t, bool>>> neighbours(static_cast<size_t>(faces));
+  std::vector<uint8_t> touchesOpenEdge(static_cast<size_t>(faces), 0);
+  for (size_t i = 0; i < uses.size();)
+  {
+    size_t j = i;
+    while (j < uses.size() && uses[j].a == uses[i].a && uses[j].b == uses[i].b)
+    {
+      ++j;
+    }
+    if (j - i == 2)
+    {
+      // sameDirection: both faces traverse the edge the same way (inconsistent).
+      const bool same = uses[i].forward == uses[i + 1].forward;
+      neighbours[uses[i].face].push_back({ uses[i + 1].face, same });
+      neighbours[uses[i + 1].face].push_back({ uses[i].face, same });
+    }
+    else
+    {
+      report.nonManifoldEdges += j - i > 2;
+      for (size_t k = i; k < j; ++k)
+      {
+        touchesOpenEdge[uses[k].face] = 1;
+      }
+    }
+    i = j;
+  }
+
+  // 4. Consistent orientation per component (BFS), outward when closed.
+  std::vector<uint8_t> flip(static_cast<size_t>(faces), 0);
+  std::vector<int64_t> component(static_cast<size_t>(faces), -1);
+  for (int64_t root = 0; root < faces; ++root)
+  {
+    if (component[root] >= 0)
+    {
+      continue;
+    }
+    const int64_t id = report.components++;
+    std::vector<int64_t> members;
+    std::queue<int64_t> queue;
+    queue.push(root);
+    component[root] = id;
+    bool closed = true;
+    while (!queue.empty())
+    {
+      const int64_t f = queue.front();
+      queue.pop();
+      members.push_back(f);
+      closed &= touchesOpenEdge[f] == 0;
+      for (const auto& [g, same] : neighbours[f])
+      {
+        if (component[g] >= 0)
+        {
+          continue;
+        }
+        component[g] = id;
+        flip[g] = opt.fixOrientation ? static_cast<uint8_t>(flip[f] ^ (same ? 1 : 0)) : 0;
+        queue.push(g);
+      }
+    }
+    if (opt.fixOrientation && closed)
+    {
+      // Signed volume of the component as it will be oriented.
+      double volume = 0;
+      for (int64_t f : members)
+      {
+        const int64_t b = mesh.offsets[f], e = mesh.offsets[f + 1];
+        const double* p0 = &mesh.points[3 * mesh.connectivity[b]];
+        for (int64_t k = b + 1; k + 1 < e; ++k)
+        {
+          const double* p1 = &mesh.points[3 * mesh.connectivity[k]];
+          const double* p2 = &mesh.points[3 * mesh.connectivity[k + 1]];
+          const double v = p0[0] * (p1[1] * p2[2] - p1[2] * p2[1]) -
+            p0[1] * (p1[0] * p2[2] - p1[2] * p2[0]) + p0[2] * (p1[0] * p2[1] - p1[1] * p2[0]);
+          volume += flip[f] ? -v : v;
+        }
+      }
+      if (volume < 0)
+      {
+        for (int64_t f : members)
+        {
+          flip[f] ^= 1;
+        }
+      }
+    }
+  }
+  for (int64_t f = 0; f < faces; ++f)
+  {
+    if (flip[f])
+    {
+      std::reverse(mesh.connectivity.begin() + mesh.offsets[f],
+        mesh.connectivity.begin() + mesh.offsets[f + 1]);
+      ++report.flipped;
+    }
+  }
+
+  // 5. OpenMesh: a halfedge mesh accepts only manifold faces; add_face
+  // refuses a face that would make a complex edge or vertex. Such a face
+  // gets its own copies of its vertices instead of being dropped.
+  if (opt.resolveNonManifold)
+  {
+    OpenMesh::PolyMesh_ArrayKernelT<> om;
+    std::vector<OpenMesh::VertexHandle> handles;
+    handles.reserve(static_cast<size_t>(mesh.NumberOfPoints()));
+    for (int64_t i = 0; i < mesh.NumberOfPoints(); ++i)
+    {
+      handles.push_back(om.add_vertex(OpenMesh::PolyMesh_ArrayKernelT<>::Point(
+        static_cast<float>(mesh.points[3 * i]), static_cast<float>(mesh.points[3 * i + 1]),
+        static_cast<float>(mesh.points[3 * i + 2]))));
+    }
+    std::vector<OpenMesh::VertexHandle> fh;
+    const int64_t originalPoints = mesh.NumberOfPoints();
+    // OpenMesh reports refused faces on std::cerr; that is expected here.
+    std::streambuf* saved = std::cerr.rdbuf(nullptr);
+    for (int64_t f = 0; f < faces; ++f)
+    {
+      fh.clear();
+      for (int64_t k = mesh.offsets[f]; k < mesh.offsets[f + 1]; ++k)
+      {
+        fh.push_back(handles[mesh.connectivity[k]]);
+      }
+      if (om.add_face(fh).is_valid())
+      {
+        continue;
+      }
+      for (int64_t k = mesh.offsets[f]; k < mesh.offsets[f + 1]; ++k)
+      {
+        const int64_t v = mesh.connectivity[k];
+        const int64_t copy = mesh.NumberOfPoints();
+        mesh.points.insert(mesh.points.end(), { mesh.points[3 * v], mesh.points[3 * v + 1],
+                                                mesh.points[3 * v + 2] });
+        mesh.pointIds.push_back(mesh.pointIds[v]);
+        handles.push_back(om.add_vertex(OpenMesh::PolyMesh_ArrayKernelT<>::Point(
+          static_cast<float>(mesh.points[3 * copy]), static_cast<float>(mesh.points[3 * copy + 1]),
+          static_cast<float>(mesh.points[3 * copy + 2]))));
+        mesh.connectivity[k] = copy;
+      }
+      fh.clear();
+      for (int64_t k = mesh.offsets[f]; k < mesh.offsets[f + 1]; ++k)
+      {
+        fh.push_back(handles[mesh.connectivity[k]]);
+      }
+      om.add_face(fh);
+    }
+    std::cerr.rdbuf(saved);
+    report.duplicatedVertices = mesh.NumberOfPoints() - originalPoints;
+  }
+  return mesh;
+}
+
+int64_t FixTJunctions(OwnedMesh& mesh, double relativeTolerance)
+{
+  const int64_t np = mesh.NumberOfPoints(), nf = mesh.NumberOfPolygons();
+  if (np == 0 || nf == 0)
+  {
+    return 0;
+  }
+  double lo[3];
+  const double diagonal = Diagonal(mesh.points.data(), np, lo);
+  const double tol = relativeTolerance * diagonal;
+  // Grid cell: the mean edge length, so a typical edge query visits few cells.
+  double edgeSum = 0;
+  for (int64_t f = 0; f < nf; ++f)
+  {
+    const int64_t b = mesh.offsets[f], e = mesh.offsets[f + 1];
+    for (int64_t k = b; k < e; ++k)
+    {
+      const double* p = &mesh.points[3 * mesh.connectivity[k]];
+      const double* q = &mesh.points[3 * mesh.connectivity[k + 1 < e ? k + 1 : b]];
+      edgeSum += std::sqrt((p[0] - q[0]) * (p[0] - q[0]) + (p[1] - q[1]) * (p[1] - q[1]) +
+        (p[2] - q[2]) * (p[2] - q[2]));
+    }
+  }
+  const double cell = std::max(edgeSum / static_cast<double>(mesh.connectivity.size()),
+    diagonal * 1e-9 + std::numeric_limits<double>::min());
+  std::unordered_map<Key, std::vector<int64_t>, KeyHash> grid;
+  auto keyOf = [&](const double* p) {
+    return Key{ static_cast<int64_t>(std::floor((p[0] - lo[0]) / cell)),
+      static_cast<int64_t>(std::floor((p[1] - lo[1]) / cell)),
+      static_cast<int64_t>(std::floor((p[2] - lo[2]) / cell)) };
+  };
+  for (int64_t i = 0; i < np; ++i)
+  {
+    grid[keyOf(&mesh.points[3 * i])].push_back(i);
+  }
+  int64_t inserted = 0;
+  std::vector<int64_t> newOffsets{ 0 }, newConnectivity;
+  newConnectivity.reserve(mesh.connectivity.size());
+  std::vector<std::pair<double, int64_t>> onEdge;
+  for (int64_t f = 0; f < nf; ++f)
+  {
+    const int64_t b = mesh.offsets[f], e = mesh.offsets[f + 1];
+    for (int64_t k = b; k < e; ++k)
+    {
+      const int64_t ia = mesh.connectivity[k], ib = mesh.connectivity[k + 1 < e ? k + 1 : b];
+      newConnectivity.push_back(ia);
+      const double* a = &mesh.points[3 * ia];
+      const double* c = &mesh.points[3 * ib];
+      const double d[3] = { c[0] - a[0], c[1] - a[1], c[2] - a[2] };
+      const double len2 = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+      if (!(len2 > 0))
+      {
+        continue;
+      }
+      onEdge.clear();
+      auto test = [&](int64_t v) {
+        if (v == ia || v == ib)
+        {
+          return;
+        }
+        const double* p = &mesh.points[3 * v];
+        const double w[3] = { p[0] - a[0], p[1] - a[1], p[2] - a[2] };
+        const double t = (w[0] * d[0] + w[1] * d[1] + w[2] * d[2]) / len2;
+        if (t <= kEdgeEndEpsilon || t >= 1 - kEdgeEndEpsilon)
+        {
+          return;
+        }
+        const double r[3] = { w[0] - t * d[0], w[1] - t * d[1], w[2] - t * d[2] };
+        if (r[0] * r[0] + r[1] * r[1] + r[2] * r[2] <= tol * tol)
+        {
+          onEdge.push_back({ t, v });
+        }
+      };
+      double qlo[3], qhi[3];
+      for (int c3 = 0; c3 < 3; ++c3)
+      {
+        qlo[c3] = std::min(a[c3], c[c3]) - tol;
+        qhi[c3] = std::max(a[c3], c[c3]) + tol;
+      }
+      const Key k0 = keyOf(qlo), k1 = keyOf(qhi);
+      const double cells = double(k1.x - k0.x + 1) * double(k1.y - k0.y + 1) * double(k1.z - k0.z + 1);
+      if (cells > kMaxCellsPerQuery)
+      {
+        for (int64_t v = 0; v < np; ++v)
+        {
+          test(v);
+        }
+      }
+      else
+      {
+        for (int64_t x = k0.x; x <= k1.x; ++x)
+        {
+          for (int64_t y = k0.y; y <= k1.y; ++y)
+          {
+            for (int64_t z = k0.z; z <= k1.z; ++z)
+            {
+              const auto it = grid.find(Key{ x, y, z });
+              if (it != grid.end())
+              {
+                for (int64_t v : it->second)
+                {
+                  test(v);
+                }
+              }
+            }
+          }
+        }
+      }
+      std::sort(onEdge.begin(), onEdge.end());
+      for (const auto& [t, v] : onEdge)
+      {
+        newConnectivity.push_back(v);
+        ++inserted;
+      }
+    }
+    newOffsets.push_back(static_cast<int64_t>(newConnectivity.size()));
+  }
+  mesh.offsets.swap(newOffsets);
+  mesh.connectivity.swap(newConnectivity);
+  return inserted;
+}
+
+} // namespace shadinglab::mesh

@@ -1,0 +1,239 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// vtkMeshRepair: welding (with seams), degenerate removal, orientation,
+// non-manifold resolution through OpenMesh, T-junction repair.
+#include "AnalyticMeshes.h"
+#include "MeshIO.h"
+#include "vtkMeshRepair.h"
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkFloatArray.h>
+#include <vtkIdList.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <random>
+
+namespace
+{
+
+/// Every polygon gets its own copies of its vertices: an STL-like soup.
+vtkSmartPointer<vtkPolyData> Soup(vtkPolyData* mesh)
+{
+  auto soup = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> polys;
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < mesh->GetNumberOfPolys(); ++c)
+  {
+    mesh->GetPolys()->GetCellAtId(c, ids);
+    std::vector<vtkIdType> face;
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+    {
+      face.push_back(points->InsertNextPoint(mesh->GetPoint(ids->GetId(k))));
+    }
+    polys->InsertNextCell(static_cast<vtkIdType>(face.size()), face.data());
+  }
+  soup->SetPoints(points);
+  soup->SetPolys(polys);
+  return soup;
+}
+
+double SignedVolume(vtkPolyData* mesh)
+{
+  double volume = 0;
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < mesh->GetNumberOfPolys(); ++c)
+  {
+    mesh->GetPolys()->GetCellAtId(c, ids);
+    double p0[3];
+    mesh->GetPoint(ids->GetId(0), p0);
+    for (vtkIdType k = 1; k + 1 < ids->GetNumberOfIds(); ++k)
+    {
+      double p1[3], p2[3];
+      mesh->GetPoint(ids->GetId(k), p1);
+      mesh->GetPoint(ids->GetId(k + 1), p2);
+      volume += (p0[0] * (p1[1] * p2[2] - p1[2] * p2[1]) - p0[1] * (p1[0] * p2[2] - p1[2] * p2[0]) +
+                  p0[2] * (p1[0] * p2[1] - p1[1] * p2[0])) /
+        6.0;
+    }
+  }
+  return volume;
+}
+
+vtkSmartPointer<vtkPolyData> Icosphere(int level)
+{
+  vtkSmartPointer<vtkPolyData> m;
+  m.TakeReference(shadinglab::datasets::MakeIcosphere(level));
+  return m;
+}
+
+} // namespace
+
+TEST(RepairTest, WeldsATriangleSoup)
+{
+  auto soup = Soup(Icosphere(1));
+  ASSERT_EQ(soup->GetNumberOfPoints(), 240);
+  vtkNew<vtkMeshRepair> repair;
+  repair->SetInputData(soup);
+  repair->WeldOn();
+  repair->Update();
+  EXPECT_EQ(repair->GetOutput()->GetNumberOfPoints(), 42);
+  EXPECT_EQ(repair->GetNumberOfWeldedPoints(), 240 - 42);
+  EXPECT_EQ(repair->GetOutput()->GetNumberOfPolys(), 80);
+  EXPECT_EQ(repair->GetNumberOfFlippedCells(), 0);
+  EXPECT_EQ(repair->GetNumberOfDuplicatedPoints(), 0);
+  EXPECT_EQ(soup->GetNumberOfPoints(), 240); // input untouched
+}
+
+TEST(RepairTest, SeamsWithDifferentAttributesStayOpen)
+{
+  // Two triangles sharing an edge geometrically; the shared positions carry
+  // different texture-like values on each side.
+  auto pd = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  const double p[6][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 1, 0, 0 }, { 1, 1, 0 },
+    { 0, 1, 0 } };
+  for (auto& q : p)
+  {
+    points->InsertNextPoint(q);
+  }
+  vtkNew<vtkCellArray> polys;
+  const vtkIdType a[3] = { 0, 1, 2 }, b[3] = { 3, 4, 5 };
+  polys->InsertNextCell(3, a);
+  polys->InsertNextCell(3, b);
+  vtkNew<vtkFloatArray> u;
+  u->SetName("u");
+  for (float v : { 0.f, 1.f, 0.f, 0.5f, 1.f, 0.25f })
+  {
+    u->InsertNextValue(v);
+  }
+  pd->SetPoints(points);
+  pd->SetPolys(polys);
+  pd->GetPointData()->AddArray(u);
+  vtkNew<vtkMeshRepair> repair;
+  repair->SetInputData(pd);
+  repair->WeldOn();
+  repair->Update();
+  EXPECT_EQ(repair->GetNumberOfWeldedPoints(), 2);
+  repair->KeepAttributeSeamsOn();
+  repair->Update();
+  EXPECT_EQ(repair->GetNumberOfWeldedPoints(), 0);
+  EXPECT_EQ(repair->GetOutput()->GetNumberOfPoints(), 6);
+}
+
+TEST(RepairTest, RemovesDegenerateFacesAndCountsThem)
+{
+  auto pd = Icosphere(1);
+  vtkNew<vtkCellArray> polys;
+  polys->DeepCopy(pd->GetPolys());
+  const vtkIdType repeated[3] = { 0, 0, 1 };
+  const vtkIdType pinched[4] = { 0, 1, 0, 2 };
+  polys->InsertNextCell(3, repeated);
+  polys->InsertNextCell(4, pinched);
+  pd->SetPolys(polys);
+  vtkNew<vtkIntArray> tag;
+  tag->SetName("tag");
+  for (int i = 0; i < 82; ++i)
+  {
+    tag->InsertNextValue(i);
+  }
+  pd->GetCellData()->AddArray(tag);
+  vtkNew<vtkMeshRepair> repair;
+  repair->SetInputData(pd);
+  repair->Update();
+  EXPECT_EQ(repair->GetNumberOfDegenerateCellsRemoved(), 2);
+  EXPECT_EQ(repair->GetOutput()->GetNumberOfPolys(), 80);
+  auto* outTag = repair->GetOutput()->GetCellData()->GetArray("tag");
+  ASSERT_NE(outTag, nullptr);
+  EXPECT_EQ(outTag->GetTuple1(79), 79.0);
+}
+
+TEST(RepairTest, OrientationIsMadeConsistentAndOutward)
+{
+  auto pd = Icosphere(2);
+  const double volume = SignedVolume(pd);
+  // Flip a random third of the faces, then the whole sphere inside out.
+  std::mt19937 rng(5);
+  vtkNew<vtkCellArray> polys;
+  vtkNew<vtkIdList> ids;
+  int flippedByUs = 0;
+  for (vtkIdType c = 0; c < pd->GetNumberOfPolys(); ++c)
+  {
+    pd->GetPolys()->GetCellAtId(c, ids);
+    std::vector<vtkIdType> f(ids->begin(), ids->end());
+    if (rng() % 3 == 0)
+    {
+      std::reverse(f.begin(), f.end());
+      ++flippedByUs;
+    }
+    polys->InsertNextCell(3, f.data());
+  }
+  pd->SetPolys(polys);
+  vtkNew<vtkMeshRepair> repair;
+  repair->SetInputData(pd);
+  repair->Update();
+  EXPECT_EQ(repair->GetNumberOfFlippedCells(), flippedByUs);
+  EXPECT_NEAR(SignedVolume(repair->GetOutput()), volume, 1e-9);
+  EXPECT_EQ(repair->GetNumberOfDuplicatedPoints(), 0);
+}
+
+TEST(RepairTest, NonManifoldEdgesKeepEveryFace)
+{
+  // Three triangles on one edge: OpenMesh refuses the third; it gets its own
+  // vertex copies instead of being dropped.
+  auto pd = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  for (const auto& q : std::vector<std::array<double, 3>>{
+         { 0, 0, 0 }, { 1, 0, 0 }, { 0.5, 1, 0 }, { 0.5, -1, 0.2 }, { 0.5, 0, 1 } })
+  {
+    points->InsertNextPoint(q.data());
+  }
+  vtkNew<vtkCellArray> polys;
+  const vtkIdType f1[3] = { 0, 1, 2 }, f2[3] = { 1, 0, 3 }, f3[3] = { 0, 1, 4 };
+  polys->InsertNextCell(3, f1);
+  polys->InsertNextCell(3, f2);
+  polys->InsertNextCell(3, f3);
+  pd->SetPoints(points);
+  pd->SetPolys(polys);
+  vtkNew<vtkMeshRepair> repair;
+  repair->SetInputData(pd);
+  repair->Update();
+  EXPECT_EQ(repair->GetNumberOfNonManifoldEdges(), 1);
+  EXPECT_EQ(repair->GetOutput()->GetNumberOfPolys(), 3);
+  EXPECT_GE(repair->GetNumberOfDuplicatedPoints(), 2);
+  auto* ids2 = repair->GetOutput()->GetPointData()->GetArray("OriginalPointIds");
+  ASSERT_NE(ids2, nullptr);
+}
+
+TEST(RepairTest, TJunctionsAreSplit)
+{
+  vtkSmartPointer<vtkPolyData> patch;
+  patch.TakeReference(shadinglab::ReadMesh(SHADINGLAB_SOURCE_DIR "/datasets/t_junctions.off"));
+  vtkNew<vtkMeshRepair> repair;
+  repair->SetInputData(patch);
+  repair->FixTJunctionsOn();
+  repair->Update();
+  EXPECT_EQ(repair->GetNumberOfTJunctionsFixed(), 4);
+  // The four coarse quads on the seam became pentagons.
+  int pentagons = 0;
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < repair->GetOutput()->GetNumberOfPolys(); ++c)
+  {
+    repair->GetOutput()->GetPolys()->GetCellAtId(c, ids);
+    pentagons += ids->GetNumberOfIds() == 5;
+  }
+  EXPECT_EQ(pentagons, 4);
+  // A clean mesh has none.
+  repair->SetInputData(Icosphere(2));
+  repair->Update();
+  EXPECT_EQ(repair->GetNumberOfTJunctionsFixed(), 0);
+}

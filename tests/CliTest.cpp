@@ -236,3 +236,73 @@ TEST(CliTest, RenderBadInputExitsTwoWithOneLine)
     EXPECT_EQ(CountLines(r.err), 1) << args << ": " << r.err.substr(0, 300);
   }
 }
+
+TEST(CliTest, NormalsJsonReportsRepairs)
+{
+  const std::string out = ::testing::TempDir() + "/shadinglab_normals.vtp";
+  auto r = RunCli("normals " + kData + "t_junctions.off --out " + out + " --fix-t-junctions --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_EQ(CountLines(r.out), 1);
+  for (const char* key : { "\"points_in\":101", "\"cells_in\":80", "\"points_out\":", "\"cells_out\":",
+         "\"welded\":0", "\"t_junctions_fixed\":4", "\"degenerate_removed\":0",
+         "\"nonmanifold_edges\":0", "\"flipped\":0", "\"crease_edges\":" })
+  {
+    EXPECT_NE(r.out.find(key), std::string::npos) << key << " in " << r.out;
+  }
+  // A prism: 8 vertical edges at 45 degrees and 16 rim edges are creases.
+  r = RunCli("normals " + kData + "cylinder_8.stl --weld --weights angle --out " + out + " --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("\"crease_edges\":24"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"points_out\":48"), std::string::npos) << r.out;
+  // Subdivision: Loop on the 80-triangle icosphere, two levels.
+  r = RunCli("normals " + kData + "icosphere_1.vtp --subdivide 2 --scheme loop --out " + out + " --json");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("\"cells_out\":1280"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"points_out\":642"), std::string::npos) << r.out;
+}
+
+TEST(CliTest, NormalsWritesEveryFormat)
+{
+  for (const char* ext : { "vtp", "ply", "obj", "stl", "vtk", "off" })
+  {
+    const std::string out = ::testing::TempDir() + "/shadinglab_normals_out." + ext;
+    const auto r = RunCli("normals " + kData + "icosphere_2.vtp --out " + out);
+    EXPECT_EQ(r.status, 0) << ext << ": " << r.err;
+    std::ifstream f(out);
+    EXPECT_TRUE(f.good()) << out;
+  }
+}
+
+TEST(CliTest, NormalsBadInputExitsTwoWithOneLine)
+{
+  const std::string out = " --out " + ::testing::TempDir() + "/shadinglab_normals_bad.vtp";
+  const std::string good = kData + "icosphere_1.vtp";
+  const std::string bad[] = {
+    "normals " + good,                                    // no --out
+    "normals /nonexistent.off" + out,                     // missing file
+    "normals " + good + " --weights funny" + out,         // bad weights
+    "normals " + good + " --subdivide 9" + out,           // too many levels
+    "normals " + good + " --scheme loop" + out,           // scheme without subdivide
+    "normals " + kData + "cylinder_8.vtp --subdivide 1 --scheme loop" + out, // loop on quads
+    "normals " + good + " --feature-angle 200" + out,     // angle out of range
+    "normals " + good + " --weld 5" + out,                // absurd tolerance
+    "normals " + good + " --out /tmp/x.xyz",              // unknown output format
+  };
+  for (const auto& args : bad)
+  {
+    const auto r = RunCli(args);
+    EXPECT_EQ(r.status, 2) << args;
+    EXPECT_EQ(CountLines(r.err), 1) << args << ": " << r.err.substr(0, 300);
+  }
+}
+
+TEST(CliTest, RenderUsesTheMeshFilters)
+{
+  const std::string out = ::testing::TempDir() + "/shadinglab_render_filters.png";
+  auto r = RunCli("render " + kData + "icosphere_1.vtp --backend cpu --size 64x48 --subdivide 2 --stats --out " + out);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("\"triangles\":1280"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("\"normals_computed\":false"), std::string::npos) << r.out;
+  r = RunCli("render " + kData + "cylinder_8.vtp --backend cpu --size 64x48 --normals max --feature-angle 40 --out " + out);
+  ASSERT_EQ(r.status, 0) << r.err;
+}

@@ -10,7 +10,8 @@ namespace shadinglab::cli
 {
 
 Arguments::Arguments(int argc, char** argv, const std::vector<std::string>& valued,
-  const std::vector<std::string>& flags, const std::vector<std::string>& repeatable)
+  const std::vector<std::string>& flags, const std::vector<std::string>& repeatable,
+  const std::vector<std::string>& optionalNumber)
 {
   for (int i = 0; i < argc; ++i)
   {
@@ -26,6 +27,20 @@ Arguments::Arguments(int argc, char** argv, const std::vector<std::string>& valu
         value = name.substr(eq + 1);
         name = name.substr(0, eq);
         inlineValue = true;
+      }
+      if (std::find(optionalNumber.begin(), optionalNumber.end(), name) != optionalNumber.end())
+      {
+        if (!inlineValue && i + 1 < argc)
+        {
+          char* end = nullptr;
+          std::strtod(argv[i + 1], &end);
+          if (end != argv[i + 1] && *end == '\0')
+          {
+            value = argv[++i];
+          }
+        }
+        this->Values[name] = value;
+        continue;
       }
       if (std::find(flags.begin(), flags.end(), name) != flags.end())
       {

@@ -23,8 +23,11 @@ class Arguments
 public:
   /// @param flags option names that take no value (e.g. "stats").
   /// @param repeatable valued options that may be given more than once.
+  /// @param optionalNumber options whose value is optional: a following
+  ///   token is taken as the value only when it is a number.
   Arguments(int argc, char** argv, const std::vector<std::string>& valued,
-    const std::vector<std::string>& flags, const std::vector<std::string>& repeatable = {});
+    const std::vector<std::string>& flags, const std::vector<std::string>& repeatable = {},
+    const std::vector<std::string>& optionalNumber = {});
 
   bool Has(const std::string& name) const { return this->Values.count(name) > 0; }
   std::string Get(const std::string& name, const std::string& fallback = {}) const;

@@ -24,5 +24,6 @@ Material<double> MaterialFromArguments(const Arguments& args, bool forRender = f
 int RunBrdf(int argc, char** argv);
 int RunRender(int argc, char** argv);
 int RunCompare(int argc, char** argv);
+int RunNormals(int argc, char** argv);
 
 } // namespace shadinglab::cli

@@ -3,6 +3,7 @@
 #include "Commands.h"
 
 #include "MeshIO.h"
+#include "MeshPipeline.h"
 #include "PolyDataMesh.h"
 #include "shadinglab/cpu/SoftwareRenderer.h"
 
@@ -56,6 +57,10 @@ const char* kRenderHelp =
   "                      normals spread more than DEG (default 30; 180 shows the raw\n"
   "                      Taylor quadratic everywhere, artifacts included)\n"
   "  --stats             print one JSON line of timings and counts\n"
+  "  --normals W         recompute vertex normals: uniform | area | angle | max\n"
+  "  --feature-angle DEG crease angle for --normals / --subdivide (default 30)\n"
+  "  --subdivide N [--scheme loop|catmull-clark]   OpenSubdiv refinement, limit normals\n"
+  "  --weld [TOL] --fix-t-junctions   repair as 'shadinglab normals'\n"
   "\n"
   "fast-phong uses Blinn's (N.H)^n for the specular term (a phong material's (R.V)^n\n"
   "has no affine-normal form) and always interpolates in screen space.\n"
@@ -127,7 +132,8 @@ Scene SceneFromArguments(int argc, char** argv, const char* help, bool compare)
 {
   std::vector<std::string> valued = { "backend", "mode", "size", "out", "interp", "polygons",
     "azimuth", "elevation", "zoom", "camera-position", "focal-point", "view-up", "view-angle",
-    "light-intensity", "ssaa", "threads", "display", "expansion", "fast-phong-max-spread" };
+    "light-intensity", "ssaa", "threads", "display", "expansion", "fast-phong-max-spread",
+    "normals", "feature-angle", "subdivide", "scheme" };
   for (const auto& o : MaterialOptions())
   {
     valued.push_back(o);
@@ -136,7 +142,8 @@ Scene SceneFromArguments(int argc, char** argv, const char* help, bool compare)
   {
     valued.push_back("modes");
   }
-  Scene scene{ Arguments(argc, argv, valued, { "help", "stats", "cull", "parallel" }, { "light" }) };
+  Scene scene{ Arguments(
+    argc, argv, valued, { "help", "stats", "cull", "parallel", "fix-t-junctions" }, { "light" }, { "weld" }) };
   const Arguments& args = scene.args;
   if (args.Has("help"))
   {
@@ -265,6 +272,12 @@ Scene SceneFromArguments(int argc, char** argv, const char* help, bool compare)
     throw UsageError(e.what());
   }
   scene.input = input;
+  if (WantsMeshPipeline(args))
+  {
+    // The same filters as 'shadinglab normals'.
+    MeshPipelineReport report;
+    polydata = RunMeshPipeline(polydata, MeshPipelineFromArguments(args, false), report);
+  }
   scene.mesh = cpu::MeshFromPolyData(polydata);
   const cpu::Mesh& mesh = scene.mesh;
 

@@ -13,7 +13,8 @@ const char* kUsage = "usage: shadinglab COMMAND [options]   (shadinglab COMMAND 
                      "commands:\n"
                      "  brdf      tabulate a reflectance model or one of its terms as CSV\n"
                      "  render    render a mesh in one shading mode to PNG\n"
-                     "  compare   render a mesh in every shading mode, side by side\n";
+                     "  compare   render a mesh in every shading mode, side by side\n"
+                     "  normals   repair, subdivide and compute vertex normals of a mesh\n";
 
 } // namespace
 
@@ -30,6 +31,10 @@ int main(int argc, char** argv)
     if (command == "brdf")
     {
       return shadinglab::cli::RunBrdf(argc - 2, argv + 2);
+    }
+    if (command == "normals")
+    {
+      return shadinglab::cli::RunNormals(argc - 2, argv + 2);
     }
     if (command == "compare")
     {

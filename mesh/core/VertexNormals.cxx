@@ -172,14 +172,11 @@ NormalResult ComputeVertexNormals(const PolygonMesh& m, const NormalOptions& opt
 
   // Face area vectors and unit normals.
   std::vector<V3> area(static_cast<size_t>(np));
-  std::vector<V3> unit(static_cast<size_t>(np));
   std::vector<double> areaLength(static_cast<size_t>(np));
   for (int64_t p = 0; p < np; ++p)
   {
     area[p] = AreaVector(m, p);
     areaLength[p] = std::sqrt(DotV(area[p], area[p]));
-    const double s = areaLength[p] > kTinyWeight ? 1.0 / areaLength[p] : 0.0;
-    unit[p] = { area[p].x * s, area[p].y * s, area[p].z * s };
   }
 
   // Vertex -> corners (CSR by counting sort): corner index c = offset + k.
@@ -231,6 +228,7 @@ NormalResult ComputeVertexNormals(const PolygonMesh& m, const NormalOptions& opt
   std::vector<EdgeEnd> ends;
   std::vector<int32_t> parent;
   std::vector<int32_t> groupOf;
+  std::vector<int64_t> groupPoint;
   for (int64_t v = 0; v < nv; ++v)
   {
     const int64_t cb = start[v], ce = start[v + 1];
@@ -252,18 +250,29 @@ NormalResult ComputeVertexNormals(const PolygonMesh& m, const NormalOptions& opt
     };
     if (opt.splitting)
     {
-      ends.clear();
+      ends.resize(static_cast<size_t>(2 * count));
       for (int32_t i = 0; i < count; ++i)
       {
         const int64_t c = corners[cb + i];
         const int64_t p = cornerPolygon[c];
         const int64_t b = m.offsets[p], n = m.offsets[p + 1] - b, k = c - b;
-        ends.push_back({ m.connectivity[b + (k + 1) % n], i });
-        ends.push_back({ m.connectivity[b + (k + n - 1) % n], i });
+        ends[2 * i] = { m.connectivity[b + (k + 1 == n ? 0 : k + 1)], i };
+        ends[2 * i + 1] = { m.connectivity[b + (k == 0 ? n - 1 : k - 1)], i };
       }
-      std::sort(ends.begin(), ends.end(), [](const EdgeEnd& a, const EdgeEnd& b) {
-        return a.other < b.other || (a.other == b.other && a.local < b.local);
-      });
+      // Insertion sort: a vertex has a handful of incident edges.
+      for (size_t i = 1; i < ends.size(); ++i)
+      {
+        const EdgeEnd key = ends[i];
+        size_t j = i;
+        while (j > 0 &&
+          (ends[j - 1].other > key.other ||
+            (ends[j - 1].other == key.other && ends[j - 1].local > key.local)))
+        {
+          ends[j] = ends[j - 1];
+          --j;
+        }
+        ends[j] = key;
+      }
       for (size_t i = 0; i < ends.size();)
       {
         size_t j = i;
@@ -293,9 +302,10 @@ NormalResult ComputeVertexNormals(const PolygonMesh& m, const NormalOptions& opt
         else
         {
           const int32_t a = ends[i].local, b = ends[i + 1].local;
-          const V3& na = unit[cornerPolygon[corners[cb + a]]];
-          const V3& nb = unit[cornerPolygon[corners[cb + b]]];
-          const bool crease = DotV(na, nb) < cosFeature || isFeature(v, w);
+          const int64_t pa = cornerPolygon[corners[cb + a]], pb = cornerPolygon[corners[cb + b]];
+          // cos(dihedral) < cosFeature, without dividing: a.b < cos |a||b|.
+          const bool crease = DotV(area[pa], area[pb]) < cosFeature * areaLength[pa] * areaLength[pb] ||
+            isFeature(v, w);
           if (crease)
           {
             r.creaseEdges += countHere;
@@ -318,7 +328,7 @@ NormalResult ComputeVertexNormals(const PolygonMesh& m, const NormalOptions& opt
     // One output point per group of corners; the first group keeps v.
     groupOf.assign(static_cast<size_t>(count), -1);
     int32_t groups = 0;
-    std::vector<int64_t> groupPoint;
+    groupPoint.clear();
     for (int32_t i = 0; i < count; ++i)
     {
       const int32_t root = find(i);

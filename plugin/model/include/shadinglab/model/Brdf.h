@@ -40,7 +40,7 @@ T ClampRoughness(T m)
  * one shading equation I = Ra Ia + sum I_L (N.L) dw f serves all models.
  */
 template <typename T>
-T Fs_Phong(T RoV, T shininess)
+SL_INLINE T Fs_Phong(T RoV, T shininess)
 {
   if (!(RoV > T(0)))
   {
@@ -55,7 +55,7 @@ T Fs_Phong(T RoV, T shininess)
  * Real-Time Rendering 3rd ed., eq. 7.49), see Fs_Phong for why.
  */
 template <typename T>
-T Fs_BlinnPhong(T NoH, T shininess)
+SL_INLINE T Fs_BlinnPhong(T NoH, T shininess)
 {
   if (!(NoH > T(0)))
   {
@@ -73,7 +73,7 @@ T Fs_BlinnPhong(T NoH, T shininess)
  * @param m RMS slope, clamped to [kMinRoughness, kMaxRoughness].
  */
 template <typename T>
-T D_Beckmann(T NoH, T m)
+SL_INLINE T D_Beckmann(T NoH, T m)
 {
   if (!(NoH > T(0)))
   {
@@ -107,7 +107,7 @@ struct BeckmannLobe
  * Material validation enforces it.
  */
 template <typename T>
-T D_BeckmannMixture(T NoH, const BeckmannLobe<T>* lobes, int count)
+SL_INLINE T D_BeckmannMixture(T NoH, const BeckmannLobe<T>* lobes, int count)
 {
   T D = T(0);
   for (int k = 0; k < count; ++k)
@@ -124,7 +124,7 @@ T D_BeckmannMixture(T NoH, const BeckmannLobe<T>* lobes, int count)
  * V.H -> 0 sends both ratios to +infinity: G = 1 is the limit.
  */
 template <typename T>
-T G_CookTorrance(T NoH, T NoV, T NoL, T VoH)
+SL_INLINE T G_CookTorrance(T NoH, T NoV, T NoL, T VoH)
 {
   if (!(NoL > T(0)) || !(NoV > T(0)) || !(NoH > T(0)))
   {
@@ -158,7 +158,7 @@ enum class SpecularVariant
  * Denominators are clamped to kMinCosTheta.
  */
 template <typename T>
-T Fs_CookTorrance(T F, T D, T G, T NoL, T NoV, SpecularVariant variant)
+SL_INLINE T Fs_CookTorrance(T F, T D, T G, T NoL, T NoV, SpecularVariant variant)
 {
   if (!(NoL > T(0)) || !(NoV > T(0)))
   {
@@ -174,7 +174,7 @@ T Fs_CookTorrance(T F, T D, T G, T NoL, T NoV, SpecularVariant variant)
  * direction; see kMinHalfVectorLength for why N is then the right fallback.
  */
 template <typename T>
-Vec3<T> HalfVector(const Vec3<T>& L, const Vec3<T>& V, const Vec3<T>& N)
+SL_INLINE Vec3<T> HalfVector(const Vec3<T>& L, const Vec3<T>& V, const Vec3<T>& N)
 {
   const Vec3<T> sum = L + V;
   const T lengthSq = Dot(sum, sum);

@@ -35,7 +35,7 @@ namespace shadinglab
  *   would be 0/0 at grazing incidence).
  */
 template <typename T>
-T F_Dielectric(T cosTheta_i, T eta)
+SL_INLINE T F_Dielectric(T cosTheta_i, T eta)
 {
   if (eta == T(1))
   {
@@ -118,7 +118,7 @@ T F0_Conductor(T eta, T k)
 
 /// Per-channel Fresnel (RGB): conductor when any k > 0, dielectric otherwise.
 template <typename T>
-Vec3<T> F_RGB(T cosTheta_i, const Vec3<T>& eta, const Vec3<T>& k)
+SL_INLINE Vec3<T> F_RGB(T cosTheta_i, const Vec3<T>& eta, const Vec3<T>& k)
 {
   return { F_Conductor(cosTheta_i, eta.x, k.x), F_Conductor(cosTheta_i, eta.y, k.y),
     F_Conductor(cosTheta_i, eta.z, k.z) };

@@ -149,7 +149,7 @@ struct Lighting
 /// Direction to the light from P and the irradiance factor I_L dw
 /// (attenuated for point lights). Returns false when the light is at P.
 template <typename T>
-bool LightIncidence(const Light<T>& light, const Vec3<T>& P, Vec3<T>& L, Vec3<T>& irradiance)
+SL_INLINE bool LightIncidence(const Light<T>& light, const Vec3<T>& P, Vec3<T>& L, Vec3<T>& irradiance)
 {
   if (light.type == LightType::Directional)
   {
@@ -177,7 +177,7 @@ bool LightIncidence(const Light<T>& light, const Vec3<T>& P, Vec3<T>& L, Vec3<T>
  * N, L, V unit, pointing away from the surface.
  */
 template <typename T>
-Vec3<T> EvaluateBrdf(
+SL_INLINE Vec3<T> EvaluateBrdf(
   const Material<T>& material, const Vec3<T>& diffuseColor, const Vec3<T>& N, const Vec3<T>& L,
   const Vec3<T>& V)
 {
@@ -226,7 +226,7 @@ Vec3<T> EvaluateBrdf(
  *   the viewer. Returns linear RGB, finite for finite input.
  */
 template <typename T>
-Vec3<T> Shade(
+SL_INLINE Vec3<T> Shade(
   const Material<T>& material, const Lighting<T>& lighting, const Vec3<T>& diffuseColor,
   const Vec3<T>& P, const Vec3<T>& N, const Vec3<T>& V)
 {

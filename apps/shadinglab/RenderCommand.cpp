@@ -3,6 +3,7 @@
 #include "Commands.h"
 
 #include "MeshIO.h"
+#include "GpuRenderer.h"
 #include "MeshPipeline.h"
 #include "PolyDataMesh.h"
 #include "shadinglab/cpu/SoftwareRenderer.h"
@@ -17,6 +18,7 @@
 #include <vtkUnsignedCharArray.h>
 #include <vtkPointData.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -37,7 +39,7 @@ const char* kRenderHelp =
   "  --size WxH          image size (default 1024x768)\n"
   "  --out FILE.png      output image (default out.png)\n"
   "  --backend B         cpu | gpu | auto (default auto: gpu when an X display with\n"
-  "                      OpenGL >= 3.2 exists, cpu otherwise)\n"
+  "                      OpenGL >= 3.2 exists, cpu otherwise, said on stderr)\n"
   "  --interp I          perspective (perspective-correct, default) | screen (linear in\n"
   "                      screen space, as the lecture: shows perspective distortion)\n"
   "  --polygons P        triangulate (default) | direct (scan-convert polygons as such:\n"
@@ -118,6 +120,7 @@ struct Scene
   }
   Arguments args;
   bool helpShown = false;
+  vtkSmartPointer<vtkPolyData> polydata;
   std::string input;
   std::string backend;
   cpu::Mesh mesh;
@@ -253,11 +256,7 @@ Scene SceneFromArguments(int argc, char** argv, const char* help, bool compare)
   scene.material = MaterialFromArguments(args, true);
 
   const std::string& backend = scene.backend = args.Get("backend", "auto");
-  if (backend == "gpu")
-  {
-    throw UsageError("--backend gpu: the GPU mapper is not built yet; use --backend cpu");
-  }
-  if (backend != "cpu" && backend != "auto")
+  if (backend != "cpu" && backend != "auto" && backend != "gpu")
   {
     throw UsageError("unknown --backend '" + backend + "' (expected auto, cpu or gpu)");
   }
@@ -278,6 +277,7 @@ Scene SceneFromArguments(int argc, char** argv, const char* help, bool compare)
     MeshPipelineReport report;
     polydata = RunMeshPipeline(polydata, MeshPipelineFromArguments(args, false), report);
   }
+  scene.polydata = polydata;
   scene.mesh = cpu::MeshFromPolyData(polydata);
   const cpu::Mesh& mesh = scene.mesh;
 
@@ -383,14 +383,54 @@ int RunRender(int argc, char** argv)
   const std::string& input = scene.input;
   const std::string& backend = scene.backend;
   const cpu::DisplayTransform display = scene.display;
+  // GPU when asked or (auto) when an X display with OpenGL >= 3.2 answers.
+  bool useGpu = false;
+  if (backend != "cpu")
+  {
+    std::string why;
+    useGpu = gl::GpuAvailable(why);
+    if (!useGpu && backend == "gpu")
+    {
+      throw UsageError("--backend gpu: " + why);
+    }
+    if (!useGpu)
+    {
+      std::cerr << "shadinglab render: backend auto: " << why << "; using the CPU renderer\n";
+    }
+  }
   cpu::RenderStats stats;
   cpu::Image image;
   try
   {
-    image = cpu::Render(scene.mesh, scene.camera, scene.lighting.Cast<float>(),
-      scene.material.Cast<float>(), options, &stats);
+    if (useGpu)
+    {
+      if (options.mode == cpu::ShadingMode::FastPhong &&
+        scene.material.model == ReflectanceModel::CookTorrance)
+      {
+        throw std::invalid_argument("fast-phong evaluates (N.L) and (N.H)^n quadratics: use a "
+                                    "lambert, phong or blinn-phong material");
+      }
+      const auto start = std::chrono::steady_clock::now();
+      image = gl::RenderGpu(scene.polydata, scene.camera, scene.lighting, scene.material, options);
+      stats.milliseconds = std::chrono::duration<double, std::milli>(
+        std::chrono::steady_clock::now() - start).count();
+      stats.polygons = scene.polydata->GetNumberOfPolys();
+      for (uint8_t c : image.covered)
+      {
+        stats.pixelsCovered += c;
+      }
+    }
+    else
+    {
+      image = cpu::Render(scene.mesh, scene.camera, scene.lighting.Cast<float>(),
+        scene.material.Cast<float>(), options, &stats);
+    }
   }
   catch (const std::invalid_argument& e)
+  {
+    throw UsageError(e.what());
+  }
+  catch (const std::runtime_error& e)
   {
     throw UsageError(e.what());
   }
@@ -401,18 +441,15 @@ int RunRender(int argc, char** argv)
   }
   const std::string out = args.Get("out", "out.png");
   WritePng(image, image.ToRGB8(display), out);
-  if (backend == "auto")
-  {
-    std::cerr << "shadinglab render: backend auto: used the CPU renderer\n";
-  }
+
   if (args.Has("stats"))
   {
-    std::printf("{\"backend\":\"cpu\",\"mode\":\"%s\",\"width\":%d,\"height\":%d,\"ssaa\":%d,"
+    std::printf("{\"backend\":\"%s\",\"mode\":\"%s\",\"width\":%d,\"height\":%d,\"ssaa\":%d,"
                 "\"milliseconds\":%.3f,\"polygons\":%lld,\"triangles\":%lld,\"rasterized\":%lld,"
                 "\"clipped\":%lld,\"degenerate\":%lld,\"pixels_covered\":%lld,"
                 "\"pixels_shaded\":%lld,\"fast_phong_exact\":%lld,\"threads\":%d,"
                 "\"normals_computed\":%s}\n",
-      cpu::ModeName(options.mode), options.width, options.height, options.ssaa,
+      useGpu ? "gpu" : "cpu", cpu::ModeName(options.mode), options.width, options.height, options.ssaa,
       stats.milliseconds, static_cast<long long>(stats.polygons),
       static_cast<long long>(stats.triangles), static_cast<long long>(stats.rasterized),
       static_cast<long long>(stats.clipped), static_cast<long long>(stats.degenerate),

@@ -1,0 +1,180 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "GpuRenderer.h"
+
+#include "vtkShadingLabPolyDataMapper.h"
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkFloatArray.h>
+#include <vtkImageData.h>
+#include <vtkLight.h>
+#include <vtkNew.h>
+#include <vtkOpenGLRenderWindow.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkProperty.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkWindowToImageFilter.h>
+
+#include <X11/Xlib.h>
+
+#include <cstdlib>
+#include <stdexcept>
+
+namespace shadinglab::gl
+{
+
+bool GpuAvailable(std::string& why)
+{
+  const char* display = std::getenv("DISPLAY");
+  if (!display || !*display)
+  {
+    why = "no DISPLAY (this VTK is built for X only)";
+    return false;
+  }
+  Display* dpy = XOpenDisplay(nullptr);
+  if (!dpy)
+  {
+    why = std::string("cannot open X display '") + display + "'";
+    return false;
+  }
+  XCloseDisplay(dpy);
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetSize(8, 8);
+  if (!window->SupportsOpenGL())
+  {
+    why = "the X display has no OpenGL >= 3.2";
+    return false;
+  }
+  return true;
+}
+
+cpu::Image RenderGpu(vtkPolyData* mesh, const cpu::Camera& cam, const Lighting<double>& lighting,
+  const Material<double>& material, const cpu::RenderOptions& options, int* shaderBuilds)
+{
+  const int ssaa = options.ssaa;
+  const int W = options.width * ssaa, H = options.height * ssaa;
+  vtkNew<vtkShadingLabPolyDataMapper> mapper;
+  mapper->SetInputData(mesh);
+  mapper->SetShadingMode(static_cast<int>(options.mode));
+  mapper->SetPerspectiveCorrect(options.interpolation == cpu::InterpolationSpace::Perspective);
+  mapper->SetMaterial(material);
+  mapper->ScalarVisibilityOn();
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  vtkProperty* prop = actor->GetProperty();
+  prop->SetDiffuse(1.0);
+  prop->SetDiffuseColor(material.diffuseColor.x, material.diffuseColor.y, material.diffuseColor.z);
+  prop->SetAmbient(0.0);
+  prop->SetSpecular(0.0);
+  prop->SetBackfaceCulling(options.cullBackFaces);
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddActor(actor);
+  renderer->SetBackground(options.background.x, options.background.y, options.background.z);
+  renderer->SetAmbient(lighting.ambientIntensity.x, lighting.ambientIntensity.y,
+    lighting.ambientIntensity.z);
+  renderer->AutomaticLightCreationOff();
+  for (int j = 0; j < lighting.lightCount; ++j)
+  {
+    const Light<double>& l = lighting.lights[j];
+    vtkNew<vtkLight> light;
+    light->SetLightTypeToSceneLight();
+    light->SetIntensity(1.0);
+    // The mapper multiplies by the model's solid angle pi; scale other dw.
+    const double s = l.solidAngle / kPi<double>;
+    light->SetDiffuseColor(l.intensity.x * s, l.intensity.y * s, l.intensity.z * s);
+    if (l.type == LightType::Directional)
+    {
+      light->SetPositional(false);
+      light->SetPosition(l.vector.x, l.vector.y, l.vector.z);
+      light->SetFocalPoint(0, 0, 0);
+    }
+    else
+    {
+      light->SetPositional(true);
+      light->SetPosition(l.vector.x, l.vector.y, l.vector.z);
+      light->SetFocalPoint(l.vector.x, l.vector.y, l.vector.z - 1.0);
+      light->SetConeAngle(180.0);
+      light->SetAttenuationValues(l.attenuation.x, l.attenuation.y, l.attenuation.z);
+    }
+    renderer->AddLight(light);
+  }
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetPosition(cam.position.x, cam.position.y, cam.position.z);
+  camera->SetFocalPoint(cam.focalPoint.x, cam.focalPoint.y, cam.focalPoint.z);
+  camera->SetViewUp(cam.viewUp.x, cam.viewUp.y, cam.viewUp.z);
+  camera->SetViewAngle(cam.viewAngle);
+  camera->SetParallelProjection(cam.parallel);
+  camera->SetParallelScale(cam.parallelScale);
+  camera->SetClippingRange(cam.nearClip, cam.farClip);
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetMultiSamples(0);
+  window->SetSize(W, H);
+  window->AddRenderer(renderer);
+  window->Render();
+  if (mapper->GetFailedSubstitutionCount() > 0)
+  {
+    throw std::runtime_error("GPU shader substitution failed (see log)");
+  }
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->SetInputBufferTypeToRGB();
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  vtkNew<vtkWindowToImageFilter> depthGrab;
+  depthGrab->SetInput(window);
+  depthGrab->SetInputBufferTypeToZBuffer();
+  depthGrab->ReadFrontBufferOff();
+  depthGrab->Update();
+  vtkImageData* rgbImage = grab->GetOutput();
+  auto* pixels = vtkUnsignedCharArray::SafeDownCast(rgbImage->GetPointData()->GetScalars());
+  auto* depth = vtkFloatArray::SafeDownCast(depthGrab->GetOutput()->GetPointData()->GetScalars());
+  if (!pixels || !depth)
+  {
+    throw std::runtime_error("GPU read-back failed");
+  }
+  if (shaderBuilds)
+  {
+    *shaderBuilds = mapper->GetShaderBuildCount();
+  }
+  cpu::Image image;
+  image.width = options.width;
+  image.height = options.height;
+  image.rgb.assign(static_cast<size_t>(image.width) * image.height * 3, 0.0f);
+  image.covered.assign(static_cast<size_t>(image.width) * image.height, 0);
+  const float norm = 1.0f / (255.0f * ssaa * ssaa);
+  for (int y = 0; y < image.height; ++y)
+  {
+    for (int x = 0; x < image.width; ++x)
+    {
+      float sum[3] = { 0, 0, 0 };
+      uint8_t any = 0;
+      for (int sy = 0; sy < ssaa; ++sy)
+      {
+        for (int sx = 0; sx < ssaa; ++sx)
+        {
+          // VTK rows start at the bottom.
+          const vtkIdType i = static_cast<vtkIdType>(H - 1 - (y * ssaa + sy)) * W + (x * ssaa + sx);
+          for (int c = 0; c < 3; ++c)
+          {
+            sum[c] += pixels->GetTypedComponent(i, c);
+          }
+          any |= depth->GetValue(i) < 1.0f;
+        }
+      }
+      const size_t o = static_cast<size_t>(y) * image.width + x;
+      for (int c = 0; c < 3; ++c)
+      {
+        image.rgb[3 * o + c] = sum[c] * norm;
+      }
+      image.covered[o] = any;
+    }
+  }
+  return image;
+}
+
+} // namespace shadinglab::gl

@@ -1,0 +1,174 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// BRDF terms of the shading model: the GLSL twin of
+// plugin/model/include/shadinglab/model/{Constants,Fresnel,Brdf}.h. Same
+// names, same guards, same constants; the CPU/GPU parity test keeps them
+// together. Directions are unit vectors pointing away from the surface.
+
+#define SL_PI 3.14159265358979
+#define SL_INV_PI 0.318309886183791
+// Constants.h: kMinCosTheta, kMinRoughness, kMaxRoughness, kMinCos4Alpha,
+// kMinHalfVectorLength, kMinVoH (derivations there).
+#define SL_MIN_COS_THETA 1e-4
+#define SL_MIN_ROUGHNESS 1e-3
+#define SL_MAX_ROUGHNESS 1e3
+#define SL_MIN_COS4_ALPHA 1e-16
+#define SL_MIN_HALF_VECTOR_LENGTH 1e-6
+#define SL_MIN_VOH 1e-7
+#define SL_MAX_LOBES 4
+
+// Lambert 1760; lecture slide 12: Rd = 1/pi.
+float Fd_Lambert()
+{
+  return SL_INV_PI;
+}
+
+// Phong 1975, (R.V)^n, normalized by (n+2)/(2 pi) (Lewis 1994).
+float Fs_Phong(float RoV, float shininess)
+{
+  if (!(RoV > 0.0))
+  {
+    return 0.0;
+  }
+  return (shininess + 2.0) * (0.5 * SL_INV_PI) * pow(min(RoV, 1.0), shininess);
+}
+
+// Blinn 1977, (N.H)^n, normalized by (n+8)/(8 pi).
+float Fs_BlinnPhong(float NoH, float shininess)
+{
+  if (!(NoH > 0.0))
+  {
+    return 0.0;
+  }
+  return (shininess + 8.0) * (0.125 * SL_INV_PI) * pow(min(NoH, 1.0), shininess);
+}
+
+// Beckmann distribution, Cook & Torrance 1982 (slide 14), without 1/pi.
+float D_Beckmann(float NoH, float m)
+{
+  if (!(NoH > 0.0))
+  {
+    return 0.0;
+  }
+  NoH = min(NoH, 1.0);
+  m = clamp(m, SL_MIN_ROUGHNESS, SL_MAX_ROUGHNESS);
+  float cos2Alpha = NoH * NoH;
+  float cos4Alpha = cos2Alpha * cos2Alpha;
+  if (cos4Alpha < SL_MIN_COS4_ALPHA)
+  {
+    return 0.0;
+  }
+  float tan2Alpha = (1.0 - cos2Alpha) / cos2Alpha;
+  float m2 = m * m;
+  return exp(-tan2Alpha / m2) / (m2 * cos4Alpha);
+}
+
+// D = sum_k w_k D(m_k) (slide 14).
+float D_BeckmannMixture(float NoH, float weights[SL_MAX_LOBES], float ms[SL_MAX_LOBES], int count)
+{
+  float D = 0.0;
+  for (int k = 0; k < SL_MAX_LOBES; ++k)
+  {
+    if (k < count)
+    {
+      D += weights[k] * D_Beckmann(NoH, ms[k]);
+    }
+  }
+  return D;
+}
+
+// Torrance & Sparrow 1967 V-groove attenuation (slide 16).
+float G_CookTorrance(float NoH, float NoV, float NoL, float VoH)
+{
+  if (!(NoL > 0.0) || !(NoV > 0.0) || !(NoH > 0.0))
+  {
+    return 0.0;
+  }
+  if (VoH < SL_MIN_VOH)
+  {
+    return 1.0;
+  }
+  float Gs = 2.0 * NoH * NoL / VoH;
+  float Gm = 2.0 * NoH * NoV / VoH;
+  return min(1.0, min(Gs, Gm));
+}
+
+// Cook & Torrance 1982 unpolarized Fresnel (slide 15), cosine form (finite
+// at normal incidence; equal in value to the slide's form).
+float F_Dielectric(float cosTheta_i, float eta)
+{
+  if (eta == 1.0)
+  {
+    return 0.0;
+  }
+  cosTheta_i = clamp(cosTheta_i, 0.0, 1.0);
+  float sin2Theta_i = max(0.0, 1.0 - cosTheta_i * cosTheta_i);
+  float sin2Theta_t = sin2Theta_i / (eta * eta);
+  // Handle total internal reflection case
+  if (sin2Theta_t >= 1.0)
+  {
+    return 1.0;
+  }
+  float cosTheta_t = sqrt(1.0 - sin2Theta_t);
+  float rs = (cosTheta_i - eta * cosTheta_t) / (cosTheta_i + eta * cosTheta_t);
+  float rp = (eta * cosTheta_i - cosTheta_t) / (eta * cosTheta_i + cosTheta_t);
+  return 0.5 * (rs * rs + rp * rp);
+}
+
+// Complex arithmetic for the conductor Fresnel (vec2 = re, im).
+vec2 sl_cmul(vec2 a, vec2 b) { return vec2(a.x * b.x - a.y * b.y, a.x * b.y + a.y * b.x); }
+vec2 sl_cdiv(vec2 a, vec2 b) { return sl_cmul(a, vec2(b.x, -b.y)) / dot(b, b); }
+vec2 sl_csqrt(vec2 z)
+{
+  float r = length(z);
+  float re = sqrt(max(0.0, 0.5 * (r + z.x)));
+  float im = sqrt(max(0.0, 0.5 * (r - z.x)));
+  return vec2(re, z.y < 0.0 ? -im : im);
+}
+
+// Exact Fresnel of a conductor with complex index eta + i k (Born & Wolf
+// sec. 14.2; pbrt-v4 FrComplex).
+float F_Conductor(float cosTheta_i, float eta, float k)
+{
+  if (k == 0.0)
+  {
+    return F_Dielectric(cosTheta_i, eta);
+  }
+  cosTheta_i = clamp(cosTheta_i, 0.0, 1.0);
+  vec2 n = vec2(eta, k);
+  float sin2Theta_i = max(0.0, 1.0 - cosTheta_i * cosTheta_i);
+  vec2 sin2Theta_t = sl_cdiv(vec2(sin2Theta_i, 0.0), sl_cmul(n, n));
+  vec2 cosTheta_t = sl_csqrt(vec2(1.0, 0.0) - sin2Theta_t);
+  vec2 ci = vec2(cosTheta_i, 0.0);
+  vec2 rs = sl_cdiv(ci - sl_cmul(n, cosTheta_t), ci + sl_cmul(n, cosTheta_t));
+  vec2 rp = sl_cdiv(sl_cmul(n, ci) - cosTheta_t, sl_cmul(n, ci) + cosTheta_t);
+  return 0.5 * (dot(rs, rs) + dot(rp, rp));
+}
+
+vec3 F_RGB(float cosTheta_i, vec3 eta, vec3 k)
+{
+  return vec3(F_Conductor(cosTheta_i, eta.x, k.x), F_Conductor(cosTheta_i, eta.y, k.y),
+    F_Conductor(cosTheta_i, eta.z, k.z));
+}
+
+// Rs of Cook & Torrance 1982 (jacobian 1) or Walter et al. 2007 (jacobian 4).
+float Fs_CookTorrance(float F, float D, float G, float NoL, float NoV, float jacobian)
+{
+  if (!(NoL > 0.0) || !(NoV > 0.0))
+  {
+    return 0.0;
+  }
+  float denominator = max(NoL, SL_MIN_COS_THETA) * max(NoV, SL_MIN_COS_THETA);
+  return F * D * G * SL_INV_PI / (jacobian * denominator);
+}
+
+// Blinn 1977 half vector; N when L = -V (see Constants.h).
+vec3 HalfVector(vec3 L, vec3 V, vec3 N)
+{
+  vec3 s = L + V;
+  float lengthSq = dot(s, s);
+  if (!(lengthSq >= SL_MIN_HALF_VECTOR_LENGTH * SL_MIN_HALF_VECTOR_LENGTH))
+  {
+    return N;
+  }
+  return s * inversesqrt(lengthSq);
+}

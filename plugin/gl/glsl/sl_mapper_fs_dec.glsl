@@ -1,0 +1,14 @@
+// ShadingLab fragment-shader declarations (vtkShadingLabPolyDataMapper).
+uniform int slCameraParallel;
+uniform float slInvDiffuseIntensity;
+#if SL_MODE == 1
+SL_INTERP in vec3 slGouraudFrontVSOut;
+SL_INTERP in vec3 slGouraudBackVSOut;
+#endif
+#if SL_MODE == 0 || SL_MODE == 3
+flat in vec4 slProvokingVCVSOut;
+#endif
+#if SL_MODE == 3
+noperspective in vec3 slNormalVCVSOut;
+flat in vec2 slProvokingXYVSOut;
+#endif

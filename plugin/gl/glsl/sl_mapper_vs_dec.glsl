@@ -1,0 +1,15 @@
+// ShadingLab vertex-shader declarations (vtkShadingLabPolyDataMapper).
+uniform int slCameraParallel;
+uniform vec3 slDiffuseColor;
+uniform vec4 slViewport; // x, y, width, height of the viewport in pixels
+#if SL_MODE == 1
+SL_INTERP out vec3 slGouraudFrontVSOut;
+SL_INTERP out vec3 slGouraudBackVSOut;
+#endif
+#if SL_MODE == 0 || SL_MODE == 3
+flat out vec4 slProvokingVCVSOut;
+#endif
+#if SL_MODE == 3
+noperspective out vec3 slNormalVCVSOut;
+flat out vec2 slProvokingXYVSOut;
+#endif

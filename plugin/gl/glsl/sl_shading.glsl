@@ -1,0 +1,107 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The illumination model of lecture slide 11 (GLSL twin of Shading.h):
+//   I_r = Ra Ia + sum_j I_Lj (N.Lj) dw_j (kd Rd + ks Rs).
+// Variants are compile-time #defines set by vtkShadingLabPolyDataMapper, so
+// a scene pays only for what it uses:
+//   SL_MODEL        0 Lambert, 1 Phong, 2 Blinn-Phong, 3 Cook-Torrance
+//   SL_LIGHT_COUNT  number of lights (1..8)
+//   SL_POINT_LIGHTS 1 when any light is positional
+//   SL_SPECULAR     0 drops the specular term (ks = 0)
+//   SL_LOBE_COUNT   Beckmann mixture size (1..4)
+//   SL_CONDUCTOR    1 when any k > 0 (complex-index Fresnel)
+
+#define SL_MAX_LIGHTS 8
+
+uniform vec4 slLightVectorVC[SL_MAX_LIGHTS];   // xyz; w = 0 direction to light, 1 position
+uniform vec3 slLightIrradiance[SL_MAX_LIGHTS]; // I_L dw
+uniform vec3 slLightAttenuation[SL_MAX_LIGHTS];
+uniform vec3 slAmbient;                        // Ra Ia
+uniform vec3 slSpecularColor;
+uniform float slKd;
+uniform float slKs;
+uniform float slShininess;
+uniform float slLobeWeight[SL_MAX_LOBES];
+uniform float slLobeM[SL_MAX_LOBES];
+uniform vec3 slEta;
+uniform vec3 slK;
+uniform float slJacobian;
+
+// Direction to the light and its irradiance factor at P (view coordinates).
+bool LightIncidence(int j, vec3 P, out vec3 L, out vec3 irradiance)
+{
+  vec4 lv = slLightVectorVC[j];
+#if SL_POINT_LIGHTS
+  if (lv.w == 0.0)
+#endif
+  {
+    L = normalize(lv.xyz);
+    irradiance = slLightIrradiance[j];
+    return true;
+  }
+#if SL_POINT_LIGHTS
+  vec3 toLight = lv.xyz - P;
+  float d = length(toLight);
+  if (!(d > 0.0))
+  {
+    return false;
+  }
+  L = toLight / d;
+  vec3 a = slLightAttenuation[j];
+  irradiance = slLightIrradiance[j] / max(a.x + a.y * d + a.z * d * d, 1e-30);
+  return true;
+#endif
+}
+
+// kd Rd + ks Rs (slide 12) for one pair of directions.
+vec3 EvaluateBrdf(vec3 diffuseColor, vec3 N, vec3 L, vec3 V)
+{
+  float NoL = dot(N, L);
+  float NoV = dot(N, V);
+  if (!(NoL > 0.0) || !(NoV > 0.0))
+  {
+    return vec3(0.0);
+  }
+  vec3 diffuse = diffuseColor * (slKd * Fd_Lambert());
+#if SL_MODEL == 0 || !SL_SPECULAR
+  return diffuse;
+#elif SL_MODEL == 1
+  float RoV = dot(N * (2.0 * NoL) - L, V);
+  return diffuse + slSpecularColor * (slKs * Fs_Phong(RoV, slShininess));
+#elif SL_MODEL == 2
+  float NoH = dot(N, HalfVector(L, V, N));
+  return diffuse + slSpecularColor * (slKs * Fs_BlinnPhong(NoH, slShininess));
+#else
+  vec3 H = HalfVector(L, V, N);
+  float NoH = dot(N, H);
+  float VoH = max(dot(V, H), 0.0);
+  float D = D_BeckmannMixture(NoH, slLobeWeight, slLobeM, SL_LOBE_COUNT);
+  float G = G_CookTorrance(NoH, NoV, NoL, VoH);
+#if SL_CONDUCTOR
+  vec3 F = F_RGB(VoH, slEta, slK);
+#else
+  vec3 F = vec3(F_Dielectric(VoH, slEta.x), F_Dielectric(VoH, slEta.y), F_Dielectric(VoH, slEta.z));
+#endif
+  float DG = Fs_CookTorrance(1.0, D, G, NoL, NoV, slJacobian);
+  return diffuse + F * (slKs * DG);
+#endif
+}
+
+vec3 Shade(vec3 diffuseColor, vec3 P, vec3 N, vec3 V)
+{
+  vec3 result = slAmbient;
+  for (int j = 0; j < SL_LIGHT_COUNT; ++j)
+  {
+    vec3 L, irradiance;
+    if (!LightIncidence(j, P, L, irradiance))
+    {
+      continue;
+    }
+    float NoL = dot(N, L);
+    if (!(NoL > 0.0))
+    {
+      continue;
+    }
+    result += irradiance * EvaluateBrdf(diffuseColor, N, L, V) * NoL;
+  }
+  return result;
+}

@@ -1,0 +1,56 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @class   vtkShadingLabCompositePolyDataMapper
+ * @brief   multiblock input rendered block by block with vtkShadingLabPolyDataMapper
+ *
+ * A vtkCompositePolyDataMapper whose per-block mappers are
+ * vtkShadingLabPolyDataMapper instances carrying this mapper's mode,
+ * interpolation space and material. It holds the properties only; the GLSL
+ * work lives in the delegate (ParaView's advice for composite mappers).
+ */
+#ifndef vtkShadingLabCompositePolyDataMapper_h
+#define vtkShadingLabCompositePolyDataMapper_h
+
+#include "shadinglab/model/Shading.h"
+
+#include <vtkCompositePolyDataMapper.h>
+#include <vtkWeakPointer.h>
+
+#include <vector>
+
+class vtkShadingLabPolyDataMapper;
+
+class vtkShadingLabCompositePolyDataMapper : public vtkCompositePolyDataMapper
+{
+public:
+  static vtkShadingLabCompositePolyDataMapper* New();
+  vtkTypeMacro(vtkShadingLabCompositePolyDataMapper, vtkCompositePolyDataMapper);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  vtkSetClampMacro(ShadingMode, int, 0, 4);
+  vtkGetMacro(ShadingMode, int);
+  vtkSetMacro(PerspectiveCorrect, bool);
+  vtkGetMacro(PerspectiveCorrect, bool);
+  void SetMaterial(const shadinglab::Material<double>& material);
+
+  /// Sum of the block mappers' shader builds.
+  int GetShaderBuildCount();
+
+protected:
+  vtkShadingLabCompositePolyDataMapper() = default;
+  ~vtkShadingLabCompositePolyDataMapper() override = default;
+  vtkPolyDataMapper* MakeAMapper() override;
+  void Render(vtkRenderer* ren, vtkActor* act) override;
+
+  int ShadingMode = 2;
+  bool PerspectiveCorrect = true;
+  shadinglab::Material<double> Material;
+  /// The block mappers made so far (the superclass owns them; weak here).
+  std::vector<vtkWeakPointer<vtkShadingLabPolyDataMapper>> BlockMappers;
+
+private:
+  vtkShadingLabCompositePolyDataMapper(const vtkShadingLabCompositePolyDataMapper&) = delete;
+  void operator=(const vtkShadingLabCompositePolyDataMapper&) = delete;
+};
+
+#endif

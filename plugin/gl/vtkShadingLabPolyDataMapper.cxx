@@ -1,0 +1,373 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "vtkShadingLabPolyDataMapper.h"
+
+#include "VertexNormals.h"
+#include "shadinglab_glsl.h"
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkCellArray.h>
+#include <vtkFloatArray.h>
+#include <vtkLight.h>
+#include <vtkLightCollection.h>
+#include <vtkMatrix4x4.h>
+#include <vtkObjectFactory.h>
+#include <vtkOpenGLHelper.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkProperty.h>
+#include <vtkRenderer.h>
+#include <vtkShader.h>
+#include <vtkShaderProgram.h>
+#include <vtkSmartPointer.h>
+#include <vtkTypeInt64Array.h>
+
+#include <cstdlib>
+#include <cstring>
+#include <functional>
+#include <iostream>
+#include <map>
+#include <sstream>
+#include <vector>
+
+namespace sl = shadinglab;
+
+struct vtkShadingLabPolyDataMapper::Internals
+{
+  sl::Material<double> Material;
+  // Input prepared for the mode: normals stripped (flat) or computed.
+  vtkSmartPointer<vtkPolyData> Prepared;
+  vtkMTimeType PreparedFrom = 0;
+  vtkPolyData* PreparedInput = nullptr;
+  int PreparedKind = -1;
+  std::map<const vtkOpenGLHelper*, std::string> BuiltVariant;
+  std::map<const vtkShaderProgram*, std::vector<float>> LastUniforms;
+};
+
+vtkStandardNewMacro(vtkShadingLabPolyDataMapper);
+
+vtkShadingLabPolyDataMapper::vtkShadingLabPolyDataMapper()
+  : Internal(new Internals)
+{
+  this->Internal->Material.model = sl::ReflectanceModel::BlinnPhong;
+}
+
+vtkShadingLabPolyDataMapper::~vtkShadingLabPolyDataMapper() = default;
+
+void vtkShadingLabPolyDataMapper::SetMaterial(const sl::Material<double>& material)
+{
+  // Only a variant change needs new shaders: mark the mapper modified then.
+  // Other changes reach the GPU through the uniform comparison.
+  const sl::Material<double> old = this->Internal->Material;
+  this->Internal->Material = material;
+  auto key = [](const sl::Material<double>& m) {
+    return std::to_string(static_cast<int>(m.model)) + "/" + std::to_string(m.ks > 0) + "/" +
+      std::to_string(m.lobeCount) + "/" + std::to_string(m.IsConductor());
+  };
+  if (key(old) != key(material))
+  {
+    this->Modified();
+  }
+}
+
+const sl::Material<double>& vtkShadingLabPolyDataMapper::GetMaterial() const
+{
+  return this->Internal->Material;
+}
+
+std::string vtkShadingLabPolyDataMapper::Variant(vtkRenderer* ren) const
+{
+  const sl::Material<double>& m = this->Internal->Material;
+  int model = static_cast<int>(m.model);
+  if (this->ShadingMode == COOK_TORRANCE)
+  {
+    model = static_cast<int>(sl::ReflectanceModel::CookTorrance);
+  }
+  if (this->ShadingMode == FAST_PHONG && model == static_cast<int>(sl::ReflectanceModel::CookTorrance))
+  {
+    model = static_cast<int>(sl::ReflectanceModel::BlinnPhong);
+  }
+  int lights = 0;
+  bool point = false;
+  vtkLightCollection* collection = ren->GetLights();
+  vtkCollectionSimpleIterator it;
+  collection->InitTraversal(it);
+  while (vtkLight* light = collection->GetNextLight(it))
+  {
+    if (light->GetSwitch() && lights < sl::kMaxLights)
+    {
+      ++lights;
+      point |= light->GetPositional() != 0;
+    }
+  }
+  const bool specular = model != 0 && m.ks > 0;
+  std::ostringstream v;
+  v << "#define SL_MODE " << this->ShadingMode << "\n"
+    << "#define SL_MODEL " << model << "\n"
+    << "#define SL_LIGHT_COUNT " << lights << "\n"
+    << "#define SL_POINT_LIGHTS " << (point ? 1 : 0) << "\n"
+    << "#define SL_SPECULAR " << (specular ? 1 : 0) << "\n"
+    << "#define SL_LOBE_COUNT " << std::max(1, std::min(m.lobeCount, sl::kMaxLobes)) << "\n"
+    << "#define SL_CONDUCTOR " << (m.IsConductor() ? 1 : 0) << "\n"
+    << "#define SL_INTERP " << (this->PerspectiveCorrect ? "smooth" : "noperspective") << "\n";
+  return v.str();
+}
+
+bool vtkShadingLabPolyDataMapper::Substitute(
+  vtkShader* shader, const std::string& tag, const std::string& code)
+{
+  if (!vtkShaderProgram::Substitute(shader, tag, code, false))
+  {
+    ++this->FailedSubstitutions;
+    vtkErrorMacro("shader substitution failed: tag '" << tag << "' not found");
+    return false;
+  }
+  return true;
+}
+
+void vtkShadingLabPolyDataMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
+{
+  vtkPolyData* input = this->CurrentInput;
+  const bool flat = this->ShadingMode == FLAT;
+  const bool hasNormals = input && input->GetPointData()->GetNormals();
+  // Flat mode uploads no point normals; the other modes need them.
+  const int kind = flat ? (hasNormals ? 1 : 0) : (hasNormals ? 0 : 2);
+  if (kind != 0)
+  {
+    if (this->Internal->PreparedKind != kind || this->Internal->PreparedInput != input ||
+      this->Internal->PreparedFrom != input->GetMTime())
+    {
+      auto prepared = vtkSmartPointer<vtkPolyData>::New();
+      prepared->ShallowCopy(input);
+      auto* pd = vtkPointData::New();
+      pd->ShallowCopy(input->GetPointData());
+      prepared->GetPointData()->ShallowCopy(pd);
+      pd->Delete();
+      if (kind == 1)
+      {
+        prepared->GetPointData()->SetNormals(nullptr);
+      }
+      else
+      {
+        // Area-weighted vertex normals, as the CPU renderer computes them.
+        const vtkIdType np = input->GetNumberOfPoints();
+        std::vector<double> points(static_cast<size_t>(3 * np));
+        for (vtkIdType i = 0; i < np; ++i)
+        {
+          input->GetPoint(i, &points[3 * i]);
+        }
+        std::vector<int64_t> offsets{ 0 }, conn;
+        vtkCellArray* polys = input->GetPolys();
+        const vtkIdType* ids;
+        vtkIdType n;
+        for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
+        {
+          conn.insert(conn.end(), ids, ids + n);
+          offsets.push_back(static_cast<int64_t>(conn.size()));
+        }
+        sl::mesh::PolygonMesh mesh{ points.data(), np, offsets.data(), conn.data(),
+          static_cast<int64_t>(offsets.size() - 1) };
+        std::vector<double> normals;
+        sl::mesh::ComputeVertexNormalsNoSplit(mesh, sl::mesh::NormalWeighting::Area, normals);
+        vtkNew<vtkFloatArray> array;
+        array->SetName("Normals");
+        array->SetNumberOfComponents(3);
+        array->SetNumberOfTuples(np);
+        for (size_t i = 0; i < normals.size(); ++i)
+        {
+          array->SetValue(static_cast<vtkIdType>(i), static_cast<float>(normals[i]));
+        }
+        prepared->GetPointData()->SetNormals(array);
+      }
+      this->Internal->Prepared = prepared;
+      this->Internal->PreparedFrom = input->GetMTime();
+      this->Internal->PreparedInput = input;
+      this->Internal->PreparedKind = kind;
+    }
+    this->CurrentInput = this->Internal->Prepared;
+  }
+  this->Superclass::RenderPieceStart(ren, act);
+}
+
+bool vtkShadingLabPolyDataMapper::GetNeedToRebuildShaders(
+  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
+{
+  const std::string variant = this->Variant(ren);
+  std::string& built = this->Internal->BuiltVariant[&cellBO];
+  const bool changed = built != variant;
+  built = variant;
+  return this->Superclass::GetNeedToRebuildShaders(cellBO, ren, act) || changed;
+}
+
+void vtkShadingLabPolyDataMapper::ReplaceShaderValues(
+  std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
+{
+  ++this->ShaderBuildCount;
+  const std::string variant = this->Variant(ren);
+  this->LastVariant = variant;
+  vtkShader* vs = shaders[vtkShader::Vertex];
+  vtkShader* fs = shaders[vtkShader::Fragment];
+  const std::string library = std::string(sl_brdf_glsl) + sl_shading_glsl + sl_fastphong_glsl;
+
+  // Vertex shader: Gouraud lights here; flat and fast-phong pass the
+  // provoking vertex's data.
+  this->Substitute(vs, "//VTK::System::Dec", "//VTK::System::Dec\n" + variant +
+      (this->ShadingMode == GOURAUD ? library : std::string()));
+  this->Substitute(vs, "//VTK::Light::Dec", "//VTK::Light::Dec\n" + std::string(sl_mapper_vs_dec_glsl));
+  this->Substitute(vs, "//VTK::Light::Impl", std::string(sl_mapper_vs_impl_glsl) + "\n//VTK::Light::Impl");
+  // Fragment shader: the model replaces VTK's lighting.
+  this->Substitute(fs, "//VTK::System::Dec", "//VTK::System::Dec\n" + variant + library);
+  this->Substitute(fs, "//VTK::Light::Dec", "//VTK::Light::Dec\n" + std::string(sl_mapper_fs_dec_glsl));
+  this->Substitute(fs, "//VTK::Light::Impl", sl_mapper_fs_impl_glsl);
+
+  this->Superclass::ReplaceShaderValues(shaders, ren, act);
+
+  if (!this->PerspectiveCorrect)
+  {
+    // Screen-space interpolation of VTK's own varyings (the lecture's
+    // linear interpolation in screen coordinates).
+    std::string vsSource = vs->GetSource();
+    std::string fsSource = fs->GetSource();
+    for (const char* decl : { "vec4 vertexVCVSOutput;", "vec3 normalVCVSOutput;" })
+    {
+      vtkShaderProgram::Substitute(vsSource, std::string("out ") + decl, std::string("noperspective out ") + decl);
+      vtkShaderProgram::Substitute(fsSource, std::string("in ") + decl, std::string("noperspective in ") + decl);
+    }
+    vs->SetSource(vsSource);
+    fs->SetSource(fsSource);
+  }
+  if (std::getenv("SHADINGLAB_DUMP_SHADERS"))
+  {
+    std::cerr << "=== VS ===\n" << vs->GetSource() << "\n=== FS ===\n" << fs->GetSource() << "\n";
+  }
+}
+
+void vtkShadingLabPolyDataMapper::SetMapperShaderParameters(
+  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
+{
+  this->Superclass::SetMapperShaderParameters(cellBO, ren, act);
+  vtkShaderProgram* program = cellBO.Program;
+  if (!program)
+  {
+    return;
+  }
+  const sl::Material<double>& m = this->Internal->Material;
+  vtkCamera* camera = ren->GetActiveCamera();
+  vtkMatrix4x4* view = camera->GetViewTransformMatrix();
+
+  // The uniform block, flattened so a change can be detected cheaply.
+  std::vector<float> block;
+  float lightVector[4 * sl::kMaxLights] = {}, irradiance[3 * sl::kMaxLights] = {},
+                                              attenuation[3 * sl::kMaxLights] = {};
+  int count = 0;
+  vtkLightCollection* collection = ren->GetLights();
+  vtkCollectionSimpleIterator it;
+  collection->InitTraversal(it);
+  while (vtkLight* light = collection->GetNextLight(it))
+  {
+    if (!light->GetSwitch() || count >= sl::kMaxLights)
+    {
+      continue;
+    }
+    double pos[3], fp[3];
+    light->GetTransformedPosition(pos);
+    light->GetTransformedFocalPoint(fp);
+    double v[4];
+    if (light->GetPositional())
+    {
+      const double p[4] = { pos[0], pos[1], pos[2], 1.0 };
+      view->MultiplyPoint(p, v);
+      v[3] = 1.0;
+      const double* att = light->GetAttenuationValues();
+      for (int c = 0; c < 3; ++c)
+      {
+        attenuation[3 * count + c] = static_cast<float>(att[c]);
+      }
+    }
+    else
+    {
+      const double d[4] = { pos[0] - fp[0], pos[1] - fp[1], pos[2] - fp[2], 0.0 };
+      view->MultiplyPoint(d, v);
+      v[3] = 0.0;
+      attenuation[3 * count] = 1.0f;
+    }
+    for (int c = 0; c < 4; ++c)
+    {
+      lightVector[4 * count + c] = static_cast<float>(v[c]);
+    }
+    const double* color = light->GetDiffuseColor();
+    for (int c = 0; c < 3; ++c)
+    {
+      // I_L dw with the model's solid angle convention (dw = pi).
+      irradiance[3 * count + c] =
+        static_cast<float>(light->GetIntensity() * color[c] * sl::kPi<double>);
+    }
+    ++count;
+  }
+  block.insert(block.end(), lightVector, lightVector + 4 * sl::kMaxLights);
+  block.insert(block.end(), irradiance, irradiance + 3 * sl::kMaxLights);
+  block.insert(block.end(), attenuation, attenuation + 3 * sl::kMaxLights);
+  const double* ia = ren->GetAmbient();
+  vtkProperty* prop = act->GetProperty();
+  const double diffuseCoefficient = prop->GetDiffuse();
+  const double* dc = prop->GetDiffuseColor();
+  const float values[] = { static_cast<float>(m.ambient.x * ia[0]), static_cast<float>(m.ambient.y * ia[1]),
+    static_cast<float>(m.ambient.z * ia[2]), static_cast<float>(m.specularColor.x),
+    static_cast<float>(m.specularColor.y), static_cast<float>(m.specularColor.z),
+    static_cast<float>(m.kd), static_cast<float>(m.ks), static_cast<float>(m.shininess),
+    static_cast<float>(m.eta.x), static_cast<float>(m.eta.y), static_cast<float>(m.eta.z),
+    static_cast<float>(m.k.x), static_cast<float>(m.k.y), static_cast<float>(m.k.z),
+    m.variant == sl::SpecularVariant::Walter2007 ? 4.0f : 1.0f,
+    // rho: VTK's diffuseColor divided by the property's Diffuse coefficient.
+    diffuseCoefficient > 0 ? static_cast<float>(1.0 / diffuseCoefficient) : 1.0f,
+    static_cast<float>(dc[0]), static_cast<float>(dc[1]), static_cast<float>(dc[2]),
+    camera->GetParallelProjection() ? 1.0f : 0.0f };
+  block.insert(block.end(), std::begin(values), std::end(values));
+  float weights[sl::kMaxLobes], ms[sl::kMaxLobes];
+  for (int k = 0; k < sl::kMaxLobes; ++k)
+  {
+    weights[k] = static_cast<float>(m.lobes[k].weight);
+    ms[k] = static_cast<float>(m.lobes[k].m);
+  }
+  block.insert(block.end(), weights, weights + sl::kMaxLobes);
+  block.insert(block.end(), ms, ms + sl::kMaxLobes);
+  int vx, vy, vw, vh;
+  ren->GetTiledSizeAndOrigin(&vw, &vh, &vx, &vy);
+  const float viewport[4] = { static_cast<float>(vx), static_cast<float>(vy), static_cast<float>(vw),
+    static_cast<float>(vh) };
+  block.insert(block.end(), viewport, viewport + 4);
+
+  std::vector<float>& last = this->Internal->LastUniforms[program];
+  if (last == block)
+  {
+    return; // unchanged: nothing to send
+  }
+  last = block;
+  ++this->UniformUploads;
+  program->SetUniform4fv("slLightVectorVC", sl::kMaxLights, reinterpret_cast<float(*)[4]>(lightVector));
+  program->SetUniform3fv("slLightIrradiance", sl::kMaxLights, reinterpret_cast<float(*)[3]>(irradiance));
+  program->SetUniform3fv("slLightAttenuation", sl::kMaxLights, reinterpret_cast<float(*)[3]>(attenuation));
+  program->SetUniform3f("slAmbient", values);
+  program->SetUniform3f("slSpecularColor", values + 3);
+  program->SetUniformf("slKd", values[6]);
+  program->SetUniformf("slKs", values[7]);
+  program->SetUniformf("slShininess", values[8]);
+  program->SetUniform3f("slEta", values + 9);
+  program->SetUniform3f("slK", values + 12);
+  program->SetUniformf("slJacobian", values[15]);
+  program->SetUniformf("slInvDiffuseIntensity", values[16]);
+  program->SetUniform3f("slDiffuseColor", values + 17);
+  program->SetUniformi("slCameraParallel", camera->GetParallelProjection() ? 1 : 0);
+  program->SetUniform1fv("slLobeWeight", sl::kMaxLobes, weights);
+  program->SetUniform1fv("slLobeM", sl::kMaxLobes, ms);
+  program->SetUniform4f("slViewport", viewport);
+}
+
+void vtkShadingLabPolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  const char* names[] = { "flat", "gouraud", "phong", "fast-phong", "cook-torrance" };
+  os << indent << "ShadingMode: " << names[this->ShadingMode] << "\n";
+  os << indent << "PerspectiveCorrect: " << this->PerspectiveCorrect << "\n";
+  os << indent << "ShaderBuildCount: " << this->ShaderBuildCount << "\n";
+}

@@ -1,0 +1,116 @@
+// SPDX-License-Identifier: BSD-3-Clause
+/**
+ * @class   vtkShadingLabPolyDataMapper
+ * @brief   the five ShadingLab modes on the GPU, by shader replacement
+ *
+ * A vtkOpenGLPolyDataMapper whose shaders evaluate the ShadingLab model (the
+ * GLSL twin of plugin/model, in plugin/gl/glsl/) in one of five modes:
+ * FLAT (face normal, lit once per triangle at its provoking vertex), GOURAUD
+ * (the model per vertex in the vertex shader, colour interpolated; VTK's own
+ * Gouraud lights per fragment), PHONG (normals interpolated and renormalized,
+ * model per fragment), FAST_PHONG (Bishop & Weimer's quadratic about the
+ * triangle's provoking vertex) and COOK_TORRANCE. Interpolation is
+ * perspective-correct or, with PerspectiveCorrect off, screen-linear
+ * (GLSL noperspective).
+ *
+ * Lights are the renderer's vtkLights (headlight, camera and scene lights;
+ * positional lights with attenuation; intensity I_L = intensity x diffuse
+ * colour, solid angle pi as in plugin/model). The ambient intensity Ia is
+ * the renderer's ambient. The albedo rho is the property's diffuse colour (or
+ * the point scalars' colours), divided by the property's Diffuse coefficient
+ * (kd comes from the material).
+ *
+ * Shader variants are built from #defines (mode, model, light count, point
+ * lights, specular, mixture size, conductor, interpolation space); a change
+ * of any of them regenerates the shader source (counted by
+ * GetShaderBuildCount) and VTK's shader cache reuses a program compiled for
+ * that variant before. Material changes that do not change the variant only
+ * update uniforms, and uniforms are re-sent only when they changed.
+ *
+ * @warning Spot-light cones are not modelled (a positional light lights all
+ * directions). Gouraud mode takes rho from the property, not from point
+ * scalars. Meshes without point normals get area-weighted normals computed
+ * once per input change; flat mode uploads no point normals.
+ */
+#ifndef vtkShadingLabPolyDataMapper_h
+#define vtkShadingLabPolyDataMapper_h
+
+#include "shadinglab/model/Shading.h"
+
+#include <vtkOpenGLPolyDataMapper.h>
+
+#include <memory>
+#include <string>
+
+class vtkShadingLabPolyDataMapper : public vtkOpenGLPolyDataMapper
+{
+public:
+  static vtkShadingLabPolyDataMapper* New();
+  vtkTypeMacro(vtkShadingLabPolyDataMapper, vtkOpenGLPolyDataMapper);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum Modes
+  {
+    FLAT = 0,
+    GOURAUD = 1,
+    PHONG = 2,
+    FAST_PHONG = 3,
+    COOK_TORRANCE = 4
+  };
+
+  ///@{
+  /// Shading mode (default PHONG).
+  vtkSetClampMacro(ShadingMode, int, FLAT, COOK_TORRANCE);
+  vtkGetMacro(ShadingMode, int);
+  ///@}
+
+  ///@{
+  /// Perspective-correct interpolation (default on); off: screen-linear.
+  vtkSetMacro(PerspectiveCorrect, bool);
+  vtkGetMacro(PerspectiveCorrect, bool);
+  vtkBooleanMacro(PerspectiveCorrect, bool);
+  ///@}
+
+  /// The material. Rebuilds shaders only when the variant changes (model,
+  /// specular on/off, mixture size, conductor or not).
+  void SetMaterial(const shadinglab::Material<double>& material);
+  const shadinglab::Material<double>& GetMaterial() const;
+
+  /// Shader sources generated so far (one per variant change).
+  int GetShaderBuildCount() const { return this->ShaderBuildCount; }
+  /// Substitutions that did not find their tag (must stay 0).
+  int GetFailedSubstitutionCount() const { return this->FailedSubstitutions; }
+  /// Times the uniform block was (re)sent to a program.
+  int GetUniformUploadCount() const { return this->UniformUploads; }
+  /// The variant #defines of the last build.
+  const std::string& GetLastVariant() const { return this->LastVariant; }
+
+protected:
+  vtkShadingLabPolyDataMapper();
+  ~vtkShadingLabPolyDataMapper() override;
+
+  void RenderPieceStart(vtkRenderer* ren, vtkActor* act) override;
+  void ReplaceShaderValues(
+    std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
+  bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+  void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+
+  int ShadingMode = PHONG;
+  bool PerspectiveCorrect = true;
+  int ShaderBuildCount = 0;
+  int FailedSubstitutions = 0;
+  int UniformUploads = 0;
+  std::string LastVariant;
+
+private:
+  vtkShadingLabPolyDataMapper(const vtkShadingLabPolyDataMapper&) = delete;
+  void operator=(const vtkShadingLabPolyDataMapper&) = delete;
+
+  std::string Variant(vtkRenderer* ren) const;
+  bool Substitute(vtkShader* shader, const std::string& tag, const std::string& code);
+
+  struct Internals;
+  std::unique_ptr<Internals> Internal;
+};
+
+#endif

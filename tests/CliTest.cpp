@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <vector>
@@ -305,4 +306,30 @@ TEST(CliTest, RenderUsesTheMeshFilters)
   EXPECT_NE(r.out.find("\"normals_computed\":false"), std::string::npos) << r.out;
   r = RunCli("render " + kData + "cylinder_8.vtp --backend cpu --size 64x48 --normals max --feature-angle 40 --out " + out);
   ASSERT_EQ(r.status, 0) << r.err;
+}
+
+TEST(CliTest, GpuBackendUnderXAndNeverAbortsWithoutDisplay)
+{
+  const std::string out = ::testing::TempDir() + "/shadinglab_gpu.png";
+  const std::string input = kData + "icosphere_2.vtp";
+  // Without DISPLAY: gpu is a clear error, auto falls back to the CPU.
+  const std::string env = "env -u DISPLAY ";
+  auto r = shadinglab::testing::RunCli("render " + input + " --backend gpu --size 64x48 --out " + out, env);
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_EQ(CountLines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find("DISPLAY"), std::string::npos) << r.err;
+  r = shadinglab::testing::RunCli("render " + input + " --backend auto --size 64x48 --stats --out " + out, env);
+  EXPECT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("\"backend\":\"cpu\""), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("using the CPU renderer"), std::string::npos) << r.err;
+  // With the suite's X server: the GPU path renders.
+  if (std::getenv("DISPLAY"))
+  {
+    r = RunCli("render " + input + " --backend gpu --mode cook-torrance --material gold --size 64x48 --stats --out " + out);
+    EXPECT_EQ(r.status, 0) << r.err;
+    EXPECT_NE(r.out.find("\"backend\":\"gpu\""), std::string::npos) << r.out;
+    int w = 0, h = 0;
+    EXPECT_TRUE(PngSize(out, w, h));
+    EXPECT_EQ(w, 64);
+  }
 }

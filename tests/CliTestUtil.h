@@ -19,13 +19,14 @@ struct RunResult
   std::string err;
 };
 
-inline RunResult RunCli(const std::string& arguments)
+/// Runs `prefix shadinglab arguments` (prefix e.g. "env -u DISPLAY ").
+inline RunResult RunCli(const std::string& arguments, const std::string& prefix = {})
 {
   char errPath[] = "/tmp/shadinglab_cli_stderr_XXXXXX";
   const int fd = mkstemp(errPath);
   close(fd);
   const std::string command =
-    std::string(SHADINGLAB_CLI) + " " + arguments + " 2>" + errPath;
+    prefix + std::string(SHADINGLAB_CLI) + " " + arguments + " 2>" + errPath;
   RunResult result;
   FILE* pipe = popen(command.c_str(), "r");
   if (!pipe)

@@ -76,7 +76,8 @@ cpu::Image RenderGpu(vtkPolyData* mesh, const cpu::Camera& cam, const Lighting<d
   renderer->SetBackground(options.background.x, options.background.y, options.background.z);
   renderer->SetAmbient(lighting.ambientIntensity.x, lighting.ambientIntensity.y,
     lighting.ambientIntensity.z);
-  renderer->AutomaticLightCreationOff();
+  // No lights given: VTK's automatic headlight (a light at the camera).
+  renderer->SetAutomaticLightCreation(lighting.lightCount == 0);
   for (int j = 0; j < lighting.lightCount; ++j)
   {
     const Light<double>& l = lighting.lights[j];

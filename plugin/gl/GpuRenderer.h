@@ -23,7 +23,8 @@ bool GpuAvailable(std::string& why);
  * Renders `mesh` offscreen with the mapper. The options' mode, size, ssaa
  * (box filter over an N-times larger framebuffer), interpolation space and
  * background apply; threads, polygon handling and culling are the GPU's.
- * Lights are given in world coordinates and become scene vtkLights.
+ * Lights are given in world coordinates and become scene vtkLights; with
+ * none, VTK's automatic headlight is used.
  * Returns the linear image as floats in [0, 1] (8-bit framebuffer precision)
  * with `covered` from the framebuffer's depth. Throws std::runtime_error.
  */

@@ -228,7 +228,9 @@ void vtkShadingLabPolyDataMapper::ReplaceShaderValues(
     // linear interpolation in screen coordinates).
     std::string vsSource = vs->GetSource();
     std::string fsSource = fs->GetSource();
-    for (const char* decl : { "vec4 vertexVCVSOutput;", "vec3 normalVCVSOutput;" })
+    // vertexColorVSOutput exists only with scalar colouring: optional.
+    for (const char* decl :
+      { "vec4 vertexVCVSOutput;", "vec3 normalVCVSOutput;", "vec4 vertexColorVSOutput;" })
     {
       vtkShaderProgram::Substitute(vsSource, std::string("out ") + decl, std::string("noperspective out ") + decl);
       vtkShaderProgram::Substitute(fsSource, std::string("in ") + decl, std::string("noperspective in ") + decl);

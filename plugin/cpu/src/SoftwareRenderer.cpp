@@ -546,18 +546,18 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh, const Camera& ca
 Vec3f SoftwareRenderer::Internals::ComputeFlatColor(int64_t p, bool back) const
 {
   // Face normal: given cell normal, else Newell's method (exact for planar
-  // polygons, a least-squares normal otherwise). Lit at the polygon's
-  // centroid with its mean colour.
+  // polygons, a least-squares normal otherwise). Lit at the polygon's last
+  // vertex, OpenGL's provoking vertex, with its colour: the GPU mapper does
+  // the same, so the two agree pixel for pixel on triangle meshes (the
+  // lecture's flat shading assumes distant lights and viewer, where the
+  // choice of point does not matter).
   const auto& conn = this->MeshData->connectivity;
   const int64_t first = this->MeshData->offsets[p];
   const int n = static_cast<int>(this->MeshData->offsets[p + 1] - first);
-  Vec3f N, centroid, color;
+  Vec3f N;
   for (int k = 0; k < n; ++k)
   {
-    const int64_t v = conn[first + k];
-    const Vec3f a = this->PointOf(v), b = this->PointOf(conn[first + (k + 1) % n]);
-    centroid += a;
-    color += this->ColorOf(v);
+    const Vec3f a = this->PointOf(conn[first + k]), b = this->PointOf(conn[first + (k + 1) % n]);
     N += Vec3f((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
   }
   if (!this->MeshData->faceNormals.empty())
@@ -565,14 +565,13 @@ Vec3f SoftwareRenderer::Internals::ComputeFlatColor(int64_t p, bool back) const
     const float* fn = &this->MeshData->faceNormals[3 * p];
     N = Vec3f(fn[0], fn[1], fn[2]);
   }
-  centroid *= 1.0f / n;
-  color *= 1.0f / n;
   N = NormalizeOr(N, this->ToEye);
   if (this->Opt.twoSidedLighting && back)
   {
     N = -N;
   }
-  return this->ShadeAt(centroid, N, color);
+  const int64_t provoking = conn[first + n - 1];
+  return this->ShadeAt(this->PointOf(provoking), N, this->ColorOf(provoking));
 }
 
 void SoftwareRenderer::Internals::RasterizeThread(int thread, int threadCount, ThreadState& state)
@@ -1226,7 +1225,18 @@ void SoftwareRenderer::Internals::DrawTriangleFastPhong(const ScreenVertex* cons
   }
   FastPhongTriangle<float> tri;
   tri.Setup(sx, sy, normals);
-  const Vec3f V = this->ViewDirection(centroid);
+  // L, V and H are taken at the expansion point's surface position.
+  Vec3f expansionPoint = centroid;
+  if (this->Opt.expansion == ExpansionPoint::Vertex)
+  {
+    int64_t id = meshIds[2];
+    for (int m = 0; m < 3 && id < 0; ++m)
+    {
+      id = meshIds[m];
+    }
+    expansionPoint = this->PointOf(id);
+  }
+  const Vec3f V = this->ViewDirection(expansionPoint);
   // Bishop & Weimer's expansion holds for small normal variation; beyond
   // the spread limit the triangle is evaluated exactly (the same affine
   // normal, renormalized per pixel), so no Taylor blow-up reaches a pixel.
@@ -1249,7 +1259,7 @@ void SoftwareRenderer::Internals::DrawTriangleFastPhong(const ScreenVertex* cons
   for (int l = 0; l < nl; ++l)
   {
     Vec3f L;
-    active[l] = LightIncidence(this->Lights.lights[l], centroid, L, irradiance[l]);
+    active[l] = LightIncidence(this->Lights.lights[l], expansionPoint, L, irradiance[l]);
     if (!active[l])
     {
       continue;

@@ -46,8 +46,11 @@ namespace shadinglab
 {
 
 /// Where the Taylor expansion is taken. Bishop & Weimer expand about a
-/// vertex; the centroid halves the largest distance to any point of the
-/// triangle and so reduces the error.
+/// vertex: we take the triangle's last vertex, OpenGL's provoking vertex, so
+/// the CPU renderer and the GPU mapper expand about the same point. The
+/// centroid halves the largest distance to any point of the triangle and so
+/// reduces the error (CPU only: a fragment shader has no centroid without a
+/// geometry shader).
 enum class ExpansionPoint
 {
   Vertex,
@@ -123,8 +126,8 @@ struct FastPhongTriangle
   {
     centroidX = (x[0] + x[1] + x[2]) / T(3);
     centroidY = (y[0] + y[1] + y[2]) / T(3);
-    vertexX = x[0];
-    vertexY = y[0];
+    vertexX = x[2];
+    vertexY = y[2];
     // Solve in coordinates relative to vertex 0 for conditioning.
     const T x1 = x[1] - x[0], y1 = y[1] - y[0];
     const T x2 = x[2] - x[0], y2 = y[2] - y[0];

@@ -1,0 +1,542 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// GPU mapper against the CPU renderer: same mesh, camera, lights, material
+// and mode; images compared over pixels both cover. Needs an X server with
+// OpenGL (label "gl"; scripts/test runs ctest under Xvfb with llvmpipe).
+#include "AnalyticMeshes.h"
+#include "GpuRenderer.h"
+#include "PolyDataMesh.h"
+#include "vtkShadingLabCompositePolyDataMapper.h"
+#include "vtkShadingLabPolyDataMapper.h"
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkCellData.h>
+#include <vtkCellArray.h>
+#include <vtkFloatArray.h>
+#include <vtkLight.h>
+#include <vtkPoints.h>
+#include <vtkMultiBlockDataSet.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataNormals.h>
+#include <vtkProperty.h>
+#include <vtkRenderWindow.h>
+#include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+namespace sl = shadinglab;
+namespace cpu = shadinglab::cpu;
+
+namespace
+{
+
+struct Difference
+{
+  double mean = 0;   // in 1/255 units
+  double p99 = 0;    // in 1/255 units
+  int64_t pixels = 0;
+};
+
+Difference Compare(const cpu::Image& a, const cpu::Image& b)
+{
+  std::vector<double> d;
+  for (size_t p = 0; p < a.covered.size(); ++p)
+  {
+    if (!a.covered[p] || !b.covered[p])
+    {
+      continue;
+    }
+    for (int c = 0; c < 3; ++c)
+    {
+      const double x = std::round(std::clamp(a.rgb[3 * p + c], 0.0f, 1.0f) * 255.0);
+      const double y = std::round(std::clamp(b.rgb[3 * p + c], 0.0f, 1.0f) * 255.0);
+      d.push_back(std::abs(x - y));
+    }
+  }
+  Difference r;
+  r.pixels = static_cast<int64_t>(d.size() / 3);
+  if (d.empty())
+  {
+    return r;
+  }
+  double sum = 0;
+  for (double v : d)
+  {
+    sum += v;
+  }
+  r.mean = sum / d.size();
+  std::sort(d.begin(), d.end());
+  r.p99 = d[static_cast<size_t>(0.99 * (d.size() - 1))];
+  return r;
+}
+
+bool HaveGpu()
+{
+  std::string why;
+  if (!sl::gl::GpuAvailable(why))
+  {
+    std::printf("GPU unavailable: %s\n", why.c_str());
+    return false;
+  }
+  return true;
+}
+
+cpu::Camera Camera(bool parallel = false)
+{
+  cpu::Camera cam;
+  cam.position = { 0.6, 1.1, 3.4 };
+  cam.focalPoint = { 0, 0, 0 };
+  cam.viewUp = { 0, 1, 0 };
+  cam.viewAngle = 40;
+  cam.nearClip = 1.0;
+  cam.farClip = 8.0;
+  cam.parallel = parallel;
+  cam.parallelScale = 1.3;
+  return cam;
+}
+
+sl::Lighting<double> Lights(bool withPoint)
+{
+  sl::Lighting<double> l;
+  l.lightCount = 1;
+  l.lights[0].vector = { -0.4, 0.6, 1.0 };
+  l.lights[0].intensity = { 0.9, 0.85, 0.8 };
+  if (withPoint)
+  {
+    l.lightCount = 2;
+    l.lights[1].type = sl::LightType::Point;
+    l.lights[1].vector = { 2.0, -1.0, 2.5 };
+    l.lights[1].intensity = { 0.6, 0.6, 0.9 };
+    l.lights[1].attenuation = { 1.0, 0.1, 0.02 };
+  }
+  l.ambientIntensity = { 1, 1, 1 };
+  return l;
+}
+
+sl::Material<double> BlinnPhong()
+{
+  sl::Material<double> m;
+  m.model = sl::ReflectanceModel::BlinnPhong;
+  m.kd = 0.7;
+  m.ks = 0.3;
+  m.shininess = 24;
+  m.diffuseColor = { 0.9, 0.8, 0.7 };
+  return m;
+}
+
+vtkSmartPointer<vtkPolyData> WithExactNormals(vtkPolyData* raw)
+{
+  vtkSmartPointer<vtkPolyData> pd;
+  pd.TakeReference(raw);
+  pd->GetPointData()->SetNormals(pd->GetPointData()->GetArray(sl::datasets::kExactNormalArray));
+  return pd;
+}
+
+// Thresholds (in 1/255): mean over covered pixels and 99th percentile.
+// llvmpipe evaluates the same float formulas, so most pixels agree to the
+// 8-bit rounding; the tail comes from pixels on triangle edges where the two
+// rasterizers' attribute interpolation differs in the last bits and from
+// highlight pixels where pow() amplifies that.
+constexpr double kMeanThreshold = 1.0;
+constexpr double kP99Threshold = 4.0;
+
+} // namespace
+
+TEST(GpuParityGLTest, EveryModeBothInterpolationSpaces)
+{
+  if (!HaveGpu())
+  {
+    GTEST_SKIP() << "no X display with OpenGL";
+  }
+  auto torus = WithExactNormals(sl::datasets::MakeTorus(1.0, 0.4, 48, 24));
+  auto sphere = WithExactNormals(sl::datasets::MakeIcosphere(3));
+  const cpu::Mesh torusMesh = cpu::MeshFromPolyData(torus);
+  const cpu::Mesh sphereMesh = cpu::MeshFromPolyData(sphere);
+  struct Case
+  {
+    const char* name;
+    vtkPolyData* pd;
+    const cpu::Mesh* mesh;
+  };
+  const Case cases[] = { { "torus", torus, &torusMesh }, { "icosphere", sphere, &sphereMesh } };
+  std::printf("%-10s %-14s %-12s %8s %8s %8s\n", "mesh", "mode", "interp", "mean", "p99", "pixels");
+  for (const auto& c : cases)
+  {
+    for (int mode = 0; mode < 5; ++mode)
+    {
+      for (bool perspective : { true, false })
+      {
+        cpu::RenderOptions opt;
+        opt.width = 320;
+        opt.height = 240;
+        opt.mode = static_cast<cpu::ShadingMode>(mode);
+        opt.interpolation =
+          perspective ? cpu::InterpolationSpace::Perspective : cpu::InterpolationSpace::Screen;
+        // Fast Phong expands about the provoking vertex on both (a fragment
+        // shader has no triangle centroid).
+        opt.expansion = sl::ExpansionPoint::Vertex;
+        auto material = BlinnPhong();
+        if (opt.mode == cpu::ShadingMode::CookTorrance)
+        {
+          material.model = sl::ReflectanceModel::CookTorrance;
+          material.lobeCount = 2;
+          material.lobes[0] = { 0.6, 0.2 };
+          material.lobes[1] = { 0.4, 0.5 };
+          material.eta = { 0.14, 0.43, 1.38 };
+          material.k = { 3.7, 2.45, 1.9 };
+          material.variant = sl::SpecularVariant::Walter2007;
+        }
+        const auto lights = Lights(true);
+        const auto gpu = sl::gl::RenderGpu(c.pd, Camera(), lights, material, opt);
+        const auto ref = cpu::Render(
+          *c.mesh, Camera(), lights.Cast<float>(), material.Cast<float>(), opt);
+        const auto d = Compare(ref, gpu);
+        std::printf("%-10s %-14s %-12s %8.3f %8.3f %8lld\n", c.name,
+          cpu::ModeName(opt.mode), perspective ? "perspective" : "screen", d.mean, d.p99,
+          static_cast<long long>(d.pixels));
+        EXPECT_GT(d.pixels, 5000);
+        EXPECT_LE(d.mean, kMeanThreshold) << c.name << " " << cpu::ModeName(opt.mode);
+        EXPECT_LE(d.p99, kP99Threshold) << c.name << " " << cpu::ModeName(opt.mode);
+      }
+    }
+  }
+}
+
+namespace
+{
+/// Linear image read back from a render window (rows top-down).
+cpu::Image Grab(vtkRenderWindow* window)
+{
+  int* size = window->GetSize();
+  const int W = size[0], H = size[1];
+  unsigned char* pixels = window->GetPixelData(0, 0, W - 1, H - 1, 0, 0);
+  std::vector<unsigned char> rgb(pixels, pixels + static_cast<size_t>(W) * H * 3);
+  delete[] pixels;
+  std::vector<float> z(static_cast<size_t>(W) * H);
+  window->GetZbufferData(0, 0, W - 1, H - 1, z.data());
+  cpu::Image image;
+  image.width = W;
+  image.height = H;
+  image.rgb.resize(rgb.size());
+  image.covered.resize(z.size());
+  for (int y = 0; y < H; ++y)
+  {
+    for (int x = 0; x < W; ++x)
+    {
+      const size_t src = static_cast<size_t>(H - 1 - y) * W + x, dst = static_cast<size_t>(y) * W + x;
+      for (int c = 0; c < 3; ++c)
+      {
+        image.rgb[3 * dst + c] = rgb[3 * src + c] / 255.0f;
+      }
+      image.covered[dst] = z[src] < 1.0f;
+    }
+  }
+  return image;
+}
+
+void SetCamera(vtkRenderer* ren, const cpu::Camera& c)
+{
+  vtkCamera* cam = ren->GetActiveCamera();
+  cam->SetPosition(c.position.x, c.position.y, c.position.z);
+  cam->SetFocalPoint(c.focalPoint.x, c.focalPoint.y, c.focalPoint.z);
+  cam->SetViewUp(c.viewUp.x, c.viewUp.y, c.viewUp.z);
+  cam->SetViewAngle(c.viewAngle);
+  cam->SetClippingRange(c.nearClip, c.farClip);
+}
+} // namespace
+
+TEST(GpuParityGLTest, ScreenSpaceInterpolationMatchesTheCpu)
+{
+  if (!HaveGpu())
+  {
+    GTEST_SKIP() << "no X display with OpenGL";
+  }
+  // A floor receding from the camera whose vertex normals tilt differently
+  // at the near and far edges: Gouraud intensities vary along depth, and
+  // screen-linear interpolation visibly differs from perspective-correct.
+  auto floor = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  // x = +-0.5 keeps the quad inside the side planes: no GPU clipping.
+  for (const auto& p : { std::array<double, 3>{ -0.5, -1, -2 }, { 0.5, -1, -2 }, { 0.5, -1, -12 }, { -0.5, -1, -12 } })
+  {
+    points->InsertNextPoint(p.data());
+  }
+  vtkNew<vtkCellArray> polys;
+  const vtkIdType quad[4] = { 0, 1, 2, 3 };
+  polys->InsertNextCell(4, quad);
+  floor->SetPoints(points);
+  floor->SetPolys(polys);
+  vtkNew<vtkFloatArray> normals;
+  normals->SetNumberOfComponents(3);
+  const float near[3] = { 0.0f, 0.2f, 0.98f }, far[3] = { 0.0f, 0.98f, 0.2f };
+  for (const float* n : { near, near, far, far })
+  {
+    normals->InsertNextTuple(n);
+  }
+  floor->GetPointData()->SetNormals(normals);
+  const cpu::Mesh mesh = cpu::MeshFromPolyData(floor);
+  cpu::Camera cam;
+  cam.position = { 0, 0, 0 };
+  cam.focalPoint = { 0, 0, -1 };
+  cam.viewAngle = 60;
+  cam.nearClip = 0.5;
+  cam.farClip = 20;
+  sl::Lighting<double> lights;
+  lights.lightCount = 1;
+  lights.lights[0].vector = { 0, 0, 1 };
+  sl::Material<double> m = BlinnPhong();
+  m.ks = 0.0;
+  m.kd = 1.0;
+  cpu::RenderOptions opt;
+  opt.width = 200;
+  opt.height = 300;
+  opt.mode = cpu::ShadingMode::Gouraud;
+  cpu::Image gpu[2], ref[2];
+  for (int i = 0; i < 2; ++i)
+  {
+    opt.interpolation = i == 0 ? cpu::InterpolationSpace::Perspective : cpu::InterpolationSpace::Screen;
+    gpu[i] = sl::gl::RenderGpu(floor, cam, lights, m, opt);
+    ref[i] = cpu::Render(mesh, cam, lights.Cast<float>(), m.Cast<float>(), opt);
+    const auto d = Compare(ref[i], gpu[i]);
+    EXPECT_LE(d.mean, kMeanThreshold) << i;
+    EXPECT_LE(d.p99, kP99Threshold) << i;
+  }
+  const auto between = Compare(gpu[0], gpu[1]);
+  std::printf("GPU perspective vs screen: mean %.2f/255, p99 %.0f/255\n", between.mean, between.p99);
+  EXPECT_GT(between.mean, 5.0); // the distortion is there, on the GPU too
+}
+
+TEST(GpuParityGLTest, MeshesWithoutNormalsAndWithCellNormals)
+{
+  if (!HaveGpu())
+  {
+    GTEST_SKIP() << "no X display with OpenGL";
+  }
+  // No point normals: both compute area-weighted vertex normals.
+  vtkSmartPointer<vtkPolyData> bare;
+  bare.TakeReference(sl::datasets::MakeUVSphere(24, 12));
+  cpu::RenderOptions opt;
+  opt.width = 240;
+  opt.height = 180;
+  for (auto mode : { cpu::ShadingMode::Gouraud, cpu::ShadingMode::Phong })
+  {
+    opt.mode = mode;
+    const auto gpu = sl::gl::RenderGpu(bare, Camera(), Lights(false), BlinnPhong(), opt);
+    const auto ref = cpu::Render(cpu::MeshFromPolyData(bare), Camera(), Lights(false).Cast<float>(),
+      BlinnPhong().Cast<float>(), opt);
+    const auto d = Compare(ref, gpu);
+    EXPECT_LE(d.mean, kMeanThreshold) << cpu::ModeName(mode);
+    EXPECT_LE(d.p99, kP99Threshold) << cpu::ModeName(mode);
+  }
+  // Cell normals drive flat mode on both (here: normals of a coarser
+  // faceting than the geometry, so using them is visible).
+  vtkNew<vtkPolyDataNormals> cellNormals;
+  cellNormals->SetInputData(bare);
+  cellNormals->ComputeCellNormalsOn();
+  cellNormals->ComputePointNormalsOff();
+  cellNormals->SplittingOff();
+  cellNormals->Update();
+  vtkPolyData* withCells = cellNormals->GetOutput();
+  ASSERT_NE(withCells->GetCellData()->GetNormals(), nullptr);
+  opt.mode = cpu::ShadingMode::Flat;
+  const auto gpu = sl::gl::RenderGpu(withCells, Camera(), Lights(false), BlinnPhong(), opt);
+  const auto ref = cpu::Render(cpu::MeshFromPolyData(withCells), Camera(), Lights(false).Cast<float>(),
+    BlinnPhong().Cast<float>(), opt);
+  const auto d = Compare(ref, gpu);
+  EXPECT_LE(d.mean, kMeanThreshold);
+  EXPECT_LE(d.p99, kP99Threshold);
+}
+
+TEST(GpuParityGLTest, HeadlightAndCameraLight)
+{
+  if (!HaveGpu())
+  {
+    GTEST_SKIP() << "no X display with OpenGL";
+  }
+  auto torus = WithExactNormals(sl::datasets::MakeTorus(1.0, 0.4, 48, 24));
+  const cpu::Camera cam = Camera();
+  // Both lights shine from the camera: a directional light towards the eye.
+  sl::Lighting<double> equivalent;
+  equivalent.lightCount = 1;
+  equivalent.lights[0].vector = cam.position - cam.focalPoint;
+  cpu::RenderOptions opt;
+  opt.width = 240;
+  opt.height = 180;
+  const auto ref = cpu::Render(cpu::MeshFromPolyData(torus), cam, equivalent.Cast<float>(),
+    BlinnPhong().Cast<float>(), opt);
+  for (int kind = 0; kind < 2; ++kind)
+  {
+    vtkNew<vtkShadingLabPolyDataMapper> mapper;
+    mapper->SetInputData(torus);
+    mapper->SetMaterial(BlinnPhong());
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(mapper);
+    actor->GetProperty()->SetDiffuseColor(0.9, 0.8, 0.7);
+    vtkNew<vtkRenderer> ren;
+    ren->AddActor(actor);
+    ren->SetBackground(0.32, 0.34, 0.43);
+    vtkNew<vtkLight> light;
+    if (kind == 0)
+    {
+      light->SetLightTypeToHeadlight();
+    }
+    else
+    {
+      light->SetLightTypeToCameraLight();
+      light->SetPosition(0, 0, 1); // camera coordinates: along the view axis
+      light->SetFocalPoint(0, 0, 0);
+    }
+    ren->AddLight(light);
+    SetCamera(ren, cam);
+    vtkNew<vtkRenderWindow> window;
+    window->SetOffScreenRendering(1);
+    window->SetMultiSamples(0);
+    window->SetSize(opt.width, opt.height);
+    window->AddRenderer(ren);
+    window->Render();
+    const auto d = Compare(ref, Grab(window));
+    EXPECT_GT(d.pixels, 5000);
+    EXPECT_LE(d.mean, kMeanThreshold) << (kind == 0 ? "headlight" : "camera light");
+    EXPECT_LE(d.p99, kP99Threshold) << (kind == 0 ? "headlight" : "camera light");
+  }
+}
+
+TEST(GpuParityGLTest, MultiblockInput)
+{
+  if (!HaveGpu())
+  {
+    GTEST_SKIP() << "no X display with OpenGL";
+  }
+  auto a = WithExactNormals(sl::datasets::MakeIcosphere(3));
+  auto b = WithExactNormals(sl::datasets::MakeTorus(1.0, 0.4, 48, 24));
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  blocks->SetNumberOfBlocks(2);
+  blocks->SetBlock(0, a);
+  blocks->SetBlock(1, b);
+  vtkNew<vtkShadingLabCompositePolyDataMapper> mapper;
+  mapper->SetInputDataObject(blocks);
+  mapper->SetShadingMode(vtkShadingLabPolyDataMapper::GOURAUD);
+  mapper->SetMaterial(BlinnPhong());
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetDiffuseColor(0.9, 0.8, 0.7);
+  vtkNew<vtkRenderer> ren;
+  ren->AddActor(actor);
+  ren->SetBackground(0.32, 0.34, 0.43);
+  ren->AutomaticLightCreationOff();
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToSceneLight();
+  light->SetPositional(false);
+  light->SetPosition(-0.4, 0.6, 1.0);
+  light->SetFocalPoint(0, 0, 0);
+  ren->AddLight(light);
+  SetCamera(ren, Camera());
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetMultiSamples(0);
+  window->SetSize(240, 180);
+  window->AddRenderer(ren);
+  window->Render();
+  EXPECT_EQ(mapper->GetShaderBuildCount() >= 1, true);
+  // The CPU reference: both blocks as one mesh.
+  cpu::Mesh both = cpu::MeshFromPolyData(a);
+  const cpu::Mesh second = cpu::MeshFromPolyData(b);
+  const int64_t offset = both.NumberOfPoints();
+  both.points.insert(both.points.end(), second.points.begin(), second.points.end());
+  both.normals.insert(both.normals.end(), second.normals.begin(), second.normals.end());
+  const int64_t base = both.connectivity.size();
+  for (int64_t v : second.connectivity)
+  {
+    both.connectivity.push_back(v + offset);
+  }
+  for (size_t i = 1; i < second.offsets.size(); ++i)
+  {
+    both.offsets.push_back(second.offsets[i] + base);
+  }
+  sl::Lighting<double> lights;
+  lights.lightCount = 1;
+  lights.lights[0].vector = { -0.4, 0.6, 1.0 };
+  cpu::RenderOptions opt;
+  opt.width = 240;
+  opt.height = 180;
+  opt.mode = cpu::ShadingMode::Gouraud;
+  const auto ref = cpu::Render(both, Camera(), lights.Cast<float>(), BlinnPhong().Cast<float>(), opt);
+  const auto d = Compare(ref, Grab(window));
+  EXPECT_GT(d.pixels, 8000);
+  EXPECT_LE(d.mean, kMeanThreshold);
+  EXPECT_LE(d.p99, kP99Threshold);
+}
+
+TEST(GpuParityGLTest, ShadersRebuildOnlyForVariantChanges)
+{
+  if (!HaveGpu())
+  {
+    GTEST_SKIP() << "no X display with OpenGL";
+  }
+  auto torus = WithExactNormals(sl::datasets::MakeTorus(1.0, 0.4, 24, 12));
+  vtkNew<vtkShadingLabPolyDataMapper> mapper;
+  mapper->SetInputData(torus);
+  auto material = BlinnPhong();
+  mapper->SetMaterial(material);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  vtkNew<vtkRenderer> ren;
+  ren->AddActor(actor);
+  ren->AutomaticLightCreationOff();
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToSceneLight();
+  light->SetPositional(false);
+  ren->AddLight(light);
+  SetCamera(ren, Camera());
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetSize(64, 48);
+  window->AddRenderer(ren);
+  window->Render();
+  EXPECT_EQ(mapper->GetFailedSubstitutionCount(), 0);
+  const int first = mapper->GetShaderBuildCount();
+  EXPECT_GE(first, 1);
+  const int uploads = mapper->GetUniformUploadCount();
+  window->Render(); // nothing changed: no rebuild, no upload
+  EXPECT_EQ(mapper->GetShaderBuildCount(), first);
+  EXPECT_EQ(mapper->GetUniformUploadCount(), uploads);
+  material.shininess = 64; // uniform only
+  mapper->SetMaterial(material);
+  window->Render();
+  EXPECT_EQ(mapper->GetShaderBuildCount(), first);
+  EXPECT_GT(mapper->GetUniformUploadCount(), uploads);
+  mapper->SetShadingMode(vtkShadingLabPolyDataMapper::GOURAUD); // variant
+  window->Render();
+  const int afterMode = mapper->GetShaderBuildCount();
+  EXPECT_GT(afterMode, first);
+  material.ks = 0.0; // specular off: variant
+  mapper->SetMaterial(material);
+  window->Render();
+  const int afterSpecular = mapper->GetShaderBuildCount();
+  EXPECT_GT(afterSpecular, afterMode);
+  vtkNew<vtkLight> second; // light count: variant
+  second->SetLightTypeToSceneLight();
+  ren->AddLight(second);
+  window->Render();
+  const int afterLight = mapper->GetShaderBuildCount();
+  EXPECT_GT(afterLight, afterSpecular);
+  mapper->PerspectiveCorrectOff(); // interpolation space: variant
+  window->Render();
+  EXPECT_GT(mapper->GetShaderBuildCount(), afterLight);
+  const int settled = mapper->GetShaderBuildCount();
+  window->Render();
+  window->Render();
+  EXPECT_EQ(mapper->GetShaderBuildCount(), settled);
+  EXPECT_EQ(mapper->GetFailedSubstitutionCount(), 0);
+  std::printf("shader builds over the sequence: %d (variants: %s)\n", settled,
+    mapper->GetLastVariant().c_str());
+}

@@ -13,6 +13,8 @@
 
 #include "shadinglab/model/Shading.h"
 
+#include "shadinglabGLModule.h" // for export macro
+
 #include <vtkCompositePolyDataMapper.h>
 #include <vtkWeakPointer.h>
 
@@ -20,7 +22,7 @@
 
 class vtkShadingLabPolyDataMapper;
 
-class vtkShadingLabCompositePolyDataMapper : public vtkCompositePolyDataMapper
+class SHADINGLABGL_EXPORT vtkShadingLabCompositePolyDataMapper : public vtkCompositePolyDataMapper
 {
 public:
   static vtkShadingLabCompositePolyDataMapper* New();

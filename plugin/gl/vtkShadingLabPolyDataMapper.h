@@ -37,12 +37,14 @@
 
 #include "shadinglab/model/Shading.h"
 
+#include "shadinglabGLModule.h" // for export macro
+
 #include <vtkOpenGLPolyDataMapper.h>
 
 #include <memory>
 #include <string>
 
-class vtkShadingLabPolyDataMapper : public vtkOpenGLPolyDataMapper
+class SHADINGLABGL_EXPORT vtkShadingLabPolyDataMapper : public vtkOpenGLPolyDataMapper
 {
 public:
   static vtkShadingLabPolyDataMapper* New();

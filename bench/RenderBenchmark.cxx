@@ -11,6 +11,7 @@
 #include "AnalyticMeshes.h"
 #include "PolyDataMesh.h"
 #include "shadinglab/cpu/SoftwareRenderer.h"
+#include "vtkShadingLabPolyDataMapper.h"
 
 #include <benchmark/benchmark.h>
 
@@ -116,6 +117,11 @@ void BM_VtkOpenGL(benchmark::State& state)
   actor->GetProperty()->SetSpecular(0.3);
   actor->GetProperty()->SetDiffuse(0.7);
   actor->GetProperty()->SetSpecularPower(32);
+  if (interpolation == VTK_PBR)
+  {
+    actor->GetProperty()->SetMetallic(0.0);
+    actor->GetProperty()->SetRoughness(0.3);
+  }
   vtkNew<vtkRenderer> renderer;
   renderer->AddActor(actor);
   renderer->SetBackground(0.32, 0.34, 0.43);
@@ -138,7 +144,54 @@ void BM_VtkOpenGL(benchmark::State& state)
     window->Render();
     window->WaitForCompletion();
   }
-  state.SetLabel(interpolation == VTK_PHONG ? "vtk-phong llvmpipe" : "vtk-gouraud llvmpipe");
+  state.SetLabel(interpolation == VTK_PHONG ? "vtk-phong llvmpipe"
+      : interpolation == VTK_PBR          ? "vtk-pbr llvmpipe"
+                                          : "vtk-gouraud llvmpipe");
+}
+
+/// Our GPU mapper, each mode, same scene and window setup as BM_VtkOpenGL.
+void BM_ShadingLabGL(benchmark::State& state)
+{
+  if (!std::getenv("DISPLAY"))
+  {
+    state.SkipWithError("no DISPLAY: run under scripts/with-xvfb");
+    return;
+  }
+  const Scene& scene = GetScene(static_cast<int>(state.range(0)));
+  const int mode = static_cast<int>(state.range(1));
+  vtkNew<vtkShadingLabPolyDataMapper> mapper;
+  mapper->SetInputData(scene.polydata);
+  mapper->SetShadingMode(mode);
+  sl::Material<double> material;
+  material.model = sl::ReflectanceModel::BlinnPhong;
+  material.shininess = 32;
+  mapper->SetMaterial(material);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  vtkNew<vtkRenderer> renderer;
+  renderer->AddActor(actor);
+  renderer->SetBackground(0.32, 0.34, 0.43);
+  vtkCamera* cam = renderer->GetActiveCamera();
+  cam->SetPosition(scene.camera.position.x, scene.camera.position.y, scene.camera.position.z);
+  cam->SetFocalPoint(
+    scene.camera.focalPoint.x, scene.camera.focalPoint.y, scene.camera.focalPoint.z);
+  cam->SetViewUp(scene.camera.viewUp.x, scene.camera.viewUp.y, scene.camera.viewUp.z);
+  cam->SetViewAngle(scene.camera.viewAngle);
+  cam->SetClippingRange(scene.camera.nearClip, scene.camera.farClip);
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetMultiSamples(0);
+  window->SetSize(kWidth, kHeight);
+  window->AddRenderer(renderer);
+  window->Render();
+  for (auto _ : state)
+  {
+    cam->Azimuth(0.0);
+    window->Render();
+    window->WaitForCompletion();
+  }
+  state.SetLabel(std::string("shadinglab-gl ") +
+    cpu::ModeName(static_cast<cpu::ShadingMode>(mode)) + " llvmpipe");
 }
 
 void CpuArgs(benchmark::internal::Benchmark* b)
@@ -163,6 +216,11 @@ BENCHMARK(BM_VtkOpenGL)
   ->Args({ 0, VTK_PHONG })
   ->Args({ 1, VTK_GOURAUD })
   ->Args({ 1, VTK_PHONG })
+  ->Args({ 1, VTK_PBR })
+  ->Unit(benchmark::kMillisecond)
+  ->UseRealTime();
+BENCHMARK(BM_ShadingLabGL)
+  ->ArgsProduct({ { 1 }, { 0, 1, 2, 3, 4 } })
   ->Unit(benchmark::kMillisecond)
   ->UseRealTime();
 

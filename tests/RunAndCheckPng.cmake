@@ -1,0 +1,11 @@
+# Runs EXE OUT and fails unless OUT is a PNG of at least 1 KiB.
+file(REMOVE "${OUT}")
+execute_process(COMMAND "${EXE}" "${OUT}" RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "${EXE} exited with ${rc}")
+endif()
+file(SIZE "${OUT}" size)
+file(READ "${OUT}" magic LIMIT 4 HEX)
+if(NOT magic STREQUAL "89504e47" OR size LESS 1024)
+  message(FATAL_ERROR "${OUT} is not a PNG of >= 1 KiB (magic ${magic}, ${size} bytes)")
+endif()

@@ -290,6 +290,9 @@ void vtkShadingLabPolyDataMapper::SetMapperShaderParameters(
     {
       const double d[4] = { pos[0] - fp[0], pos[1] - fp[1], pos[2] - fp[2], 0.0 };
       view->MultiplyPoint(d, v);
+      // Unit direction: the shader uses it as is.
+      const sl::Vec3d unit = sl::NormalizeOr(sl::Vec3d(v[0], v[1], v[2]), sl::Vec3d(0, 0, 1));
+      v[0] = unit.x, v[1] = unit.y, v[2] = unit.z;
       v[3] = 0.0;
       attenuation[3 * count] = 1.0f;
     }

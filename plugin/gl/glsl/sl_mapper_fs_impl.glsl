@@ -48,11 +48,11 @@
   }
 #else
   {
-    // Phong / Cook-Torrance: interpolated normal, renormalized (VTK's
-    // normal code normalizes and flips it for back faces).
+    // Phong / Cook-Torrance: the interpolated normal, renormalized and
+    // flipped for back faces by VTK's //VTK::Normal::Impl.
     vec3 slP = vertexVC.xyz;
     vec3 slV = slCameraParallel == 1 ? vec3(0.0, 0.0, 1.0) : normalize(-slP);
-    slColor = Shade(slRho, slP, normalize(normalVCVSOutput), slV);
+    slColor = Shade(slRho, slP, normalVCVSOutput, slV);
   }
 #endif
   gl_FragData[0] = vec4(slColor, opacity);

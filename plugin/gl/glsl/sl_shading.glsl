@@ -12,7 +12,8 @@
 
 #define SL_MAX_LIGHTS 8
 
-uniform vec4 slLightVectorVC[SL_MAX_LIGHTS];   // xyz; w = 0 direction to light, 1 position
+// xyz; w = 0: unit direction to the light (normalized by the mapper), 1: position.
+uniform vec4 slLightVectorVC[SL_MAX_LIGHTS];
 uniform vec3 slLightIrradiance[SL_MAX_LIGHTS]; // I_L dw
 uniform vec3 slLightAttenuation[SL_MAX_LIGHTS];
 uniform vec3 slAmbient;                        // Ra Ia
@@ -34,7 +35,7 @@ bool LightIncidence(int j, vec3 P, out vec3 L, out vec3 irradiance)
   if (lv.w == 0.0)
 #endif
   {
-    L = normalize(lv.xyz);
+    L = lv.xyz;
     irradiance = slLightIrradiance[j];
     return true;
   }

@@ -223,3 +223,28 @@ TEST(BrdfTest, AbsurdMaterialsAreRejected)
     EXPECT_TRUE(sl::ValidateMaterial(p.material).empty()) << p.name;
   }
 }
+
+TEST(BrdfTest, MaterialsSerializeAndParseExactly)
+{
+  for (const auto& preset : sl::MaterialPresets())
+  {
+    sl::Material<double> m = preset.material;
+    m.lobeCount = 2;
+    m.lobes[0] = { 0.3, 0.17 };
+    m.lobes[1] = { 0.7, 0.61 };
+    m.variant = sl::SpecularVariant::Walter2007;
+    const std::string text = sl::SerializeMaterial(m);
+    sl::Material<double> back;
+    ASSERT_EQ(sl::ParseMaterial(text, back), "") << text;
+    EXPECT_EQ(sl::SerializeMaterial(back), text);
+    EXPECT_EQ(back.eta.y, m.eta.y);
+    EXPECT_EQ(back.lobes[1].m, 0.61);
+    EXPECT_EQ(back.model, m.model);
+  }
+  sl::Material<double> m;
+  EXPECT_NE(sl::ParseMaterial("kd=0.9;ks=0.5", m).find("kd + ks"), std::string::npos);
+  EXPECT_NE(sl::ParseMaterial("model=toon", m), "");
+  EXPECT_NE(sl::ParseMaterial("eta=1,2", m), "");
+  EXPECT_NE(sl::ParseMaterial("bogus=1", m), "");
+  EXPECT_NE(sl::ParseMaterial("m=nan", m), "");
+}

@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <limits>
+#include <cstdlib>
 #include <sstream>
 
 namespace shadinglab
@@ -238,6 +239,198 @@ bool F_SpectralToRGB(
     }
   }
   return true;
+}
+
+} // namespace shadinglab
+
+namespace shadinglab
+{
+
+namespace
+{
+const char* ModelName(ReflectanceModel m)
+{
+  switch (m)
+  {
+    case ReflectanceModel::Lambert:
+      return "lambert";
+    case ReflectanceModel::Phong:
+      return "phong";
+    case ReflectanceModel::BlinnPhong:
+      return "blinn-phong";
+    case ReflectanceModel::CookTorrance:
+      return "cook-torrance";
+  }
+  return "?";
+}
+
+std::vector<double> ParseNumbers(const std::string& text, bool& ok)
+{
+  std::vector<double> out;
+  std::stringstream ss(text);
+  std::string item;
+  ok = true;
+  while (std::getline(ss, item, ','))
+  {
+    char* end = nullptr;
+    const double v = std::strtod(item.c_str(), &end);
+    if (item.empty() || *end != '\0' || !std::isfinite(v))
+    {
+      ok = false;
+      return {};
+    }
+    out.push_back(v);
+  }
+  ok = ok && !out.empty();
+  return out;
+}
+} // namespace
+
+std::string SerializeMaterial(const Material<double>& m)
+{
+  std::ostringstream s;
+  s.precision(17);
+  auto rgb = [&](const char* key, const Vec3<double>& v) {
+    s << key << "=" << v.x << "," << v.y << "," << v.z << ";";
+  };
+  s << "model=" << ModelName(m.model) << ";kd=" << m.kd << ";ks=" << m.ks << ";";
+  rgb("ambient", m.ambient);
+  rgb("diffuse", m.diffuseColor);
+  rgb("specular", m.specularColor);
+  s << "shininess=" << m.shininess << ";m=";
+  for (int i = 0; i < m.lobeCount; ++i)
+  {
+    s << (i ? "," : "") << m.lobes[i].m;
+  }
+  s << ";w=";
+  for (int i = 0; i < m.lobeCount; ++i)
+  {
+    s << (i ? "," : "") << m.lobes[i].weight;
+  }
+  s << ";";
+  rgb("eta", m.eta);
+  rgb("k", m.k);
+  s << "variant=" << (m.variant == SpecularVariant::Walter2007 ? "walter" : "1982");
+  return s.str();
+}
+
+std::string ParseMaterial(const std::string& text, Material<double>& m)
+{
+  std::stringstream ss(text);
+  std::string pair;
+  std::vector<double> ms, ws;
+  while (std::getline(ss, pair, ';'))
+  {
+    if (pair.empty())
+    {
+      continue;
+    }
+    const auto eq = pair.find('=');
+    if (eq == std::string::npos)
+    {
+      return "material: '" + pair + "' is not key=value";
+    }
+    const std::string key = pair.substr(0, eq), value = pair.substr(eq + 1);
+    if (key == "model")
+    {
+      bool found = false;
+      for (auto model : { ReflectanceModel::Lambert, ReflectanceModel::Phong,
+             ReflectanceModel::BlinnPhong, ReflectanceModel::CookTorrance })
+      {
+        if (value == ModelName(model))
+        {
+          m.model = model;
+          found = true;
+        }
+      }
+      if (!found)
+      {
+        return "material: unknown model '" + value + "'";
+      }
+      continue;
+    }
+    if (key == "variant")
+    {
+      if (value != "1982" && value != "walter")
+      {
+        return "material: unknown variant '" + value + "'";
+      }
+      m.variant = value == "walter" ? SpecularVariant::Walter2007 : SpecularVariant::CookTorrance1982;
+      continue;
+    }
+    bool ok = false;
+    const std::vector<double> v = ParseNumbers(value, ok);
+    if (!ok)
+    {
+      return "material: bad number list for '" + key + "'";
+    }
+    auto rgb = [&](Vec3<double>& out) -> std::string {
+      if (v.size() != 3)
+      {
+        return "material: '" + key + "' needs 3 values";
+      }
+      out = { v[0], v[1], v[2] };
+      return {};
+    };
+    std::string problem;
+    if (key == "kd" || key == "ks" || key == "shininess")
+    {
+      if (v.size() != 1)
+      {
+        return "material: '" + key + "' needs 1 value";
+      }
+      (key == "kd" ? m.kd : key == "ks" ? m.ks : m.shininess) = v[0];
+    }
+    else if (key == "ambient")
+    {
+      problem = rgb(m.ambient);
+    }
+    else if (key == "diffuse")
+    {
+      problem = rgb(m.diffuseColor);
+    }
+    else if (key == "specular")
+    {
+      problem = rgb(m.specularColor);
+    }
+    else if (key == "eta")
+    {
+      problem = rgb(m.eta);
+    }
+    else if (key == "k")
+    {
+      problem = rgb(m.k);
+    }
+    else if (key == "m")
+    {
+      ms = v;
+    }
+    else if (key == "w")
+    {
+      ws = v;
+    }
+    else
+    {
+      return "material: unknown key '" + key + "'";
+    }
+    if (!problem.empty())
+    {
+      return problem;
+    }
+  }
+  if (!ms.empty())
+  {
+    if (ms.size() > static_cast<size_t>(kMaxLobes) || (!ws.empty() && ws.size() != ms.size()))
+    {
+      return "material: m and w need the same count, at most 4";
+    }
+    m.lobeCount = static_cast<int>(ms.size());
+    for (size_t i = 0; i < ms.size(); ++i)
+    {
+      m.lobes[i] = { ws.empty() ? 1.0 / static_cast<double>(ms.size()) : ws[i], ms[i] };
+    }
+  }
+  return ValidateMaterial(m);
 }
 
 } // namespace shadinglab

@@ -46,3 +46,22 @@ bool F_SpectralToRGB(
   double cosTheta_i, const std::vector<SpectralIndexSample>& samples, Vec3<double>& rgb);
 
 } // namespace shadinglab
+
+namespace shadinglab
+{
+
+/**
+ * The material as one line of `key=value` pairs separated by ';' (the form
+ * a ParaView property or a settings file stores), e.g.
+ * "model=cook-torrance;kd=0;ks=1;ambient=0.05,0.05,0.05;diffuse=1,1,1;
+ *  specular=1,1,1;shininess=32;m=0.2,0.6;w=0.4,0.6;eta=1.5,1.5,1.5;k=0,0,0;
+ *  variant=1982". Values are written with 17 significant digits, so
+ * ParseMaterial(SerializeMaterial(m)) == m exactly.
+ */
+std::string SerializeMaterial(const Material<double>& material);
+
+/// Parses SerializeMaterial's format (keys in any order, missing keys keep
+/// the defaults). Returns an empty string on success, else a one-line error.
+std::string ParseMaterial(const std::string& text, Material<double>& material);
+
+} // namespace shadinglab

@@ -97,7 +97,7 @@ inline V3 CornerContribution(const PolygonMesh& m, int64_t b, int64_t n, int64_t
       }
       // Thurmer & Wuthrich 1998: angle at the corner times the unit normal.
       const double cosA = std::clamp(DotV(e1, e2) / std::sqrt(l1 * l2), -1.0, 1.0);
-      const double s = std::acos(cosA) / areaLength;
+      const double s = AcosAbramowitzStegun(cosA) / areaLength;
       return { areaVector.x * s, areaVector.y * s, areaVector.z * s };
     }
   }
@@ -148,6 +148,51 @@ void ComputeVertexNormalsNoSplit(
       continue;
     }
     const double len = std::sqrt(DotV(a, a));
+    if (n == 3 && (weighting == NormalWeighting::Max || weighting == NormalWeighting::Angle) &&
+      len >= kTinyWeight)
+    {
+      // Triangles: every corner's cross product is the area vector, so the
+      // three corners share the edge lengths computed once.
+      const int64_t i0 = m.connectivity[b], i1 = m.connectivity[b + 1], i2 = m.connectivity[b + 2];
+      const double* p0 = m.points + 3 * i0;
+      const double* p1 = m.points + 3 * i1;
+      const double* p2 = m.points + 3 * i2;
+      const V3 e01 = Sub(p1, p0), e12 = Sub(p2, p1), e20 = Sub(p0, p2);
+      const double l01 = DotV(e01, e01), l12 = DotV(e12, e12), l20 = DotV(e20, e20);
+      if (l01 < kTinyWeight || l12 < kTinyWeight || l20 < kTinyWeight)
+      {
+        continue;
+      }
+      double w[3];
+      if (weighting == NormalWeighting::Max)
+      {
+        // Max 1999: (e1 x e2)/(|e1|^2 |e2|^2) = area vector / (l l') here.
+        // One division: 1/(l01 l20) = l12 / (l01 l12 l20), and so on.
+        const double inv = 1.0 / (l01 * l12 * l20);
+        w[0] = l12 * inv;
+        w[1] = l20 * inv;
+        w[2] = l01 * inv;
+      }
+      else
+      {
+        // Corner angles from the law of cosines, over |area vector|.
+        const double inv = 1.0 / len;
+        const double s01 = std::sqrt(l01), s12 = std::sqrt(l12), s20 = std::sqrt(l20);
+        const double half = 0.5 / (s01 * s12 * s20);
+        w[0] = AcosAbramowitzStegun(std::clamp((l01 + l20 - l12) * s12 * half, -1.0, 1.0)) * inv;
+        w[1] = AcosAbramowitzStegun(std::clamp((l01 + l12 - l20) * s20 * half, -1.0, 1.0)) * inv;
+        w[2] = AcosAbramowitzStegun(std::clamp((l12 + l20 - l01) * s01 * half, -1.0, 1.0)) * inv;
+      }
+      const int64_t ids[3] = { i0, i1, i2 };
+      for (int k = 0; k < 3; ++k)
+      {
+        double* o = out + 3 * ids[k];
+        o[0] += a.x * w[k];
+        o[1] += a.y * w[k];
+        o[2] += a.z * w[k];
+      }
+      continue;
+    }
     for (int64_t k = 0; k < n; ++k)
     {
       const V3 c = CornerContribution(m, b, n, k, a, len, weighting);

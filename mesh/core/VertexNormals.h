@@ -5,6 +5,8 @@
 // needed for this, and none is built (see README "Where OpenMesh is used").
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -54,6 +56,27 @@ struct NormalResult
   int64_t boundaryEdges = 0;
   int64_t splitPoints = 0;       ///< points added by splitting
 };
+
+/**
+ * acos(x) for x in [-1, 1]: Abramowitz & Stegun, Handbook of Mathematical
+ * Functions, eq. 4.4.46, acos(x) = sqrt(1 - x) (a0 + a1 x + ... + a7 x^7) on
+ * [0, 1] with |error| <= 2e-8 rad, and acos(-x) = pi - acos(x). Used for
+ * angle weights, where 2e-8 rad is far below any effect on a normal, at a
+ * fraction of std::acos's cost (tested against it in NormalsTest).
+ */
+inline double AcosAbramowitzStegun(double x)
+{
+  const bool negative = x < 0;
+  x = std::min(std::abs(x), 1.0);
+  const double p = 1.5707963050 +
+    x * (-0.2145988016 +
+          x * (0.0889789874 +
+                x * (-0.0501743046 +
+                      x * (0.0308918810 +
+                            x * (-0.0170881256 + x * (0.0066700901 + x * -0.0012624911))))));
+  const double r = std::sqrt(1.0 - x) * p;
+  return negative ? 3.14159265358979323846 - r : r;
+}
 
 /// Computes the normals. Zero-area polygons contribute nothing; a point with
 /// no usable face gets (0, 0, 1) rather than NaN.

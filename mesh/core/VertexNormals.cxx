@@ -215,9 +215,14 @@ NormalResult ComputeVertexNormals(const PolygonMesh& m, const NormalOptions& opt
   const int64_t nc = np > 0 ? m.offsets[np] : 0;
   r.connectivity.assign(m.connectivity, m.connectivity + nc);
 
-  // Face area vectors and unit normals.
-  std::vector<V3> area(static_cast<size_t>(np));
-  std::vector<double> areaLength(static_cast<size_t>(np));
+  // Scratch arrays persist per thread across calls: a filter re-run on a
+  // large mesh then reuses their pages instead of faulting in ~100 MB anew
+  // (measured: a third of the time was the kernel zeroing fresh pages).
+  static thread_local std::vector<V3> area;
+  static thread_local std::vector<double> areaLength;
+  static thread_local std::vector<int64_t> start, corners, cornerPolygon, fill;
+  area.resize(static_cast<size_t>(np));
+  areaLength.resize(static_cast<size_t>(np));
   for (int64_t p = 0; p < np; ++p)
   {
     area[p] = AreaVector(m, p);
@@ -225,16 +230,16 @@ NormalResult ComputeVertexNormals(const PolygonMesh& m, const NormalOptions& opt
   }
 
   // Vertex -> corners (CSR by counting sort): corner index c = offset + k.
-  std::vector<int64_t> start(static_cast<size_t>(nv + 1), 0);
+  start.assign(static_cast<size_t>(nv + 1), 0);
   for (int64_t c = 0; c < nc; ++c)
   {
     ++start[m.connectivity[c] + 1];
   }
   std::partial_sum(start.begin(), start.end(), start.begin());
-  std::vector<int64_t> corners(static_cast<size_t>(nc));
-  std::vector<int64_t> cornerPolygon(static_cast<size_t>(nc));
+  corners.resize(static_cast<size_t>(nc));
+  cornerPolygon.resize(static_cast<size_t>(nc));
   {
-    std::vector<int64_t> fill(start.begin(), start.end() - 1);
+    fill.assign(start.begin(), start.end() - 1);
     for (int64_t p = 0; p < np; ++p)
     {
       for (int64_t c = m.offsets[p]; c < m.offsets[p + 1]; ++c)

@@ -100,28 +100,10 @@ void BM_Cpu(benchmark::State& state)
   state.SetLabel(std::string(cpu::ModeName(opt.mode)) + " threads=" + std::to_string(opt.threads));
 }
 
-void BM_VtkOpenGL(benchmark::State& state)
+/// Renders `actor` in an offscreen 1920x1080 window with the scene's camera,
+/// once to upload, then times steady-state redraws.
+void TimeFrames(benchmark::State& state, const Scene& scene, vtkActor* actor)
 {
-  if (!std::getenv("DISPLAY"))
-  {
-    state.SkipWithError("no DISPLAY: run under xvfb-run for the VTK OpenGL rows");
-    return;
-  }
-  const Scene& scene = GetScene(static_cast<int>(state.range(0)));
-  const int interpolation = static_cast<int>(state.range(1)); // VTK_GOURAUD / VTK_PHONG
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputData(scene.polydata);
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  actor->GetProperty()->SetInterpolation(interpolation);
-  actor->GetProperty()->SetSpecular(0.3);
-  actor->GetProperty()->SetDiffuse(0.7);
-  actor->GetProperty()->SetSpecularPower(32);
-  if (interpolation == VTK_PBR)
-  {
-    actor->GetProperty()->SetMetallic(0.0);
-    actor->GetProperty()->SetRoughness(0.3);
-  }
   vtkNew<vtkRenderer> renderer;
   renderer->AddActor(actor);
   renderer->SetBackground(0.32, 0.34, 0.43);
@@ -144,6 +126,31 @@ void BM_VtkOpenGL(benchmark::State& state)
     window->Render();
     window->WaitForCompletion();
   }
+}
+
+void BM_VtkOpenGL(benchmark::State& state)
+{
+  if (!std::getenv("DISPLAY"))
+  {
+    state.SkipWithError("no DISPLAY: run under xvfb-run for the VTK OpenGL rows");
+    return;
+  }
+  const Scene& scene = GetScene(static_cast<int>(state.range(0)));
+  const int interpolation = static_cast<int>(state.range(1)); // VTK_GOURAUD / VTK_PHONG
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(scene.polydata);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetInterpolation(interpolation);
+  actor->GetProperty()->SetSpecular(0.3);
+  actor->GetProperty()->SetDiffuse(0.7);
+  actor->GetProperty()->SetSpecularPower(32);
+  if (interpolation == VTK_PBR)
+  {
+    actor->GetProperty()->SetMetallic(0.0);
+    actor->GetProperty()->SetRoughness(0.3);
+  }
+  TimeFrames(state, scene, actor);
   state.SetLabel(interpolation == VTK_PHONG ? "vtk-phong llvmpipe"
       : interpolation == VTK_PBR          ? "vtk-pbr llvmpipe"
                                           : "vtk-gouraud llvmpipe");
@@ -168,28 +175,7 @@ void BM_ShadingLabGL(benchmark::State& state)
   mapper->SetMaterial(material);
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);
-  vtkNew<vtkRenderer> renderer;
-  renderer->AddActor(actor);
-  renderer->SetBackground(0.32, 0.34, 0.43);
-  vtkCamera* cam = renderer->GetActiveCamera();
-  cam->SetPosition(scene.camera.position.x, scene.camera.position.y, scene.camera.position.z);
-  cam->SetFocalPoint(
-    scene.camera.focalPoint.x, scene.camera.focalPoint.y, scene.camera.focalPoint.z);
-  cam->SetViewUp(scene.camera.viewUp.x, scene.camera.viewUp.y, scene.camera.viewUp.z);
-  cam->SetViewAngle(scene.camera.viewAngle);
-  cam->SetClippingRange(scene.camera.nearClip, scene.camera.farClip);
-  vtkNew<vtkRenderWindow> window;
-  window->SetOffScreenRendering(1);
-  window->SetMultiSamples(0);
-  window->SetSize(kWidth, kHeight);
-  window->AddRenderer(renderer);
-  window->Render();
-  for (auto _ : state)
-  {
-    cam->Azimuth(0.0);
-    window->Render();
-    window->WaitForCompletion();
-  }
+  TimeFrames(state, scene, actor);
   state.SetLabel(std::string("shadinglab-gl ") +
     cpu::ModeName(static_cast<cpu::ShadingMode>(mode)) + " llvmpipe");
 }

@@ -12,6 +12,8 @@
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
+#include "MeshTestUtil.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -29,29 +31,6 @@ vtkSmartPointer<vtkPolyData> Read(const std::string& name)
   return mesh;
 }
 
-// Signed volume by the divergence theorem (fan-triangulated polygons).
-double SignedVolume(vtkPolyData* mesh)
-{
-  double volume = 0;
-  vtkNew<vtkIdList> ids;
-  auto* polys = mesh->GetPolys();
-  for (vtkIdType c = 0; c < polys->GetNumberOfCells(); ++c)
-  {
-    polys->GetCellAtId(c, ids);
-    double p0[3];
-    mesh->GetPoint(ids->GetId(0), p0);
-    for (vtkIdType k = 1; k + 1 < ids->GetNumberOfIds(); ++k)
-    {
-      double p1[3], p2[3];
-      mesh->GetPoint(ids->GetId(k), p1);
-      mesh->GetPoint(ids->GetId(k + 1), p2);
-      volume += (p0[0] * (p1[1] * p2[2] - p1[2] * p2[1]) - p0[1] * (p1[0] * p2[2] - p1[2] * p2[0]) +
-                  p0[2] * (p1[0] * p2[1] - p1[1] * p2[0])) /
-        6.0;
-    }
-  }
-  return volume;
-}
 
 } // namespace
 
@@ -75,13 +54,13 @@ TEST(DatasetsTest, ClosedSurfacesAreOrientedOutwards)
   // Volumes: 4/3 pi for the unit sphere (inscribed polyhedra fall short),
   // 2 pi^2 R r^2 for the torus, 4/3 pi abc for the ellipsoid.
   const double pi = 3.14159265358979;
-  EXPECT_NEAR(SignedVolume(Read("uv_sphere_64x32.vtp")), 4.0 / 3.0 * pi, 0.02);
-  EXPECT_NEAR(SignedVolume(Read("icosphere_4.vtp")), 4.0 / 3.0 * pi, 0.02);
-  EXPECT_NEAR(SignedVolume(Read("torus_96x48.vtp")), 2 * pi * pi * 1.0 * 0.16, 0.02);
-  EXPECT_NEAR(SignedVolume(Read("ellipsoid_64x32.vtp")), 4.0 / 3.0 * pi * 1.5 * 0.7, 0.03);
-  EXPECT_GT(SignedVolume(Read("cylinder_8.stl")), 0.0);
-  EXPECT_GT(SignedVolume(Read("sphere_lowpoly.ply")), 0.0);
-  EXPECT_GT(SignedVolume(Read("metaballs_isosurface.vtp")), 0.0);
+  EXPECT_NEAR(shadinglab::testing::SignedVolume(Read("uv_sphere_64x32.vtp")), 4.0 / 3.0 * pi, 0.02);
+  EXPECT_NEAR(shadinglab::testing::SignedVolume(Read("icosphere_4.vtp")), 4.0 / 3.0 * pi, 0.02);
+  EXPECT_NEAR(shadinglab::testing::SignedVolume(Read("torus_96x48.vtp")), 2 * pi * pi * 1.0 * 0.16, 0.02);
+  EXPECT_NEAR(shadinglab::testing::SignedVolume(Read("ellipsoid_64x32.vtp")), 4.0 / 3.0 * pi * 1.5 * 0.7, 0.03);
+  EXPECT_GT(shadinglab::testing::SignedVolume(Read("cylinder_8.stl")), 0.0);
+  EXPECT_GT(shadinglab::testing::SignedVolume(Read("sphere_lowpoly.ply")), 0.0);
+  EXPECT_GT(shadinglab::testing::SignedVolume(Read("metaballs_isosurface.vtp")), 0.0);
 }
 
 TEST(DatasetsTest, ExactNormalsAreUnitAndOutward)

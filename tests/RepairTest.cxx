@@ -16,6 +16,8 @@
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
+#include "MeshTestUtil.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -47,27 +49,6 @@ vtkSmartPointer<vtkPolyData> Soup(vtkPolyData* mesh)
   return soup;
 }
 
-double SignedVolume(vtkPolyData* mesh)
-{
-  double volume = 0;
-  vtkNew<vtkIdList> ids;
-  for (vtkIdType c = 0; c < mesh->GetNumberOfPolys(); ++c)
-  {
-    mesh->GetPolys()->GetCellAtId(c, ids);
-    double p0[3];
-    mesh->GetPoint(ids->GetId(0), p0);
-    for (vtkIdType k = 1; k + 1 < ids->GetNumberOfIds(); ++k)
-    {
-      double p1[3], p2[3];
-      mesh->GetPoint(ids->GetId(k), p1);
-      mesh->GetPoint(ids->GetId(k + 1), p2);
-      volume += (p0[0] * (p1[1] * p2[2] - p1[2] * p2[1]) - p0[1] * (p1[0] * p2[2] - p1[2] * p2[0]) +
-                  p0[2] * (p1[0] * p2[1] - p1[1] * p2[0])) /
-        6.0;
-    }
-  }
-  return volume;
-}
 
 vtkSmartPointer<vtkPolyData> Icosphere(int level)
 {
@@ -160,7 +141,7 @@ TEST(RepairTest, RemovesDegenerateFacesAndCountsThem)
 TEST(RepairTest, OrientationIsMadeConsistentAndOutward)
 {
   auto pd = Icosphere(2);
-  const double volume = SignedVolume(pd);
+  const double volume = shadinglab::testing::SignedVolume(pd);
   // Flip a random third of the faces, then the whole sphere inside out.
   std::mt19937 rng(5);
   vtkNew<vtkCellArray> polys;
@@ -182,7 +163,7 @@ TEST(RepairTest, OrientationIsMadeConsistentAndOutward)
   repair->SetInputData(pd);
   repair->Update();
   EXPECT_EQ(repair->GetNumberOfFlippedCells(), flippedByUs);
-  EXPECT_NEAR(SignedVolume(repair->GetOutput()), volume, 1e-9);
+  EXPECT_NEAR(shadinglab::testing::SignedVolume(repair->GetOutput()), volume, 1e-9);
   EXPECT_EQ(repair->GetNumberOfDuplicatedPoints(), 0);
 }
 

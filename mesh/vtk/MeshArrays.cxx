@@ -7,6 +7,7 @@
 #include <vtkNew.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkTriangleFilter.h>
 #include <vtkTypeInt64Array.h>
 
 #include <type_traits>
@@ -54,6 +55,21 @@ void FlatPolygonsFromPolyData(vtkPolyData* input, FlatPolygons& out)
   }
   out.offsets = out.offsetStorage.data();
   out.connectivity = out.connectivityStorage.data();
+}
+
+vtkSmartPointer<vtkPolyData> WithoutStrips(vtkPolyData* input, bool keepLinesAndVerts)
+{
+  if (input->GetNumberOfStrips() == 0 &&
+    (keepLinesAndVerts || (input->GetNumberOfLines() == 0 && input->GetNumberOfVerts() == 0)))
+  {
+    return input;
+  }
+  vtkNew<vtkTriangleFilter> triangles;
+  triangles->SetInputData(input);
+  triangles->SetPassLines(keepLinesAndVerts);
+  triangles->SetPassVerts(keepLinesAndVerts);
+  triangles->Update();
+  return triangles->GetOutput();
 }
 
 std::vector<int64_t> LineSegments(vtkPolyData* input)

@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <vector>
 
+#include <vtkSmartPointer.h>
+
 class vtkPolyData;
 
 namespace shadinglab::mesh
@@ -29,6 +31,10 @@ struct FlatPolygons
 /// Views (or copies) points and polygons of a polydata. Strips must have
 /// been triangulated by the caller. The polydata must outlive the result.
 void FlatPolygonsFromPolyData(vtkPolyData* input, FlatPolygons& out);
+
+/// The input itself when it has no triangle strips, else a copy with the
+/// strips triangulated (lines and vertices kept when `keepLinesAndVerts`).
+vtkSmartPointer<vtkPolyData> WithoutStrips(vtkPolyData* input, bool keepLinesAndVerts);
 
 /// Point id pairs of the input's line cells (each segment of a polyline).
 std::vector<int64_t> LineSegments(vtkPolyData* input);

@@ -68,17 +68,7 @@ int vtkMeshRepair::RequestData(
   {
     return 1;
   }
-  vtkSmartPointer<vtkPolyData> source = input;
-  if (input->GetNumberOfStrips() > 0 || input->GetNumberOfLines() > 0 ||
-    input->GetNumberOfVerts() > 0)
-  {
-    vtkNew<vtkTriangleFilter> triangles;
-    triangles->SetInputData(input);
-    triangles->PassLinesOff();
-    triangles->PassVertsOff();
-    triangles->Update();
-    source = triangles->GetOutput();
-  }
+  vtkSmartPointer<vtkPolyData> source = shadinglab::mesh::WithoutStrips(input, false);
   namespace slm = shadinglab::mesh;
   slm::FlatPolygons flat;
   slm::FlatPolygonsFromPolyData(source, flat);

@@ -86,15 +86,7 @@ int vtkOpenSubdivRefine::RequestData(
   {
     return 1;
   }
-  vtkSmartPointer<vtkPolyData> source = input;
-  if (input->GetNumberOfStrips() > 0)
-  {
-    vtkNew<vtkTriangleFilter> triangles;
-    triangles->SetInputData(input);
-    triangles->PassLinesOn();
-    triangles->Update();
-    source = triangles->GetOutput();
-  }
+  vtkSmartPointer<vtkPolyData> source = shadinglab::mesh::WithoutStrips(input, true);
   namespace slm = shadinglab::mesh;
   slm::FlatPolygons flat;
   slm::FlatPolygonsFromPolyData(source, flat);

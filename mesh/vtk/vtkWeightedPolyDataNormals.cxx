@@ -34,16 +34,7 @@ int vtkWeightedPolyDataNormals::RequestData(
   {
     return 1;
   }
-  vtkSmartPointer<vtkPolyData> source = input;
-  if (input->GetNumberOfStrips() > 0)
-  {
-    vtkNew<vtkTriangleFilter> triangles;
-    triangles->SetInputData(input);
-    triangles->PassLinesOn();
-    triangles->PassVertsOn();
-    triangles->Update();
-    source = triangles->GetOutput();
-  }
+  vtkSmartPointer<vtkPolyData> source = shadinglab::mesh::WithoutStrips(input, true);
   namespace slm = shadinglab::mesh;
   slm::FlatPolygons flat;
   slm::FlatPolygonsFromPolyData(source, flat);

@@ -472,6 +472,7 @@ const char* kCompareHelp =
   "\n"
   "Renders INPUT once per shading mode (default: flat,gouraud,phong,fast-phong,cook-torrance)\n"
   "with the same camera, lights and material, side by side in one labelled PNG.\n"
+  "--backend cpu (default for compare) | gpu | auto.\n"
   "--size is the size of one panel (default 400x300). Other options as 'render'.\n"
   "\n";
 
@@ -518,16 +519,23 @@ void DrawLabel(std::vector<uint8_t>& canvas, int canvasWidth, int canvasHeight, 
 int RunCompare(int argc, char** argv)
 {
   // Default panel size for a comparison strip.
-  bool hasSize = false;
+  bool hasSize = false, hasBackend = false;
   for (int i = 0; i < argc; ++i)
   {
     hasSize |= std::string(argv[i]).rfind("--size", 0) == 0;
+    hasBackend |= std::string(argv[i]).rfind("--backend", 0) == 0;
   }
   std::vector<std::string> arguments(argv, argv + argc);
   if (!hasSize)
   {
     arguments.push_back("--size");
     arguments.push_back("400x300");
+  }
+  if (!hasBackend)
+  {
+    // The CPU renderer is the reference: comparisons default to it.
+    arguments.push_back("--backend");
+    arguments.push_back("cpu");
   }
   std::vector<char*> raw;
   for (auto& a : arguments)
@@ -563,7 +571,22 @@ int RunCompare(int argc, char** argv)
   const int canvasW = static_cast<int>(modes.size()) * (W + kGap) - kGap;
   const int canvasH = H + kLabelBar;
   std::vector<uint8_t> canvas(static_cast<size_t>(canvasW) * canvasH * 3, 24);
+  bool useGpu = false;
+  if (scene.backend != "cpu")
+  {
+    std::string why;
+    useGpu = gl::GpuAvailable(why);
+    if (!useGpu && scene.backend == "gpu")
+    {
+      throw UsageError("--backend gpu: " + why);
+    }
+    if (!useGpu)
+    {
+      std::cerr << "shadinglab compare: backend auto: " << why << "; using the CPU renderer\n";
+    }
+  }
   cpu::SoftwareRenderer renderer;
+  cpu::Image gpuImage;
   for (size_t m = 0; m < modes.size(); ++m)
   {
     cpu::RenderOptions options = scene.options;
@@ -571,10 +594,28 @@ int RunCompare(int argc, char** argv)
     const cpu::Image* image = nullptr;
     try
     {
-      image = &renderer.Render(scene.mesh, scene.camera, scene.lighting.Cast<float>(),
-        scene.material.Cast<float>(), options);
+      if (useGpu)
+      {
+        Material<double> material = scene.material;
+        if (modes[m] == cpu::ShadingMode::FastPhong &&
+          material.model == ReflectanceModel::CookTorrance)
+        {
+          material.model = ReflectanceModel::BlinnPhong; // as the mapper does
+        }
+        gpuImage = gl::RenderGpu(scene.polydata, scene.camera, scene.lighting, material, options);
+        image = &gpuImage;
+      }
+      else
+      {
+        image = &renderer.Render(scene.mesh, scene.camera, scene.lighting.Cast<float>(),
+          scene.material.Cast<float>(), options);
+      }
     }
     catch (const std::invalid_argument& e)
+    {
+      throw UsageError(std::string(cpu::ModeName(modes[m])) + ": " + e.what());
+    }
+    catch (const std::runtime_error& e)
     {
       throw UsageError(std::string(cpu::ModeName(modes[m])) + ": " + e.what());
     }
@@ -586,7 +627,8 @@ int RunCompare(int argc, char** argv)
         rgb8.begin() + static_cast<size_t>(y + 1) * W * 3,
         canvas.begin() + (static_cast<size_t>(y + kLabelBar) * canvasW + x0) * 3);
     }
-    DrawLabel(canvas, canvasW, canvasH, x0 + 8, 4, cpu::ModeName(modes[m]));
+    DrawLabel(canvas, canvasW, canvasH, x0 + 8, 4,
+      std::string(cpu::ModeName(modes[m])) + (useGpu ? " (gpu)" : " (cpu)"));
   }
   cpu::Image strip;
   strip.width = canvasW;

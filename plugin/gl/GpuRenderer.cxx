@@ -62,6 +62,7 @@ cpu::Image RenderGpu(vtkPolyData* mesh, const cpu::Camera& cam, const Lighting<d
   mapper->SetShadingMode(static_cast<int>(options.mode));
   mapper->SetPerspectiveCorrect(options.interpolation == cpu::InterpolationSpace::Perspective);
   mapper->SetMaterial(material);
+  mapper->SetFastPhongMaxSpread(options.fastPhongMaxSpread);
   mapper->ScalarVisibilityOn();
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);

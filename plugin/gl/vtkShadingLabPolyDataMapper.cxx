@@ -22,6 +22,7 @@
 #include <vtkSmartPointer.h>
 #include <vtkTypeInt64Array.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <functional>
@@ -326,7 +327,8 @@ void vtkShadingLabPolyDataMapper::SetMapperShaderParameters(
     // rho: VTK's diffuseColor divided by the property's Diffuse coefficient.
     diffuseCoefficient > 0 ? static_cast<float>(1.0 / diffuseCoefficient) : 1.0f,
     static_cast<float>(dc[0]), static_cast<float>(dc[1]), static_cast<float>(dc[2]),
-    camera->GetParallelProjection() ? 1.0f : 0.0f };
+    camera->GetParallelProjection() ? 1.0f : 0.0f,
+    static_cast<float>(std::cos(this->FastPhongMaxSpread * sl::kPi<double> / 180.0)) };
   block.insert(block.end(), std::begin(values), std::end(values));
   float weights[sl::kMaxLobes], ms[sl::kMaxLobes];
   for (int k = 0; k < sl::kMaxLobes; ++k)
@@ -363,6 +365,7 @@ void vtkShadingLabPolyDataMapper::SetMapperShaderParameters(
   program->SetUniformf("slInvDiffuseIntensity", values[16]);
   program->SetUniform3f("slDiffuseColor", values + 17);
   program->SetUniformi("slCameraParallel", camera->GetParallelProjection() ? 1 : 0);
+  program->SetUniformf("slFastPhongMinCos", values[21]);
   program->SetUniform1fv("slLobeWeight", sl::kMaxLobes, weights);
   program->SetUniform1fv("slLobeM", sl::kMaxLobes, ms);
   program->SetUniform4f("slViewport", viewport);

@@ -73,6 +73,14 @@ public:
   vtkBooleanMacro(PerspectiveCorrect, bool);
   ///@}
 
+  ///@{
+  /// FAST_PHONG: fragments whose interpolated normal is more than this many
+  /// degrees from the expansion point's normal are evaluated exactly
+  /// (default 30, as the CPU renderer's per-triangle limit; 180 disables).
+  vtkSetClampMacro(FastPhongMaxSpread, double, 0.0, 180.0);
+  vtkGetMacro(FastPhongMaxSpread, double);
+  ///@}
+
   /// The material. Rebuilds shaders only when the variant changes (model,
   /// specular on/off, mixture size, conductor or not).
   void SetMaterial(const shadinglab::Material<double>& material);
@@ -99,6 +107,7 @@ protected:
 
   int ShadingMode = PHONG;
   bool PerspectiveCorrect = true;
+  double FastPhongMaxSpread = 30.0;
   int ShaderBuildCount = 0;
   int FailedSubstitutions = 0;
   int UniformUploads = 0;

@@ -1,6 +1,7 @@
 // ShadingLab fragment-shader declarations (vtkShadingLabPolyDataMapper).
 uniform int slCameraParallel;
 uniform float slInvDiffuseIntensity;
+uniform float slFastPhongMinCos; // cos of the fast-phong spread limit
 #if SL_MODE == 1
 SL_INTERP in vec3 slGouraudFrontVSOut;
 SL_INTERP in vec3 slGouraudBackVSOut;

@@ -24,6 +24,13 @@
     vec3 slN0 = slNf - slA * slUV.x - slB * slUV.y;
     vec3 slP0 = slProvokingVCVSOut.xyz;
     vec3 slV0 = slCameraParallel == 1 ? vec3(0.0, 0.0, 1.0) : normalize(-slP0);
+    // Where the normal has turned more than the spread limit away from the
+    // expansion point's, the quadratic is unreliable: evaluate exactly.
+    // (Per fragment here; the CPU decides per triangle from its vertex
+    // normals, which a fragment shader cannot see.)
+    float slCosSpread = dot(slN0, slNf) * inversesqrt(max(dot(slN0, slN0) * dot(slNf, slNf), 1e-24));
+    bool slExact = slCosSpread < slFastPhongMinCos;
+    vec3 slNexact = normalize(slNf);
     slColor = slAmbient;
     for (int j = 0; j < SL_LIGHT_COUNT; ++j)
     {
@@ -32,7 +39,7 @@
       {
         continue;
       }
-      float slNoL = min(FastPhongQuadratic(slL, slN0, slA, slB, slUV), 1.0);
+      float slNoL = min(slExact ? dot(slL, slNexact) : FastPhongQuadratic(slL, slN0, slA, slB, slUV), 1.0);
       if (!(slNoL > 0.0))
       {
         continue;
@@ -40,7 +47,7 @@
       vec3 slF = slRho * (slKd * Fd_Lambert());
 #if SL_SPECULAR
       vec3 slH = HalfVector(slL, slV0, normalize(slN0));
-      float slNoH = FastPhongQuadratic(slH, slN0, slA, slB, slUV);
+      float slNoH = slExact ? dot(slH, slNexact) : FastPhongQuadratic(slH, slN0, slA, slB, slUV);
       slF += slSpecularColor * (slKs * Fs_BlinnPhong(slNoH, slShininess));
 #endif
       slColor += slIrr * slF * slNoL;

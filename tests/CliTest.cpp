@@ -226,6 +226,8 @@ TEST(CliTest, RenderBadInputExitsTwoWithOneLine)
     "render " + good + " --zoom -1" + out,
     "render " + good + " --light dir:0,0,0" + out,
     "render " + good + " --light sun:1,1,1" + out,
+    "render " + good + " --light spot:0,0,3:0,0,-1:120" + out, // cone over 90 degrees
+    "render " + good + " --light spot:0,0,3:0,0,0:20" + out,   // no axis
     "render " + good + " --mode fast-phong --material gold" + out,
     "render " + good + " --kd 2" + out,
     "render " + good + " --interp curved" + out,
@@ -300,7 +302,8 @@ TEST(CliTest, NormalsBadInputExitsTwoWithOneLine)
 TEST(CliTest, RenderUsesTheMeshFilters)
 {
   const std::string out = ::testing::TempDir() + "/shadinglab_render_filters.png";
-  auto r = RunCli("render " + kData + "icosphere_1.vtp --backend cpu --size 64x48 --subdivide 2 --stats --out " + out);
+  auto r = RunCli("render " + kData + "icosphere_1.vtp --backend cpu --size 64x48 --subdivide 2 --stats --out " + out +
+    " --light spot:0,0,3:0,0,-1:25:2 --light dir:1,0,0");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("\"triangles\":1280"), std::string::npos) << r.out;
   EXPECT_NE(r.out.find("\"normals_computed\":false"), std::string::npos) << r.out;

@@ -47,8 +47,9 @@ const char* kRenderHelp =
   "  --azimuth DEG --elevation DEG --zoom F   camera about the fitted view\n"
   "  --parallel          parallel projection\n"
   "  --camera-position X,Y,Z --focal-point X,Y,Z --view-up X,Y,Z --view-angle DEG\n"
-  "  --light dir:X,Y,Z | point:X,Y,Z   (repeatable; world coordinates, direction\n"
-  "                      towards the light; default: one key light above-left of the camera)\n"
+  "  --light dir:X,Y,Z | point:X,Y,Z | spot:X,Y,Z:DX,DY,DZ:ANGLE[:EXP]\n"
+  "                      (repeatable; world coordinates; dir points towards the light;\n"
+  "                      default: one key light above-left of the camera)\n"
   "  --light-intensity I  intensity of every light (default 1)\n"
   "  --ssaa N            supersampling N x N (default 1)\n"
   "  --threads N         worker threads (default: all cores)\n"
@@ -347,9 +348,36 @@ Scene SceneFromArguments(int argc, char** argv, const char* help, bool compare)
       light.type = LightType::Point;
       light.vector = ParseVector(spec.substr(6), "--light point");
     }
+    else if (spec.rfind("spot:", 0) == 0)
+    {
+      // spot:X,Y,Z:DX,DY,DZ:ANGLE[:EXPONENT]
+      std::vector<std::string> parts;
+      std::stringstream ss(spec.substr(5));
+      std::string part;
+      while (std::getline(ss, part, ':'))
+      {
+        parts.push_back(part);
+      }
+      if (parts.size() < 3 || parts.size() > 4)
+      {
+        throw UsageError("--light spot:X,Y,Z:DX,DY,DZ:ANGLE[:EXPONENT] (got '" + spec + "')");
+      }
+      light.type = LightType::Point;
+      light.vector = ParseVector(parts[0], "--light spot position");
+      light.spotDirection = ParseVector(parts[1], "--light spot direction");
+      light.coneAngle = ParseDouble(parts[2], "--light spot angle");
+      light.coneExponent = parts.size() == 4 ? ParseDouble(parts[3], "--light spot exponent") : 1.0;
+      if (!(Length(light.spotDirection) > 0) || !(light.coneAngle > 0 && light.coneAngle <= 90) ||
+        !(light.coneExponent >= 0 && light.coneExponent <= 128))
+      {
+        throw UsageError(
+          "--light spot: direction must be non-zero, angle in (0, 90], exponent in [0, 128]");
+      }
+    }
     else
     {
-      throw UsageError("--light must be dir:X,Y,Z or point:X,Y,Z (got '" + spec + "')");
+      throw UsageError("--light must be dir:X,Y,Z, point:X,Y,Z or spot:X,Y,Z:DX,DY,DZ:ANGLE[:EXP] "
+                       "(got '" + spec + "')");
     }
     light.intensity = Vec3<double>(lightIntensity, lightIntensity, lightIntensity);
     lighting.lights[lighting.lightCount++] = light;

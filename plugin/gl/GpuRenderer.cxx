@@ -98,8 +98,10 @@ cpu::Image RenderGpu(vtkPolyData* mesh, const cpu::Camera& cam, const Lighting<d
     {
       light->SetPositional(true);
       light->SetPosition(l.vector.x, l.vector.y, l.vector.z);
-      light->SetFocalPoint(l.vector.x, l.vector.y, l.vector.z - 1.0);
-      light->SetConeAngle(180.0);
+      const Vec3<double> axis = NormalizeOr(l.spotDirection, Vec3<double>(0, 0, -1));
+      light->SetFocalPoint(l.vector.x + axis.x, l.vector.y + axis.y, l.vector.z + axis.z);
+      light->SetConeAngle(l.coneAngle);
+      light->SetExponent(l.coneExponent);
       light->SetAttenuationValues(l.attenuation.x, l.attenuation.y, l.attenuation.z);
     }
     renderer->AddLight(light);

@@ -262,6 +262,14 @@ void vtkShadingLabPolyDataMapper::SetMapperShaderParameters(
   std::vector<float> block;
   float lightVector[4 * sl::kMaxLights] = {}, irradiance[3 * sl::kMaxLights] = {},
                                               attenuation[3 * sl::kMaxLights] = {};
+  float spot[4 * sl::kMaxLights], spotExponent[sl::kMaxLights];
+  for (int j = 0; j < sl::kMaxLights; ++j)
+  {
+    spot[4 * j] = spot[4 * j + 1] = 0.0f;
+    spot[4 * j + 2] = -1.0f;
+    spot[4 * j + 3] = -2.0f; // no cone
+    spotExponent[j] = 1.0f;
+  }
   int count = 0;
   vtkLightCollection* collection = ren->GetLights();
   vtkCollectionSimpleIterator it;
@@ -285,6 +293,19 @@ void vtkShadingLabPolyDataMapper::SetMapperShaderParameters(
       for (int c = 0; c < 3; ++c)
       {
         attenuation[3 * count + c] = static_cast<float>(att[c]);
+      }
+      if (light->GetConeAngle() <= 90.0)
+      {
+        const double axis[4] = { fp[0] - pos[0], fp[1] - pos[1], fp[2] - pos[2], 0.0 };
+        double a[4];
+        view->MultiplyPoint(axis, a);
+        const sl::Vec3d unit = sl::NormalizeOr(sl::Vec3d(a[0], a[1], a[2]), sl::Vec3d(0, 0, -1));
+        spot[4 * count] = static_cast<float>(unit.x);
+        spot[4 * count + 1] = static_cast<float>(unit.y);
+        spot[4 * count + 2] = static_cast<float>(unit.z);
+        spot[4 * count + 3] =
+          static_cast<float>(std::cos(light->GetConeAngle() * sl::kPi<double> / 180.0));
+        spotExponent[count] = static_cast<float>(light->GetExponent());
       }
     }
     else
@@ -313,6 +334,8 @@ void vtkShadingLabPolyDataMapper::SetMapperShaderParameters(
   block.insert(block.end(), lightVector, lightVector + 4 * sl::kMaxLights);
   block.insert(block.end(), irradiance, irradiance + 3 * sl::kMaxLights);
   block.insert(block.end(), attenuation, attenuation + 3 * sl::kMaxLights);
+  block.insert(block.end(), spot, spot + 4 * sl::kMaxLights);
+  block.insert(block.end(), spotExponent, spotExponent + sl::kMaxLights);
   const double* ia = ren->GetAmbient();
   vtkProperty* prop = act->GetProperty();
   const double diffuseCoefficient = prop->GetDiffuse();
@@ -354,6 +377,8 @@ void vtkShadingLabPolyDataMapper::SetMapperShaderParameters(
   program->SetUniform4fv("slLightVectorVC", sl::kMaxLights, reinterpret_cast<float(*)[4]>(lightVector));
   program->SetUniform3fv("slLightIrradiance", sl::kMaxLights, reinterpret_cast<float(*)[3]>(irradiance));
   program->SetUniform3fv("slLightAttenuation", sl::kMaxLights, reinterpret_cast<float(*)[3]>(attenuation));
+  program->SetUniform4fv("slLightSpot", sl::kMaxLights, reinterpret_cast<float(*)[4]>(spot));
+  program->SetUniform1fv("slLightSpotExponent", sl::kMaxLights, spotExponent);
   program->SetUniform3f("slAmbient", values);
   program->SetUniform3f("slSpecularColor", values + 3);
   program->SetUniformf("slKd", values[6]);

@@ -14,7 +14,7 @@
  * (GLSL noperspective).
  *
  * Lights are the renderer's vtkLights (headlight, camera and scene lights;
- * positional lights with attenuation; intensity I_L = intensity x diffuse
+ * positional lights with attenuation and spot cones; intensity I_L = intensity x diffuse
  * colour, solid angle pi as in plugin/model). The ambient intensity Ia is
  * the renderer's ambient. The albedo rho is the property's diffuse colour (or
  * the point scalars' colours), divided by the property's Diffuse coefficient
@@ -27,8 +27,7 @@
  * that variant before. Material changes that do not change the variant only
  * update uniforms, and uniforms are re-sent only when they changed.
  *
- * @warning Spot-light cones are not modelled (a positional light lights all
- * directions). Gouraud mode takes rho from the property, not from point
+ * @warning Gouraud mode takes rho from the property, not from point
  * scalars. Meshes without point normals get area-weighted normals computed
  * once per input change; flat mode uploads no point normals.
  */

@@ -16,6 +16,10 @@
 uniform vec4 slLightVectorVC[SL_MAX_LIGHTS];
 uniform vec3 slLightIrradiance[SL_MAX_LIGHTS]; // I_L dw
 uniform vec3 slLightAttenuation[SL_MAX_LIGHTS];
+// Spot cone: xyz unit axis (from the light outwards), w = cos(cone half-angle),
+// or w < -1.5 for no cone; exponent of the cos^e falloff.
+uniform vec4 slLightSpot[SL_MAX_LIGHTS];
+uniform float slLightSpotExponent[SL_MAX_LIGHTS];
 uniform vec3 slAmbient;                        // Ra Ia
 uniform vec3 slSpecularColor;
 uniform float slKd;
@@ -49,6 +53,17 @@ bool LightIncidence(int j, vec3 P, out vec3 L, out vec3 irradiance)
   L = toLight / d;
   vec3 a = slLightAttenuation[j];
   irradiance = slLightIrradiance[j] / max(a.x + a.y * d + a.z * d * d, 1e-30);
+  vec4 spot = slLightSpot[j];
+  if (spot.w > -1.5)
+  {
+    // Spot cone (OpenGL 1.x / VTK): outside it no light, inside cos^e.
+    float coneDot = -dot(L, spot.xyz);
+    if (!(coneDot >= spot.w))
+    {
+      return false;
+    }
+    irradiance *= pow(coneDot, slLightSpotExponent[j]);
+  }
   return true;
 #endif
 }

@@ -110,6 +110,12 @@ struct Light
   /// Point lights: I_L / (c0 + c1 d + c2 d^2) (OpenGL's fixed-function form).
   /// (1, 0, 0) disables attenuation.
   Vec3<T> attenuation{ T(1), T(0), T(0) };
+  /// Point lights as spot lights, OpenGL's and VTK's convention: a cone of
+  /// half-angle coneAngle degrees around spotDirection (from the light
+  /// outwards) with falloff cos^coneExponent; coneAngle > 90 is no cone.
+  Vec3<T> spotDirection{ T(0), T(0), T(-1) };
+  T coneAngle = T(180);
+  T coneExponent = T(1);
 
   template <typename U>
   Light<U> Cast() const
@@ -120,6 +126,9 @@ struct Light
     out.intensity = Vec3<U>(intensity);
     out.solidAngle = static_cast<U>(solidAngle);
     out.attenuation = Vec3<U>(attenuation);
+    out.spotDirection = Vec3<U>(spotDirection);
+    out.coneAngle = static_cast<U>(coneAngle);
+    out.coneExponent = static_cast<U>(coneExponent);
     return out;
   }
 };
@@ -169,6 +178,16 @@ SL_INLINE bool LightIncidence(const Light<T>& light, const Vec3<T>& P, Vec3<T>& 
   // Validation keeps c0 > 0 or the other terms positive; a zero sum at d > 0
   // cannot happen, but guard anyway so no Inf reaches a pixel.
   irradiance = light.intensity * (light.solidAngle / std::max(attenuation, T(1e-30)));
+  if (light.coneAngle <= T(90))
+  {
+    // Spot cone (OpenGL 1.x / VTK): outside it no light, inside cos^e.
+    const T coneDot = -Dot(L, NormalizeOr(light.spotDirection, Vec3<T>(T(0), T(0), T(-1))));
+    if (!(coneDot >= std::cos(light.coneAngle * kPi<T> / T(180))))
+    {
+      return false;
+    }
+    irradiance *= std::pow(coneDot, light.coneExponent);
+  }
   return true;
 }
 

@@ -413,6 +413,7 @@ int RunRender(int argc, char** argv)
   const cpu::DisplayTransform display = scene.display;
   // GPU when asked or (auto) when an X display with OpenGL >= 3.2 answers.
   bool useGpu = false;
+  std::string autoNotice;
   if (backend != "cpu")
   {
     std::string why;
@@ -423,7 +424,8 @@ int RunRender(int argc, char** argv)
     }
     if (!useGpu)
     {
-      std::cerr << "shadinglab render: backend auto: " << why << "; using the CPU renderer\n";
+      // Said after the render succeeds, so an error stays one line.
+      autoNotice = "shadinglab render: backend auto: " + why + "; using the CPU renderer\n";
     }
   }
   cpu::RenderStats stats;
@@ -469,6 +471,7 @@ int RunRender(int argc, char** argv)
   }
   const std::string out = args.Get("out", "out.png");
   WritePng(image, image.ToRGB8(display), out);
+  std::cerr << autoNotice;
 
   if (args.Has("stats"))
   {
@@ -600,6 +603,7 @@ int RunCompare(int argc, char** argv)
   const int canvasH = H + kLabelBar;
   std::vector<uint8_t> canvas(static_cast<size_t>(canvasW) * canvasH * 3, 24);
   bool useGpu = false;
+  std::string autoNotice;
   if (scene.backend != "cpu")
   {
     std::string why;
@@ -610,7 +614,7 @@ int RunCompare(int argc, char** argv)
     }
     if (!useGpu)
     {
-      std::cerr << "shadinglab compare: backend auto: " << why << "; using the CPU renderer\n";
+      autoNotice = "shadinglab compare: backend auto: " + why + "; using the CPU renderer\n";
     }
   }
   cpu::SoftwareRenderer renderer;
@@ -662,6 +666,7 @@ int RunCompare(int argc, char** argv)
   strip.width = canvasW;
   strip.height = canvasH;
   WritePng(strip, canvas, scene.args.Get("out", "compare.png"));
+  std::cerr << autoNotice;
   return 0;
 }
 

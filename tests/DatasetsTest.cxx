@@ -41,7 +41,7 @@ TEST(DatasetsTest, EveryShippedFileReads)
     "icosphere_2.vtp", "icosphere_3.vtp", "icosphere_4.vtp", "torus_24x12.vtp", "torus_48x24.vtp",
     "torus_96x48.vtp", "cylinder_8.vtp", "cylinder_8.stl", "sphere_lowpoly.ply",
     "corrugated_plane.obj", "quad_strip.vtk", "t_junctions.off", "metaballs_isosurface.vtp",
-    "terrain.vtp" };
+    "terrain.vtp", "receding_plane.vtp" };
   for (const char* f : files)
   {
     auto mesh = Read(f);

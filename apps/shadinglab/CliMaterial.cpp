@@ -89,12 +89,10 @@ Material<double> MaterialFromArguments(const Arguments& args, bool forRender)
     const std::string name = args.Get("model");
     if (name == "lambert")
     {
+      // Lambert has no specular term: ks is 0 whatever was given.
       m.model = ReflectanceModel::Lambert;
-      if (!args.Has("kd"))
-      {
-        m.kd = 1.0;
-        m.ks = 0.0;
-      }
+      m.kd = 1.0;
+      m.ks = 0.0;
     }
     else if (name == "phong" || name == "blinn-phong")
     {
@@ -116,7 +114,7 @@ Material<double> MaterialFromArguments(const Arguments& args, bool forRender)
     }
   }
   m.kd = args.GetDouble("kd", m.kd);
-  m.ks = args.GetDouble("ks", m.ks);
+  m.ks = m.model == ReflectanceModel::Lambert ? 0.0 : args.GetDouble("ks", m.ks);
   m.shininess = args.GetDouble("shininess", m.shininess);
   if (args.Has("albedo"))
   {

@@ -11,6 +11,7 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
+#include <vtkUnsignedCharArray.h>
 
 #include <array>
 #include <cmath>
@@ -451,6 +452,22 @@ vtkPolyData* MakeMetaballIsosurface(int n)
     exact->SetTuple(i, nrm.data());
   }
   mesh->GetPointData()->AddArray(exact);
+  return mesh;
+}
+
+vtkPolyData* MakeRecedingPlane(double depth)
+{
+  auto* mesh = Assemble({ { -0.5, 0.0, 0.0 }, { 0.5, 0.0, 0.0 }, { 0.5, 0.0, -depth }, { -0.5, 0.0, -depth } },
+    { { 0, 1, 0 }, { 0, 1, 0 }, { 0, 1, 0 }, { 0, 1, 0 } }, { { 0, 1, 2, 3 } });
+  vtkNew<vtkUnsignedCharArray> colors;
+  colors->SetName("Colors");
+  colors->SetNumberOfComponents(3);
+  for (unsigned char c : { 0, 0, 255, 255 })
+  {
+    const unsigned char rgb[3] = { c, c, c };
+    colors->InsertNextTypedTuple(rgb);
+  }
+  mesh->GetPointData()->SetScalars(colors);
   return mesh;
 }
 

@@ -35,6 +35,11 @@ vtkPolyData* MakeTJunctionPatch(int coarse);
 /// Isosurface of a sum of Gaussian blobs sampled on an n^3 grid (marching
 /// cubes family: vtkFlyingEdges3D), with the analytic gradient normal.
 vtkPolyData* MakeMetaballIsosurface(int n);
+/// A unit-wide floor (y = 0, facing +y) receding from z = 0 to z = -depth,
+/// one quad, with point colours black at the near edge and white at the far
+/// edge: rendered in screen-space interpolation it shows the lecture's
+/// perspective distortion (slide 9) at a glance.
+vtkPolyData* MakeRecedingPlane(double depth);
 /// Analytic terrain height field on an n x n grid with an "Elevation" array
 /// and the exact normal.
 vtkPolyData* MakeTerrain(int n);

@@ -70,6 +70,7 @@ int main(int argc, char** argv)
     Write(MakeTJunctionPatch(4), dir, "t_junctions.off");
     Write(MakeMetaballIsosurface(48), dir, "metaballs_isosurface.vtp");
     Write(MakeTerrain(96), dir, "terrain.vtp");
+    Write(MakeRecedingPlane(8.0), dir, "receding_plane.vtp");
   }
   catch (const MeshError& e)
   {

@@ -90,6 +90,7 @@ std::string vtkShadingLabPolyDataMapper::Variant(vtkRenderer* ren) const
   }
   int lights = 0;
   bool point = false;
+  bool headlightOnly = true;
   vtkLightCollection* collection = ren->GetLights();
   vtkCollectionSimpleIterator it;
   collection->InitTraversal(it);
@@ -99,8 +100,10 @@ std::string vtkShadingLabPolyDataMapper::Variant(vtkRenderer* ren) const
     {
       ++lights;
       point |= light->GetPositional() != 0;
+      headlightOnly &= light->LightTypeIsHeadlight() && !light->GetPositional();
     }
   }
+  headlightOnly &= lights == 1;
   const bool specular = model != 0 && m.ks > 0;
   std::ostringstream v;
   v << "#define SL_MODE " << this->ShadingMode << "\n"
@@ -110,6 +113,7 @@ std::string vtkShadingLabPolyDataMapper::Variant(vtkRenderer* ren) const
     << "#define SL_SPECULAR " << (specular ? 1 : 0) << "\n"
     << "#define SL_LOBE_COUNT " << std::max(1, std::min(m.lobeCount, sl::kMaxLobes)) << "\n"
     << "#define SL_CONDUCTOR " << (m.IsConductor() ? 1 : 0) << "\n"
+    << "#define SL_HEADLIGHT " << (headlightOnly ? 1 : 0) << "\n"
     << "#define SL_INTERP " << (this->PerspectiveCorrect ? "smooth" : "noperspective") << "\n";
   return v.str();
 }

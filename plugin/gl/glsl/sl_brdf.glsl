@@ -25,21 +25,15 @@ float Fd_Lambert()
 // Phong 1975, (R.V)^n, normalized by (n+2)/(2 pi) (Lewis 1994).
 float Fs_Phong(float RoV, float shininess)
 {
-  if (!(RoV > 0.0))
-  {
-    return 0.0;
-  }
-  return (shininess + 2.0) * (0.5 * SL_INV_PI) * pow(min(RoV, 1.0), shininess);
+  float lobe = (shininess + 2.0) * (0.5 * SL_INV_PI) * pow(clamp(RoV, 0.0, 1.0), shininess);
+  return RoV > 0.0 ? lobe : 0.0;
 }
 
 // Blinn 1977, (N.H)^n, normalized by (n+8)/(8 pi).
 float Fs_BlinnPhong(float NoH, float shininess)
 {
-  if (!(NoH > 0.0))
-  {
-    return 0.0;
-  }
-  return (shininess + 8.0) * (0.125 * SL_INV_PI) * pow(min(NoH, 1.0), shininess);
+  float lobe = (shininess + 8.0) * (0.125 * SL_INV_PI) * pow(clamp(NoH, 0.0, 1.0), shininess);
+  return NoH > 0.0 ? lobe : 0.0;
 }
 
 // Beckmann distribution, Cook & Torrance 1982 (slide 14), without 1/pi.
@@ -166,9 +160,6 @@ vec3 HalfVector(vec3 L, vec3 V, vec3 N)
 {
   vec3 s = L + V;
   float lengthSq = dot(s, s);
-  if (!(lengthSq >= SL_MIN_HALF_VECTOR_LENGTH * SL_MIN_HALF_VECTOR_LENGTH))
-  {
-    return N;
-  }
-  return s * inversesqrt(lengthSq);
+  bool defined = lengthSq >= SL_MIN_HALF_VECTOR_LENGTH * SL_MIN_HALF_VECTOR_LENGTH;
+  return defined ? s * inversesqrt(max(lengthSq, 1e-30)) : N;
 }

@@ -9,6 +9,8 @@
 //   SL_SPECULAR     0 drops the specular term (ks = 0)
 //   SL_LOBE_COUNT   Beckmann mixture size (1..4)
 //   SL_CONDUCTOR    1 when any k > 0 (complex-index Fresnel)
+//   SL_HEADLIGHT    1 when the only light is a headlight: L = +z in view
+//                   coordinates, a constant the compiler folds
 
 #define SL_MAX_LIGHTS 8
 
@@ -34,6 +36,11 @@ uniform float slJacobian;
 // Direction to the light and its irradiance factor at P (view coordinates).
 bool LightIncidence(int j, vec3 P, out vec3 L, out vec3 irradiance)
 {
+#if SL_HEADLIGHT
+  L = vec3(0.0, 0.0, 1.0);
+  irradiance = slLightIrradiance[0];
+  return true;
+#endif
   vec4 lv = slLightVectorVC[j];
 #if SL_POINT_LIGHTS
   if (lv.w == 0.0)
@@ -73,20 +80,23 @@ vec3 EvaluateBrdf(vec3 diffuseColor, vec3 N, vec3 L, vec3 V)
 {
   float NoL = dot(N, L);
   float NoV = dot(N, V);
-  if (!(NoL > 0.0) || !(NoV > 0.0))
+  bool above = NoL > 0.0 && NoV > 0.0;
+  vec3 diffuse = diffuseColor * (slKd * Fd_Lambert());
+#if SL_MODEL == 0 || !SL_SPECULAR
+  return above ? diffuse : vec3(0.0);
+#elif SL_MODEL == 1
+  float RoV = dot(N * (2.0 * NoL) - L, V);
+  vec3 f = diffuse + slSpecularColor * (slKs * Fs_Phong(RoV, slShininess));
+  return above ? f : vec3(0.0);
+#elif SL_MODEL == 2
+  float NoH = dot(N, HalfVector(L, V, N));
+  vec3 f = diffuse + slSpecularColor * (slKs * Fs_BlinnPhong(NoH, slShininess));
+  return above ? f : vec3(0.0);
+#else
+  if (!above)
   {
     return vec3(0.0);
   }
-  vec3 diffuse = diffuseColor * (slKd * Fd_Lambert());
-#if SL_MODEL == 0 || !SL_SPECULAR
-  return diffuse;
-#elif SL_MODEL == 1
-  float RoV = dot(N * (2.0 * NoL) - L, V);
-  return diffuse + slSpecularColor * (slKs * Fs_Phong(RoV, slShininess));
-#elif SL_MODEL == 2
-  float NoH = dot(N, HalfVector(L, V, N));
-  return diffuse + slSpecularColor * (slKs * Fs_BlinnPhong(NoH, slShininess));
-#else
   vec3 H = HalfVector(L, V, N);
   float NoH = dot(N, H);
   float VoH = max(dot(V, H), 0.0);
@@ -112,11 +122,8 @@ vec3 Shade(vec3 diffuseColor, vec3 P, vec3 N, vec3 V)
     {
       continue;
     }
-    float NoL = dot(N, L);
-    if (!(NoL > 0.0))
-    {
-      continue;
-    }
+    // EvaluateBrdf is 0 below the horizon; max() keeps this branch-free.
+    float NoL = max(dot(N, L), 0.0);
     result += irradiance * EvaluateBrdf(diffuseColor, N, L, V) * NoL;
   }
   return result;

@@ -39,73 +39,51 @@ float Fs_BlinnPhong(float NoH, float shininess)
 // Beckmann distribution, Cook & Torrance 1982 (slide 14), without 1/pi.
 float D_Beckmann(float NoH, float m)
 {
-  if (!(NoH > 0.0))
-  {
-    return 0.0;
-  }
-  NoH = min(NoH, 1.0);
+  float c = clamp(NoH, 0.0, 1.0);
   m = clamp(m, SL_MIN_ROUGHNESS, SL_MAX_ROUGHNESS);
-  float cos2Alpha = NoH * NoH;
+  float cos2Alpha = c * c;
   float cos4Alpha = cos2Alpha * cos2Alpha;
-  if (cos4Alpha < SL_MIN_COS4_ALPHA)
-  {
-    return 0.0;
-  }
-  float tan2Alpha = (1.0 - cos2Alpha) / cos2Alpha;
+  float tan2Alpha = (1.0 - cos2Alpha) / max(cos2Alpha, 1e-30);
   float m2 = m * m;
-  return exp(-tan2Alpha / m2) / (m2 * cos4Alpha);
+  float D = exp(-tan2Alpha / m2) / (m2 * max(cos4Alpha, SL_MIN_COS4_ALPHA));
+  return (NoH > 0.0 && cos4Alpha >= SL_MIN_COS4_ALPHA) ? D : 0.0;
 }
 
 // D = sum_k w_k D(m_k) (slide 14).
 float D_BeckmannMixture(float NoH, float weights[SL_MAX_LOBES], float ms[SL_MAX_LOBES], int count)
 {
   float D = 0.0;
-  for (int k = 0; k < SL_MAX_LOBES; ++k)
+  for (int k = 0; k < count; ++k)
   {
-    if (k < count)
-    {
-      D += weights[k] * D_Beckmann(NoH, ms[k]);
-    }
+    D += weights[k] * D_Beckmann(NoH, ms[k]);
   }
   return D;
 }
 
-// Torrance & Sparrow 1967 V-groove attenuation (slide 16).
+// Torrance & Sparrow 1967 V-groove attenuation (slide 16):
+// min(1, Gs, Gm) = min(1, 2 (N.H) min(N.L, N.V) / (V.H)); V.H -> 0 gives 1.
 float G_CookTorrance(float NoH, float NoV, float NoL, float VoH)
 {
-  if (!(NoL > 0.0) || !(NoV > 0.0) || !(NoH > 0.0))
-  {
-    return 0.0;
-  }
-  if (VoH < SL_MIN_VOH)
-  {
-    return 1.0;
-  }
-  float Gs = 2.0 * NoH * NoL / VoH;
-  float Gm = 2.0 * NoH * NoV / VoH;
-  return min(1.0, min(Gs, Gm));
+  float G = min(1.0, 2.0 * NoH * min(NoL, NoV) / max(VoH, SL_MIN_VOH));
+  G = VoH < SL_MIN_VOH ? 1.0 : G;
+  return (NoL > 0.0 && NoV > 0.0 && NoH > 0.0) ? G : 0.0;
 }
 
 // Cook & Torrance 1982 unpolarized Fresnel (slide 15), cosine form (finite
 // at normal incidence; equal in value to the slide's form).
 float F_Dielectric(float cosTheta_i, float eta)
 {
-  if (eta == 1.0)
-  {
-    return 0.0;
-  }
   cosTheta_i = clamp(cosTheta_i, 0.0, 1.0);
   float sin2Theta_i = max(0.0, 1.0 - cosTheta_i * cosTheta_i);
   float sin2Theta_t = sin2Theta_i / (eta * eta);
-  // Handle total internal reflection case
-  if (sin2Theta_t >= 1.0)
-  {
-    return 1.0;
-  }
-  float cosTheta_t = sqrt(1.0 - sin2Theta_t);
+  // Handle total internal reflection case (selected below).
+  bool tir = sin2Theta_t >= 1.0;
+  float cosTheta_t = sqrt(max(1.0 - sin2Theta_t, 0.0));
   float rs = (cosTheta_i - eta * cosTheta_t) / (cosTheta_i + eta * cosTheta_t);
   float rp = (eta * cosTheta_i - cosTheta_t) / (eta * cosTheta_i + cosTheta_t);
-  return 0.5 * (rs * rs + rp * rp);
+  float F = 0.5 * (rs * rs + rp * rp);
+  // eta == 1: an invisible interface (the cosine form is 0/0 at grazing).
+  return eta == 1.0 ? 0.0 : (tir ? 1.0 : F);
 }
 
 // Complex arithmetic for the conductor Fresnel (vec2 = re, im).
@@ -147,12 +125,9 @@ vec3 F_RGB(float cosTheta_i, vec3 eta, vec3 k)
 // Rs of Cook & Torrance 1982 (jacobian 1) or Walter et al. 2007 (jacobian 4).
 float Fs_CookTorrance(float F, float D, float G, float NoL, float NoV, float jacobian)
 {
-  if (!(NoL > 0.0) || !(NoV > 0.0))
-  {
-    return 0.0;
-  }
   float denominator = max(NoL, SL_MIN_COS_THETA) * max(NoV, SL_MIN_COS_THETA);
-  return F * D * G * SL_INV_PI / (jacobian * denominator);
+  float Rs = F * D * G * SL_INV_PI / (jacobian * denominator);
+  return (NoL > 0.0 && NoV > 0.0) ? Rs : 0.0;
 }
 
 // Blinn 1977 half vector; N when L = -V (see Constants.h).

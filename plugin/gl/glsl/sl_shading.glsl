@@ -93,10 +93,6 @@ vec3 EvaluateBrdf(vec3 diffuseColor, vec3 N, vec3 L, vec3 V)
   vec3 f = diffuse + slSpecularColor * (slKs * Fs_BlinnPhong(NoH, slShininess));
   return above ? f : vec3(0.0);
 #else
-  if (!above)
-  {
-    return vec3(0.0);
-  }
   vec3 H = HalfVector(L, V, N);
   float NoH = dot(N, H);
   float VoH = max(dot(V, H), 0.0);
@@ -108,7 +104,8 @@ vec3 EvaluateBrdf(vec3 diffuseColor, vec3 N, vec3 L, vec3 V)
   vec3 F = vec3(F_Dielectric(VoH, slEta.x), F_Dielectric(VoH, slEta.y), F_Dielectric(VoH, slEta.z));
 #endif
   float DG = Fs_CookTorrance(1.0, D, G, NoL, NoV, slJacobian);
-  return diffuse + F * (slKs * DG);
+  vec3 f = diffuse + F * (slKs * DG);
+  return above ? f : vec3(0.0);
 #endif
 }
 

@@ -224,6 +224,7 @@ TEST(CliTest, RenderBadInputExitsTwoWithOneLine)
     "render " + good + " --size 100000x10" + out,
     "render " + good + " --ssaa 100" + out,
     "render " + good + " --zoom -1" + out,
+    "render " + good + " --zoom 0.001" + out, // view angle beyond 180 degrees
     "render " + good + " --light dir:0,0,0" + out,
     "render " + good + " --light sun:1,1,1" + out,
     "render " + good + " --light spot:0,0,3:0,0,-1:120" + out, // cone over 90 degrees

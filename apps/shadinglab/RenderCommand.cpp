@@ -288,6 +288,11 @@ Scene SceneFromArguments(int argc, char** argv, const char* help, bool compare)
   cpu::Camera& camera = scene.camera;
   camera = cpu::FitCamera(bounds, args.GetDouble("azimuth", 0.0),
     args.GetDouble("elevation", 0.0), zoom, aspect, args.Has("parallel"));
+  if (!camera.parallel && !(camera.viewAngle < 180.0))
+  {
+    throw UsageError("--zoom " + args.Get("zoom") + " widens the view angle to " +
+      std::to_string(camera.viewAngle) + " degrees (must stay below 180)");
+  }
   if (args.Has("camera-position") || args.Has("focal-point"))
   {
     if (args.Has("camera-position"))

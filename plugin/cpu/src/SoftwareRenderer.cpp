@@ -125,6 +125,7 @@ struct ThreadState
 {
   std::vector<ScreenVertex> clipped; ///< vertices made by near-plane clipping
   int64_t clippedPolygons = 0, degenerate = 0, rasterized = 0, shaded = 0, fastPhongExact = 0;
+  int64_t covered = 0; ///< covered pixels in this thread's bands (full resolution)
 };
 
 } // namespace
@@ -531,9 +532,19 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh, const Camera& ca
       stats->pixelsShaded += st.shaded;
       stats->fastPhongExact += st.fastPhongExact;
     }
-    for (uint8_t c : image.covered)
+    if (ssaa == 1)
     {
-      stats->pixelsCovered += c;
+      for (const auto& st : states)
+      {
+        stats->pixelsCovered += st.covered; // counted by the threads
+      }
+    }
+    else
+    {
+      for (uint8_t c : image.covered)
+      {
+        stats->pixelsCovered += c;
+      }
     }
     stats->threads = this->Threads;
     stats->normalsComputed = computedNormals;
@@ -598,6 +609,17 @@ void SoftwareRenderer::Internals::RasterizeThread(int thread, int threadCount, T
     for (const int64_t p : this->Bins[static_cast<size_t>(w) * threadCount + thread])
     {
       this->DrawSourcePolygon(p, thread, threadCount, state);
+    }
+  }
+  // Count this thread's covered pixels here, in parallel, for the stats.
+  for (int b = thread; b < bands; b += threadCount)
+  {
+    const size_t first = static_cast<size_t>(b) * kBandRows * this->Width;
+    const size_t last =
+      static_cast<size_t>(std::min(this->Height, (b + 1) * kBandRows)) * this->Width;
+    for (size_t i = first; i < last; ++i)
+    {
+      state.covered += this->Covered[i];
     }
   }
 }

@@ -942,17 +942,23 @@ void SoftwareRenderer::Internals::ScanTriangle(const ScreenVertex* const* verts,
   {
     return;
   }
-  const double invDet = 1.0 / det;
-  double dadx[NA], dady[NA];
-  float stepX[NA];
-  for (int k = 0; k < NA; ++k)
-  {
-    const double d1 = static_cast<double>(v1.a[k]) - v0.a[k];
-    const double d2 = static_cast<double>(v2.a[k]) - v0.a[k];
-    dadx[k] = (d1 * e2y - d2 * e1y) * invDet;
-    dady[k] = (d2 * e1x - d1 * e2x) * invDet;
-    stepX[k] = static_cast<float>(dadx[k]);
-  }
+  // Attribute gradients, computed on the first span with pixels: most
+  // triangles of a very fine mesh cover no pixel centre.
+  double dadx[NA] = {}, dady[NA] = {};
+  float stepX[NA] = {};
+  bool gradients = false;
+  auto computeGradients = [&]() {
+    const double invDet = 1.0 / det;
+    for (int k = 0; k < NA; ++k)
+    {
+      const double d1 = static_cast<double>(v1.a[k]) - v0.a[k];
+      const double d2 = static_cast<double>(v2.a[k]) - v0.a[k];
+      dadx[k] = (d1 * e2y - d2 * e1y) * invDet;
+      dady[k] = (d2 * e1x - d1 * e2x) * invDet;
+      stepX[k] = static_cast<float>(dadx[k]);
+    }
+    gradients = true;
+  };
   struct Edge
   {
     float px, py, qy, invSlope;
@@ -997,6 +1003,10 @@ void SoftwareRenderer::Internals::ScanTriangle(const ScreenVertex* const* verts,
     if (i1 <= i0)
     {
       continue;
+    }
+    if (!gradients)
+    {
+      computeGradients();
     }
     const double dx = static_cast<double>(i0) + 0.5 - v0.x, dy = static_cast<double>(yc) - v0.y;
     for (int k = 0; k < NA; ++k)
@@ -1245,55 +1255,62 @@ void SoftwareRenderer::Internals::DrawTriangleFastPhong(const ScreenVertex* cons
     normals[k] = this->NormalOf(id) * ((back && this->Opt.twoSidedLighting) ? -1.0f : 1.0f);
     centroid += this->PointOf(id) * (1.0f / 3.0f);
   }
+  // The triangle's setup is done lazily, on its first span with pixels:
+  // most triangles of a million-triangle mesh cover no pixel centre at all.
   FastPhongTriangle<float> tri;
-  tri.Setup(sx, sy, normals);
-  // L, V and H are taken at the expansion point's surface position.
-  Vec3f expansionPoint = centroid;
-  if (this->Opt.expansion == ExpansionPoint::Vertex)
-  {
-    int64_t id = meshIds[2];
-    for (int m = 0; m < 3 && id < 0; ++m)
-    {
-      id = meshIds[m];
-    }
-    expansionPoint = this->PointOf(id);
-  }
-  const Vec3f V = this->ViewDirection(expansionPoint);
-  // Bishop & Weimer's expansion holds for small normal variation; beyond
-  // the spread limit the triangle is evaluated exactly (the same affine
-  // normal, renormalized per pixel), so no Taylor blow-up reaches a pixel.
-  float minCos = 1.0f;
-  for (int k = 0; k < 3; ++k)
-  {
-    const Vec3f a = NormalizeOr(normals[k], this->ToEye);
-    const Vec3f b = NormalizeOr(normals[(k + 1) % 3], this->ToEye);
-    minCos = std::min(minCos, Dot(a, b));
-  }
-  const bool exact = minCos < this->FastPhongMinCos;
-  // Counted once per triangle: in the call for its first row band.
-  state.fastPhongExact += exact && rowBegin == std::max(0, CeilToInt(std::min({ sy[0], sy[1], sy[2] }) - 0.5f));
   Vec3f Ls[kMaxLights], Hs[kMaxLights];
   const int nl = this->Lights.lightCount;
   FastPhongQuadratic<float> diffuseQ[kMaxLights], specularQ[kMaxLights];
   Vec3f irradiance[kMaxLights];
   bool active[kMaxLights];
   const bool specular = this->Mat.model != ReflectanceModel::Lambert && this->Mat.ks > 0.0f;
-  for (int l = 0; l < nl; ++l)
-  {
-    Vec3f L;
-    active[l] = LightIncidence(this->Lights.lights[l], expansionPoint, L, irradiance[l]);
-    if (!active[l])
+  bool ready = false;
+  bool exact = false;
+  auto setup = [&]() {
+    ready = true;
+    tri.Setup(sx, sy, normals);
+    // L, V and H are taken at the expansion point's surface position.
+    Vec3f expansionPoint = centroid;
+    if (this->Opt.expansion == ExpansionPoint::Vertex)
     {
-      continue;
+      int64_t id = meshIds[2];
+      for (int m = 0; m < 3 && id < 0; ++m)
+      {
+        id = meshIds[m];
+      }
+      expansionPoint = this->PointOf(id);
     }
-    Ls[l] = L;
-    Hs[l] = HalfVector(L, V, NormalizeOr(tri.Normal(tri.centroidX, tri.centroidY), this->ToEye));
-    diffuseQ[l] = tri.Expand(L, this->Opt.expansion);
-    if (specular)
+    const Vec3f V = this->ViewDirection(expansionPoint);
+    // Bishop & Weimer's expansion holds for small normal variation; beyond
+    // the spread limit the triangle is evaluated exactly (the same affine
+    // normal, renormalized per pixel), so no Taylor blow-up reaches a pixel.
+    float minCos = 1.0f;
+    for (int k = 0; k < 3; ++k)
     {
-      specularQ[l] = tri.Expand(Hs[l], this->Opt.expansion);
+      const Vec3f a = NormalizeOr(normals[k], this->ToEye);
+      const Vec3f b = NormalizeOr(normals[(k + 1) % 3], this->ToEye);
+      minCos = std::min(minCos, Dot(a, b));
     }
-  }
+    exact = minCos < this->FastPhongMinCos;
+    // Counted once per triangle: in the call for its first row band.
+    state.fastPhongExact += exact && rowBegin == std::max(0, CeilToInt(std::min({ sy[0], sy[1], sy[2] }) - 0.5f));
+    for (int l = 0; l < nl; ++l)
+    {
+      Vec3f L;
+      active[l] = LightIncidence(this->Lights.lights[l], expansionPoint, L, irradiance[l]);
+      if (!active[l])
+      {
+        continue;
+      }
+      Ls[l] = L;
+      Hs[l] = HalfVector(L, V, NormalizeOr(tri.Normal(tri.centroidX, tri.centroidY), this->ToEye));
+      diffuseQ[l] = tri.Expand(L, this->Opt.expansion);
+      if (specular)
+      {
+        specularQ[l] = tri.Expand(Hs[l], this->Opt.expansion);
+      }
+    }
+  };
   FastPhongScanline<float> diffuseLine[kMaxLights], specularLine[kMaxLights];
   const Vec3f ambient = this->Mat.ambient * this->Lights.ambientIntensity;
   const float kdOverPi = this->Mat.kd * Fd_Lambert<float>();
@@ -1307,6 +1324,10 @@ void SoftwareRenderer::Internals::DrawTriangleFastPhong(const ScreenVertex* cons
   this->ScanConvert(
     verts, 3, rowBegin, rowEnd,
     [&](int j, int i0) {
+      if (!ready)
+      {
+        setup();
+      }
       const float yc = static_cast<float>(j) + 0.5f, xc = static_cast<float>(i0) + 0.5f;
       for (int l = 0; l < nl; ++l)
       {

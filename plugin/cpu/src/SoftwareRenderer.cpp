@@ -1284,13 +1284,10 @@ void SoftwareRenderer::Internals::DrawTriangleFastPhong(const ScreenVertex* cons
     // Bishop & Weimer's expansion holds for small normal variation; beyond
     // the spread limit the triangle is evaluated exactly (the same affine
     // normal, renormalized per pixel), so no Taylor blow-up reaches a pixel.
-    float minCos = 1.0f;
-    for (int k = 0; k < 3; ++k)
-    {
-      const Vec3f a = NormalizeOr(normals[k], this->ToEye);
-      const Vec3f b = NormalizeOr(normals[(k + 1) % 3], this->ToEye);
-      minCos = std::min(minCos, Dot(a, b));
-    }
+    const Vec3f unit[3] = { NormalizeOr(normals[0], this->ToEye),
+      NormalizeOr(normals[1], this->ToEye), NormalizeOr(normals[2], this->ToEye) };
+    const float minCos =
+      std::min(Dot(unit[0], unit[1]), std::min(Dot(unit[1], unit[2]), Dot(unit[2], unit[0])));
     exact = minCos < this->FastPhongMinCos;
     // Counted once per triangle: in the call for its first row band.
     state.fastPhongExact += exact && rowBegin == std::max(0, CeilToInt(std::min({ sy[0], sy[1], sy[2] }) - 0.5f));
@@ -1303,7 +1300,8 @@ void SoftwareRenderer::Internals::DrawTriangleFastPhong(const ScreenVertex* cons
         continue;
       }
       Ls[l] = L;
-      Hs[l] = HalfVector(L, V, NormalizeOr(tri.Normal(tri.centroidX, tri.centroidY), this->ToEye));
+      // HalfVector's fallback normal (for L = -V only): the provoking vertex's.
+      Hs[l] = HalfVector(L, V, unit[2]);
       diffuseQ[l] = tri.Expand(L, this->Opt.expansion);
       if (specular)
       {

@@ -145,39 +145,25 @@ cpu::Image RenderGpu(vtkPolyData* mesh, const cpu::Camera& cam, const Lighting<d
   {
     *shaderBuilds = mapper->GetShaderBuildCount();
   }
-  cpu::Image image;
-  image.width = options.width;
-  image.height = options.height;
-  image.rgb.assign(static_cast<size_t>(image.width) * image.height * 3, 0.0f);
-  image.covered.assign(static_cast<size_t>(image.width) * image.height, 0);
-  const float norm = 1.0f / (255.0f * ssaa * ssaa);
-  for (int y = 0; y < image.height; ++y)
+  // Frame to linear floats, rows top-down (VTK rows start at the bottom),
+  // then the same resolve as the CPU renderer.
+  std::vector<float> rgb(static_cast<size_t>(W) * H * 3);
+  std::vector<uint8_t> covered(static_cast<size_t>(W) * H);
+  for (int y = 0; y < H; ++y)
   {
-    for (int x = 0; x < image.width; ++x)
+    for (int x = 0; x < W; ++x)
     {
-      float sum[3] = { 0, 0, 0 };
-      uint8_t any = 0;
-      for (int sy = 0; sy < ssaa; ++sy)
-      {
-        for (int sx = 0; sx < ssaa; ++sx)
-        {
-          // VTK rows start at the bottom.
-          const vtkIdType i = static_cast<vtkIdType>(H - 1 - (y * ssaa + sy)) * W + (x * ssaa + sx);
-          for (int c = 0; c < 3; ++c)
-          {
-            sum[c] += pixels->GetTypedComponent(i, c);
-          }
-          any |= depth->GetValue(i) < 1.0f;
-        }
-      }
-      const size_t o = static_cast<size_t>(y) * image.width + x;
+      const vtkIdType i = static_cast<vtkIdType>(H - 1 - y) * W + x;
+      const size_t o = static_cast<size_t>(y) * W + x;
       for (int c = 0; c < 3; ++c)
       {
-        image.rgb[3 * o + c] = sum[c] * norm;
+        rgb[3 * o + c] = pixels->GetTypedComponent(i, c) / 255.0f;
       }
-      image.covered[o] = any;
+      covered[o] = depth->GetValue(i) < 1.0f;
     }
   }
+  cpu::Image image;
+  cpu::DownsampleBox(rgb, covered, W, H, ssaa, image);
   return image;
 }
 

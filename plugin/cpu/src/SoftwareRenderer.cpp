@@ -484,36 +484,8 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh, const Camera& ca
   }
   else
   {
-    image.rgb.assign(static_cast<size_t>(image.width) * image.height * 3, 0.0f);
-    image.covered.assign(static_cast<size_t>(image.width) * image.height, 0);
+    DownsampleBox(this->Rgb, this->Covered, this->Width, this->Height, ssaa, image);
     image.coverage.clear();
-    const float norm = 1.0f / static_cast<float>(ssaa * ssaa);
-    for (int y = 0; y < image.height; ++y)
-    {
-      for (int x = 0; x < image.width; ++x)
-      {
-        float sum[3] = { 0, 0, 0 };
-        uint8_t any = 0;
-        for (int sy = 0; sy < ssaa; ++sy)
-        {
-          for (int sx = 0; sx < ssaa; ++sx)
-          {
-            const size_t i = static_cast<size_t>(y * ssaa + sy) * this->Width + (x * ssaa + sx);
-            for (int c = 0; c < 3; ++c)
-            {
-              sum[c] += this->Rgb[3 * i + c];
-            }
-            any |= this->Covered[i];
-          }
-        }
-        const size_t o = static_cast<size_t>(y) * image.width + x;
-        for (int c = 0; c < 3; ++c)
-        {
-          image.rgb[3 * o + c] = sum[c] * norm;
-        }
-        image.covered[o] = any;
-      }
-    }
   }
 
   if (stats)
@@ -1406,6 +1378,42 @@ float EncodeSRGB(float v)
 }
 
 } // namespace
+
+void DownsampleBox(const std::vector<float>& rgb, const std::vector<uint8_t>& covered, int width,
+  int height, int factor, Image& out)
+{
+  out.width = width / factor;
+  out.height = height / factor;
+  out.rgb.assign(static_cast<size_t>(out.width) * out.height * 3, 0.0f);
+  out.covered.assign(static_cast<size_t>(out.width) * out.height, 0);
+  const float norm = 1.0f / static_cast<float>(factor * factor);
+  for (int y = 0; y < out.height; ++y)
+  {
+    for (int x = 0; x < out.width; ++x)
+    {
+      float sum[3] = { 0, 0, 0 };
+      uint8_t any = 0;
+      for (int sy = 0; sy < factor; ++sy)
+      {
+        for (int sx = 0; sx < factor; ++sx)
+        {
+          const size_t i = static_cast<size_t>(y * factor + sy) * width + (x * factor + sx);
+          for (int c = 0; c < 3; ++c)
+          {
+            sum[c] += rgb[3 * i + c];
+          }
+          any |= covered[i];
+        }
+      }
+      const size_t o = static_cast<size_t>(y) * out.width + x;
+      for (int c = 0; c < 3; ++c)
+      {
+        out.rgb[3 * o + c] = sum[c] * norm;
+      }
+      out.covered[o] = any;
+    }
+  }
+}
 
 void Mesh::Bounds(double bounds[6]) const
 {

@@ -171,6 +171,14 @@ private:
 Image Render(const Mesh& mesh, const Camera& camera, const Lighting<float>& lighting,
   const Material<float>& material, const RenderOptions& options, RenderStats* stats = nullptr);
 
+/**
+ * Box-filters a full-resolution linear RGB frame (row 0 at the top) by
+ * `factor` per axis into `out` (the supersampling resolve of both renderers).
+ * A pixel is covered when any of its samples is.
+ */
+void DownsampleBox(const std::vector<float>& rgb, const std::vector<uint8_t>& covered, int width,
+  int height, int factor, Image& out);
+
 /// Area-weighted vertex normals (sum of unnormalized face cross products).
 std::vector<float> AreaWeightedNormals(const Mesh& mesh);
 

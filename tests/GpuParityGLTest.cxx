@@ -217,6 +217,9 @@ TEST(GpuParityGLTest, EveryModeBothInterpolationSpaces)
       }
     }
   }
+  // Flat mode drew from a copy without point normals: the inputs keep theirs.
+  EXPECT_NE(torus->GetPointData()->GetNormals(), nullptr);
+  EXPECT_NE(sphere->GetPointData()->GetNormals(), nullptr);
 }
 
 namespace
@@ -345,6 +348,8 @@ TEST(GpuParityGLTest, MeshesWithoutNormalsAndWithCellNormals)
     EXPECT_LE(d.mean, kMeanThreshold) << cpu::ModeName(mode);
     EXPECT_LE(d.p99, kP99Threshold) << cpu::ModeName(mode);
   }
+  // The mapper computed normals on a copy: the input still has none.
+  EXPECT_EQ(bare->GetPointData()->GetNormals(), nullptr);
   // Cell normals drive flat mode on both (here: normals of a coarser
   // faceting than the geometry, so using them is visible).
   vtkNew<vtkPolyDataNormals> cellNormals;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkShadingLabPolyDataMapper.h"
 
+#include "MeshArrays.h"
 #include "VertexNormals.h"
 #include "shadinglab_glsl.h"
 
@@ -22,6 +23,7 @@
 #include <vtkSmartPointer.h>
 #include <vtkTypeInt64Array.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -142,46 +144,27 @@ void vtkShadingLabPolyDataMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* a
     if (this->Internal->PreparedKind != kind || this->Internal->PreparedInput != input ||
       this->Internal->PreparedFrom != input->GetMTime())
     {
+      // A shallow copy has its own point-data object: the input keeps its arrays.
       auto prepared = vtkSmartPointer<vtkPolyData>::New();
       prepared->ShallowCopy(input);
-      auto* pd = vtkPointData::New();
-      pd->ShallowCopy(input->GetPointData());
-      prepared->GetPointData()->ShallowCopy(pd);
-      pd->Delete();
       if (kind == 1)
       {
         prepared->GetPointData()->SetNormals(nullptr);
       }
       else
       {
-        // Area-weighted vertex normals, as the CPU renderer computes them.
-        const vtkIdType np = input->GetNumberOfPoints();
-        std::vector<double> points(static_cast<size_t>(3 * np));
-        for (vtkIdType i = 0; i < np; ++i)
-        {
-          input->GetPoint(i, &points[3 * i]);
-        }
-        std::vector<int64_t> offsets{ 0 }, conn;
-        vtkCellArray* polys = input->GetPolys();
-        const vtkIdType* ids;
-        vtkIdType n;
-        for (polys->InitTraversal(); polys->GetNextCell(n, ids);)
-        {
-          conn.insert(conn.end(), ids, ids + n);
-          offsets.push_back(static_cast<int64_t>(conn.size()));
-        }
-        sl::mesh::PolygonMesh mesh{ points.data(), np, offsets.data(), conn.data(),
-          static_cast<int64_t>(offsets.size() - 1) };
+        // Area-weighted vertex normals, the CPU renderer's (mesh/core).
+        sl::mesh::FlatPolygons polygons;
+        sl::mesh::FlatPolygonsFromPolyData(input, polygons);
+        const sl::mesh::PolygonMesh mesh{ polygons.points, polygons.numberOfPoints,
+          polygons.offsets, polygons.connectivity, polygons.numberOfPolygons };
         std::vector<double> normals;
         sl::mesh::ComputeVertexNormalsNoSplit(mesh, sl::mesh::NormalWeighting::Area, normals);
         vtkNew<vtkFloatArray> array;
         array->SetName("Normals");
         array->SetNumberOfComponents(3);
-        array->SetNumberOfTuples(np);
-        for (size_t i = 0; i < normals.size(); ++i)
-        {
-          array->SetValue(static_cast<vtkIdType>(i), static_cast<float>(normals[i]));
-        }
+        array->SetNumberOfTuples(polygons.numberOfPoints);
+        std::copy(normals.begin(), normals.end(), array->GetPointer(0));
         prepared->GetPointData()->SetNormals(array);
       }
       this->Internal->Prepared = prepared;

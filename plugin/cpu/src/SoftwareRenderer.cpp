@@ -12,6 +12,7 @@
 //      thread count.
 #include "shadinglab/cpu/SoftwareRenderer.h"
 
+#include "VertexNormals.h"
 #include "shadinglab/model/FastPhong.h"
 
 #include <algorithm>
@@ -1431,44 +1432,14 @@ void Mesh::Bounds(double bounds[6]) const
 
 std::vector<float> AreaWeightedNormals(const Mesh& mesh)
 {
-  const int64_t nv = mesh.NumberOfPoints();
-  std::vector<double> sum(static_cast<size_t>(3 * nv), 0.0);
-  for (int64_t p = 0; p < mesh.NumberOfPolygons(); ++p)
-  {
-    const int64_t b = mesh.offsets[p], e = mesh.offsets[p + 1];
-    if (e - b < 3)
-    {
-      continue;
-    }
-    // Fan cross products: |sum| = 2 x polygon area, direction = normal.
-    Vec3<double> n;
-    const float* p0 = &mesh.points[3 * mesh.connectivity[b]];
-    for (int64_t k = b + 1; k + 1 < e; ++k)
-    {
-      const float* p1 = &mesh.points[3 * mesh.connectivity[k]];
-      const float* p2 = &mesh.points[3 * mesh.connectivity[k + 1]];
-      const Vec3<double> u(p1[0] - p0[0], p1[1] - p0[1], p1[2] - p0[2]);
-      const Vec3<double> v(p2[0] - p0[0], p2[1] - p0[1], p2[2] - p0[2]);
-      n += Cross(u, v);
-    }
-    for (int64_t k = b; k < e; ++k)
-    {
-      const int64_t v = mesh.connectivity[k];
-      sum[3 * v] += n.x;
-      sum[3 * v + 1] += n.y;
-      sum[3 * v + 2] += n.z;
-    }
-  }
-  std::vector<float> out(static_cast<size_t>(3 * nv));
-  for (int64_t v = 0; v < nv; ++v)
-  {
-    const Vec3<double> n =
-      NormalizeOr(Vec3<double>(sum[3 * v], sum[3 * v + 1], sum[3 * v + 2]), Vec3<double>(0, 0, 1));
-    out[3 * v] = static_cast<float>(n.x);
-    out[3 * v + 1] = static_cast<float>(n.y);
-    out[3 * v + 2] = static_cast<float>(n.z);
-  }
-  return out;
+  // The project's one implementation (mesh/core), on double coordinates.
+  const std::vector<double> points(mesh.points.begin(), mesh.points.end());
+  const shadinglab::mesh::PolygonMesh polygons{ points.data(), mesh.NumberOfPoints(), mesh.offsets.data(),
+    mesh.connectivity.data(), mesh.NumberOfPolygons() };
+  std::vector<double> normals;
+  shadinglab::mesh::ComputeVertexNormalsNoSplit(
+    polygons, shadinglab::mesh::NormalWeighting::Area, normals);
+  return std::vector<float>(normals.begin(), normals.end());
 }
 
 Camera FitCamera(const double bounds[6], double azimuthDeg, double elevationDeg, double zoom,

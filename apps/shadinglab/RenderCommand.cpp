@@ -404,6 +404,29 @@ Scene SceneFromArguments(int argc, char** argv, const char* help, bool compare)
   return scene;
 }
 
+/// GPU when asked or (auto) when an X display with OpenGL >= 3.2 answers.
+/// An auto fallback is explained in `autoNotice`, which the caller prints
+/// after success so that an error stays one line.
+bool ChooseGpu(const std::string& backend, const char* command, std::string& autoNotice)
+{
+  if (backend == "cpu")
+  {
+    return false;
+  }
+  std::string why;
+  if (gl::GpuAvailable(why))
+  {
+    return true;
+  }
+  if (backend == "gpu")
+  {
+    throw UsageError("--backend gpu: " + why);
+  }
+  autoNotice = std::string("shadinglab ") + command + ": backend auto: " + why +
+    "; using the CPU renderer\n";
+  return false;
+}
+
 int RunRender(int argc, char** argv)
 {
   Scene scene = SceneFromArguments(argc, argv, kRenderHelp, false);
@@ -417,34 +440,14 @@ int RunRender(int argc, char** argv)
   const std::string& backend = scene.backend;
   const cpu::DisplayTransform display = scene.display;
   // GPU when asked or (auto) when an X display with OpenGL >= 3.2 answers.
-  bool useGpu = false;
   std::string autoNotice;
-  if (backend != "cpu")
-  {
-    std::string why;
-    useGpu = gl::GpuAvailable(why);
-    if (!useGpu && backend == "gpu")
-    {
-      throw UsageError("--backend gpu: " + why);
-    }
-    if (!useGpu)
-    {
-      // Said after the render succeeds, so an error stays one line.
-      autoNotice = "shadinglab render: backend auto: " + why + "; using the CPU renderer\n";
-    }
-  }
+  const bool useGpu = ChooseGpu(backend, "render", autoNotice);
   cpu::RenderStats stats;
   cpu::Image image;
   try
   {
     if (useGpu)
     {
-      if (options.mode == cpu::ShadingMode::FastPhong &&
-        scene.material.model == ReflectanceModel::CookTorrance)
-      {
-        throw std::invalid_argument("fast-phong evaluates (N.L) and (N.H)^n quadratics: use a "
-                                    "lambert, phong or blinn-phong material");
-      }
       const auto start = std::chrono::steady_clock::now();
       image = gl::RenderGpu(scene.polydata, scene.camera, scene.lighting, scene.material, options);
       stats.milliseconds = std::chrono::duration<double, std::milli>(
@@ -607,21 +610,8 @@ int RunCompare(int argc, char** argv)
   const int canvasW = static_cast<int>(modes.size()) * (W + kGap) - kGap;
   const int canvasH = H + kLabelBar;
   std::vector<uint8_t> canvas(static_cast<size_t>(canvasW) * canvasH * 3, 24);
-  bool useGpu = false;
   std::string autoNotice;
-  if (scene.backend != "cpu")
-  {
-    std::string why;
-    useGpu = gl::GpuAvailable(why);
-    if (!useGpu && scene.backend == "gpu")
-    {
-      throw UsageError("--backend gpu: " + why);
-    }
-    if (!useGpu)
-    {
-      autoNotice = "shadinglab compare: backend auto: " + why + "; using the CPU renderer\n";
-    }
-  }
+  const bool useGpu = ChooseGpu(scene.backend, "compare", autoNotice);
   cpu::SoftwareRenderer renderer;
   cpu::Image gpuImage;
   for (size_t m = 0; m < modes.size(); ++m)
@@ -633,13 +623,8 @@ int RunCompare(int argc, char** argv)
     {
       if (useGpu)
       {
-        Material<double> material = scene.material;
-        if (modes[m] == cpu::ShadingMode::FastPhong &&
-          material.model == ReflectanceModel::CookTorrance)
-        {
-          material.model = ReflectanceModel::BlinnPhong; // as the mapper does
-        }
-        gpuImage = gl::RenderGpu(scene.polydata, scene.camera, scene.lighting, material, options);
+        gpuImage =
+          gl::RenderGpu(scene.polydata, scene.camera, scene.lighting, scene.material, options);
         image = &gpuImage;
       }
       else
@@ -650,7 +635,8 @@ int RunCompare(int argc, char** argv)
     }
     catch (const std::invalid_argument& e)
     {
-      throw UsageError(std::string(cpu::ModeName(modes[m])) + ": " + e.what());
+      throw UsageError(std::string(e.what()) + " (or leave " + cpu::ModeName(modes[m]) +
+        " out with --modes)");
     }
     catch (const std::runtime_error& e)
     {

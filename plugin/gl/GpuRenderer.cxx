@@ -55,6 +55,14 @@ bool GpuAvailable(std::string& why)
 cpu::Image RenderGpu(vtkPolyData* mesh, const cpu::Camera& cam, const Lighting<double>& lighting,
   const Material<double>& material, const cpu::RenderOptions& options, int* shaderBuilds)
 {
+  // The same rule as the CPU renderer: fast Phong expands (N.L) and (N.H)
+  // only, so it has no Cook-Torrance form.
+  if (options.mode == cpu::ShadingMode::FastPhong &&
+    material.model == ReflectanceModel::CookTorrance)
+  {
+    throw std::invalid_argument("fast-phong evaluates (N.L) and (N.H)^n quadratics: use a "
+                                "lambert, phong or blinn-phong material");
+  }
   const int ssaa = options.ssaa;
   const int W = options.width * ssaa, H = options.height * ssaa;
   vtkNew<vtkShadingLabPolyDataMapper> mapper;

@@ -26,7 +26,9 @@ bool GpuAvailable(std::string& why);
  * Lights are given in world coordinates and become scene vtkLights; with
  * none, VTK's automatic headlight is used.
  * Returns the linear image as floats in [0, 1] (8-bit framebuffer precision)
- * with `covered` from the framebuffer's depth. Throws std::runtime_error.
+ * with `covered` from the framebuffer's depth. Throws std::invalid_argument
+ * for a mode/material mismatch (as cpu::Render) and std::runtime_error for a
+ * failed GL render.
  */
 cpu::Image RenderGpu(vtkPolyData* mesh, const cpu::Camera& camera, const Lighting<double>& lighting,
   const Material<double>& material, const cpu::RenderOptions& options,

@@ -191,6 +191,13 @@ void vtkShadingLabPolyDataMapper::ReplaceShaderValues(
   std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
 {
   ++this->ShaderBuildCount;
+  if (this->ShadingMode == FAST_PHONG &&
+    this->Internal->Material.model == sl::ReflectanceModel::CookTorrance)
+  {
+    // Said once per shader build, not per frame: not a silent substitution.
+    vtkWarningMacro("FAST_PHONG has no Cook-Torrance form (it expands (N.L) and (N.H)); "
+                    "shading with Blinn-Phong");
+  }
   const std::string variant = this->Variant(ren);
   this->LastVariant = variant;
   vtkShader* vs = shaders[vtkShader::Vertex];

@@ -27,7 +27,8 @@
  * that variant before. Material changes that do not change the variant only
  * update uniforms, and uniforms are re-sent only when they changed.
  *
- * @warning Gouraud mode takes rho from the property, not from point
+ * @warning FAST_PHONG with a Cook-Torrance material shades Blinn-Phong and
+ * says so (vtkWarningMacro). Gouraud mode takes rho from the property, not from point
  * scalars. Meshes without point normals get area-weighted normals computed
  * once per input change; flat mode uploads no point normals.
  */

@@ -1204,9 +1204,10 @@ void SoftwareRenderer::Internals::DrawTriangleFastPhong(const ScreenVertex* cons
   bool back, int rowBegin, int rowEnd, ThreadState& state)
 {
   // Bishop & Weimer 1986: L and H constant over the triangle (their
-  // assumption of a distant light and viewer), evaluated at its centroid;
-  // the normal field is affine in screen space, so this mode always
-  // interpolates in screen space.
+  // assumption of a distant light and viewer), evaluated at the expansion
+  // point; the normal field is affine in screen space, so this mode always
+  // interpolates in screen space. meshIds are mesh vertices (a vertex made
+  // by near-plane clipping carries its inside end's id).
   float sx[3], sy[3];
   Vec3f normals[3];
   Vec3f centroid;
@@ -1214,19 +1215,8 @@ void SoftwareRenderer::Internals::DrawTriangleFastPhong(const ScreenVertex* cons
   {
     sx[k] = verts[k]->x;
     sy[k] = verts[k]->y;
-    // Clipped vertices (negative ids) are rare (near plane); take the
-    // normal of the nearest unclipped vertex of this triangle.
-    int64_t id = meshIds[k];
-    for (int m = 0; m < 3 && id < 0; ++m)
-    {
-      id = meshIds[m];
-    }
-    if (id < 0)
-    {
-      return;
-    }
-    normals[k] = this->NormalOf(id) * ((back && this->Opt.twoSidedLighting) ? -1.0f : 1.0f);
-    centroid += this->PointOf(id) * (1.0f / 3.0f);
+    normals[k] = this->NormalOf(meshIds[k]) * ((back && this->Opt.twoSidedLighting) ? -1.0f : 1.0f);
+    centroid += this->PointOf(meshIds[k]) * (1.0f / 3.0f);
   }
   // The triangle's setup is done lazily, on its first span with pixels:
   // most triangles of a million-triangle mesh cover no pixel centre at all.
@@ -1243,16 +1233,8 @@ void SoftwareRenderer::Internals::DrawTriangleFastPhong(const ScreenVertex* cons
     ready = true;
     tri.Setup(sx, sy, normals);
     // L, V and H are taken at the expansion point's surface position.
-    Vec3f expansionPoint = centroid;
-    if (this->Opt.expansion == ExpansionPoint::Vertex)
-    {
-      int64_t id = meshIds[2];
-      for (int m = 0; m < 3 && id < 0; ++m)
-      {
-        id = meshIds[m];
-      }
-      expansionPoint = this->PointOf(id);
-    }
+    const Vec3f expansionPoint =
+      this->Opt.expansion == ExpansionPoint::Vertex ? this->PointOf(meshIds[2]) : centroid;
     const Vec3f V = this->ViewDirection(expansionPoint);
     // Bishop & Weimer's expansion holds for small normal variation; beyond
     // the spread limit the triangle is evaluated exactly (the same affine

@@ -232,6 +232,7 @@ TEST(CliTest, RenderBadInputExitsTwoWithOneLine)
     "render " + good + " --mode fast-phong --material gold" + out,
     "render " + good + " --kd 2" + out,
     "render " + good + " --interp curved" + out,
+    "render " + good + " --backend cpu --out /nonexistent-dir/x.png", // unwritable
   };
   for (const auto& args : bad)
   {
@@ -291,6 +292,7 @@ TEST(CliTest, NormalsBadInputExitsTwoWithOneLine)
     "normals " + good + " --feature-angle 200" + out,     // angle out of range
     "normals " + good + " --weld 5" + out,                // absurd tolerance
     "normals " + good + " --out /tmp/x.xyz",              // unknown output format
+    "normals " + good + " --out /nonexistent-dir/x.vtp",  // unwritable
   };
   for (const auto& args : bad)
   {

@@ -113,3 +113,22 @@ TEST(MeshIOTest, EveryWriterRoundTrips)
     std::remove(path.c_str());
   }
 }
+
+TEST(MeshIOTest, UnwritablePathIsAnError)
+{
+  vtkSmartPointer<vtkPolyData> sphere;
+  sphere.TakeReference(shadinglab::datasets::MakeIcosphere(1));
+  for (const char* ext : { "vtp", "vtk", "ply", "obj", "stl", "off" })
+  {
+    const std::string path = std::string("/nonexistent-dir/mesh.") + ext;
+    try
+    {
+      shadinglab::WriteMesh(sphere, path);
+      ADD_FAILURE() << "no error writing " << path;
+    }
+    catch (const shadinglab::MeshError& e)
+    {
+      EXPECT_NE(std::string(e.what()).find("cannot write"), std::string::npos) << e.what();
+    }
+  }
+}

@@ -103,10 +103,15 @@ void WritePng(const cpu::Image& image, const std::vector<uint8_t>& rgb8, const s
   vtkNew<vtkPNGWriter> writer;
   writer->SetInputData(vtkImage);
   writer->SetFileName(path.c_str());
+  // VTK reports an unopenable file in several log lines: keep them quiet and
+  // say it once.
+  const int warnings = vtkObject::GetGlobalWarningDisplay();
+  vtkObject::GlobalWarningDisplayOff();
   writer->Write();
+  vtkObject::SetGlobalWarningDisplay(warnings);
   if (writer->GetErrorCode() != 0)
   {
-    throw std::runtime_error("cannot write '" + path + "'");
+    throw UsageError("cannot write '" + path + "' (missing directory, no permission or disk full?)");
   }
 }
 
@@ -472,13 +477,14 @@ int RunRender(int argc, char** argv)
   {
     throw UsageError(e.what());
   }
+  const std::string out = args.Get("out", "out.png");
+  WritePng(image, image.ToRGB8(display), out);
+  // Notices come after success, so that an error stays one line.
   if (stats.normalsComputed)
   {
     std::cerr << "shadinglab render: notice: '" << input
               << "' has no point normals; using area-weighted vertex normals\n";
   }
-  const std::string out = args.Get("out", "out.png");
-  WritePng(image, image.ToRGB8(display), out);
   std::cerr << autoNotice;
 
   if (args.Has("stats"))

@@ -207,7 +207,7 @@ void WriteOff(vtkPolyData* mesh, const std::string& path)
   }
   if (!out)
   {
-    throw MeshError("failed writing '" + path + "'");
+    throw MeshError("cannot write '" + path + "' (missing directory, no permission or disk full?)");
   }
 }
 
@@ -361,45 +361,42 @@ vtkPolyData* ReadMesh(const std::string& path)
 
 void WriteMesh(vtkPolyData* mesh, const std::string& path)
 {
+  // Each writer: input, file name, the format's binary switch, write.
+  // VTK writers may return success on an unopenable file and report it only
+  // through their error code and multi-line log output: check the code and
+  // keep the log quiet, so the caller gets one MeshError line.
+  auto write = [&](auto writer, auto configure) {
+    writer->SetInputData(mesh);
+    writer->SetFileName(path.c_str());
+    configure(writer.GetPointer());
+    const int warnings = vtkObject::GetGlobalWarningDisplay();
+    vtkObject::GlobalWarningDisplayOff();
+    const int written = writer->Write();
+    vtkObject::SetGlobalWarningDisplay(warnings);
+    return written && writer->GetErrorCode() == 0;
+  };
+  auto none = [](auto*) {};
   const std::string ext = Extension(path);
   int ok = 0;
   if (ext == "vtp")
   {
-    vtkNew<vtkXMLPolyDataWriter> w;
-    w->SetInputData(mesh);
-    w->SetFileName(path.c_str());
-    w->SetDataModeToBinary();
-    ok = w->Write();
+    ok = write(vtkSmartPointer<vtkXMLPolyDataWriter>::New(), [](auto* w) { w->SetDataModeToBinary(); });
   }
   else if (ext == "vtk")
   {
-    vtkNew<vtkPolyDataWriter> w;
-    w->SetInputData(mesh);
-    w->SetFileName(path.c_str());
-    ok = w->Write();
+    ok = write(vtkSmartPointer<vtkPolyDataWriter>::New(), none);
   }
   else if (ext == "ply")
   {
-    vtkNew<vtkPLYWriter> w;
-    w->SetInputData(mesh);
-    w->SetFileName(path.c_str());
-    w->SetFileTypeToBinary();
-    ok = w->Write();
+    ok = write(vtkSmartPointer<vtkPLYWriter>::New(), [](auto* w) { w->SetFileTypeToBinary(); });
   }
   else if (ext == "stl")
   {
-    vtkNew<vtkSTLWriter> w;
-    w->SetInputData(mesh);
-    w->SetFileName(path.c_str());
-    w->SetFileTypeToBinary();
-    ok = w->Write();
+    ok = write(vtkSmartPointer<vtkSTLWriter>::New(), [](auto* w) { w->SetFileTypeToBinary(); });
   }
   else if (ext == "obj")
   {
-    vtkNew<vtkOBJWriter> w;
-    w->SetInputData(mesh);
-    w->SetFileName(path.c_str());
-    ok = w->Write();
+    ok = write(vtkSmartPointer<vtkOBJWriter>::New(), none);
   }
   else if (ext == "off")
   {
@@ -412,7 +409,7 @@ void WriteMesh(vtkPolyData* mesh, const std::string& path)
   }
   if (!ok)
   {
-    throw MeshError("failed writing '" + path + "'");
+    throw MeshError("cannot write '" + path + "' (missing directory, no permission or disk full?)");
   }
 }
 

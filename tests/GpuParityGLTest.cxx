@@ -254,6 +254,19 @@ cpu::Image Grab(vtkRenderWindow* window)
   return image;
 }
 
+/// An offscreen window (no multisampling, as the CPU renderer) showing `ren`,
+/// rendered once.
+vtkSmartPointer<vtkRenderWindow> RenderOffscreen(vtkRenderer* ren, int width, int height)
+{
+  auto window = vtkSmartPointer<vtkRenderWindow>::New();
+  window->SetOffScreenRendering(1);
+  window->SetMultiSamples(0);
+  window->SetSize(width, height);
+  window->AddRenderer(ren);
+  window->Render();
+  return window;
+}
+
 void SetCamera(vtkRenderer* ren, const cpu::Camera& c)
 {
   vtkCamera* cam = ren->GetActiveCamera();
@@ -410,12 +423,7 @@ TEST(GpuParityGLTest, HeadlightAndCameraLight)
     }
     ren->AddLight(light);
     SetCamera(ren, cam);
-    vtkNew<vtkRenderWindow> window;
-    window->SetOffScreenRendering(1);
-    window->SetMultiSamples(0);
-    window->SetSize(opt.width, opt.height);
-    window->AddRenderer(ren);
-    window->Render();
+    auto window = RenderOffscreen(ren, opt.width, opt.height);
     const auto d = Compare(ref, Grab(window));
     EXPECT_GT(d.pixels, 5000);
     EXPECT_LE(d.mean, kMeanThreshold) << (kind == 0 ? "headlight" : "camera light");
@@ -492,13 +500,8 @@ TEST(GpuParityGLTest, MultiblockInput)
   light->SetFocalPoint(0, 0, 0);
   ren->AddLight(light);
   SetCamera(ren, Camera());
-  vtkNew<vtkRenderWindow> window;
-  window->SetOffScreenRendering(1);
-  window->SetMultiSamples(0);
-  window->SetSize(240, 180);
-  window->AddRenderer(ren);
-  window->Render();
-  EXPECT_EQ(mapper->GetShaderBuildCount() >= 1, true);
+  auto window = RenderOffscreen(ren, 240, 180);
+  EXPECT_GE(mapper->GetShaderBuildCount(), 1);
   // The CPU reference: both blocks as one mesh.
   cpu::Mesh both = cpu::MeshFromPolyData(a);
   const cpu::Mesh second = cpu::MeshFromPolyData(b);
@@ -549,11 +552,7 @@ TEST(GpuParityGLTest, ShadersRebuildOnlyForVariantChanges)
   light->SetPositional(false);
   ren->AddLight(light);
   SetCamera(ren, Camera());
-  vtkNew<vtkRenderWindow> window;
-  window->SetOffScreenRendering(1);
-  window->SetSize(64, 48);
-  window->AddRenderer(ren);
-  window->Render();
+  auto window = RenderOffscreen(ren, 64, 48);
   EXPECT_EQ(mapper->GetFailedSubstitutionCount(), 0);
   const int first = mapper->GetShaderBuildCount();
   EXPECT_GE(first, 1);

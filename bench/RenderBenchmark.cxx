@@ -11,6 +11,7 @@
 #include "AnalyticMeshes.h"
 #include "PolyDataMesh.h"
 #include "shadinglab/cpu/SoftwareRenderer.h"
+#include "shadinglab/model/Materials.h"
 #include "vtkShadingLabPolyDataMapper.h"
 
 #include <benchmark/benchmark.h>
@@ -33,6 +34,7 @@
 
 namespace sl = shadinglab;
 namespace cpu = shadinglab::cpu;
+namespace render = shadinglab::render;
 
 namespace
 {
@@ -43,8 +45,8 @@ constexpr int kHeight = 1080;
 struct Scene
 {
   vtkSmartPointer<vtkPolyData> polydata; // with area-weighted point normals
-  cpu::Mesh mesh;
-  cpu::Camera camera;
+  render::Mesh mesh;
+  render::Camera camera;
 };
 
 const Scene& GetScene(int which)
@@ -59,45 +61,46 @@ const Scene& GetScene(int which)
                                  : sl::datasets::MakeIcosphere(8));
     raw->GetPointData()->SetNormals(raw->GetPointData()->GetArray(sl::datasets::kExactNormalArray));
     s->polydata = raw;
-    s->mesh = cpu::MeshFromPolyData(raw);
+    s->mesh = render::MeshFromPolyData(raw);
     double bounds[6];
     s->mesh.Bounds(bounds);
-    s->camera = cpu::FitCamera(bounds, 20.0, 35.0, 1.6, double(kWidth) / kHeight, false);
+    s->camera = render::FitCamera(bounds, 20.0, 35.0, 1.6, double(kWidth) / kHeight, false);
   }
   return *s;
 }
 
-sl::Lighting<float> KeyLight(const cpu::Camera& cam)
+sl::Lighting<double> Headlight(const render::Camera& cam)
 {
-  sl::Lighting<float> l;
+  sl::Lighting<double> l;
   l.lightCount = 1;
-  l.lights[0].vector = sl::Vec3f(sl::NormalizeOr(cam.position - cam.focalPoint, sl::Vec3d(0, 0, 1)));
+  l.lights[0].vector = sl::NormalizeOr(cam.position - cam.focalPoint, sl::Vec3d(0, 0, 1));
   return l;
 }
 
 void BM_Cpu(benchmark::State& state)
 {
   const Scene& scene = GetScene(static_cast<int>(state.range(0)));
-  cpu::RenderOptions opt;
+  render::RenderOptions opt;
   opt.width = kWidth;
   opt.height = kHeight;
-  opt.mode = static_cast<cpu::ShadingMode>(state.range(1));
-  opt.threads = static_cast<int>(state.range(2));
-  sl::Material<float> material;
-  material.model = sl::ReflectanceModel::BlinnPhong;
-  const auto lighting = KeyLight(scene.camera);
-  cpu::RenderStats stats;
+  opt.mode = static_cast<render::ShadingMode>(state.range(1));
+  opt.threads = static_cast<int>(state.range(3));
+  sl::Material<double> material;
+  material.model = static_cast<sl::ReflectanceModel>(state.range(2));
+  const render::Scene renderScene{ &scene.mesh, scene.camera, Headlight(scene.camera), material };
+  render::RenderStats stats;
   // One renderer for all frames: buffers persist, as in VTK's render window.
   cpu::SoftwareRenderer renderer;
   for (auto _ : state)
   {
-    const auto& image = renderer.Render(scene.mesh, scene.camera, lighting, material, opt, &stats);
+    const auto& image = renderer.Render(renderScene, opt, &stats);
     benchmark::DoNotOptimize(image.rgb.data());
   }
   state.counters["triangles"] = static_cast<double>(stats.triangles);
   state.counters["pixels_shaded"] = static_cast<double>(stats.pixelsShaded);
   state.counters["pixels_covered"] = static_cast<double>(stats.pixelsCovered);
-  state.SetLabel(std::string(cpu::ModeName(opt.mode)) + " threads=" + std::to_string(opt.threads));
+  state.SetLabel(std::string(render::ShadingModeName(opt.mode)) + "/" +
+    sl::ReflectanceModelName(material.model) + " threads=" + std::to_string(opt.threads));
 }
 
 /// Renders `actor` in an offscreen 1920x1080 window with the scene's camera,
@@ -170,27 +173,42 @@ void BM_ShadingLabGL(benchmark::State& state)
   mapper->SetInputData(scene.polydata);
   mapper->SetShadingMode(mode);
   sl::Material<double> material;
-  material.model = sl::ReflectanceModel::BlinnPhong;
+  material.model = static_cast<sl::ReflectanceModel>(state.range(2));
   material.shininess = 32;
   mapper->SetMaterial(material);
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);
   TimeFrames(state, scene, actor);
   state.SetLabel(std::string("shadinglab-gl ") +
-    cpu::ModeName(static_cast<cpu::ShadingMode>(mode)) + " llvmpipe");
+    render::ShadingModeName(static_cast<render::ShadingMode>(mode)) + "/" +
+    sl::ReflectanceModelName(material.model) + " llvmpipe");
 }
+
+/// {mode, model}: every shading mode with Blinn-Phong, and Cook-Torrance per pixel.
+constexpr int kBlinnPhong = static_cast<int>(sl::ReflectanceModel::BlinnPhong);
+constexpr int kCookTorrance = static_cast<int>(sl::ReflectanceModel::CookTorrance);
+const std::pair<int, int> kModeModels[] = { { 0, kBlinnPhong }, { 1, kBlinnPhong },
+  { 2, kBlinnPhong }, { 3, kBlinnPhong }, { 2, kCookTorrance } };
 
 void CpuArgs(benchmark::internal::Benchmark* b)
 {
   for (int mesh : { 0, 1 })
   {
-    for (int mode = 0; mode < 5; ++mode)
+    for (const auto& [mode, model] : kModeModels)
     {
       for (int threads : { 1, 2 })
       {
-        b->Args({ mesh, mode, threads });
+        b->Args({ mesh, mode, model, threads });
       }
     }
+  }
+}
+
+void GlArgs(benchmark::internal::Benchmark* b)
+{
+  for (const auto& [mode, model] : kModeModels)
+  {
+    b->Args({ 1, mode, model });
   }
 }
 
@@ -206,7 +224,7 @@ BENCHMARK(BM_VtkOpenGL)
   ->Unit(benchmark::kMillisecond)
   ->UseRealTime();
 BENCHMARK(BM_ShadingLabGL)
-  ->ArgsProduct({ { 1 }, { 0, 1, 2, 3, 4 } })
+  ->Apply(GlArgs)
   ->Unit(benchmark::kMillisecond)
   ->UseRealTime();
 

@@ -3,6 +3,7 @@
 // degenerate input, and accuracy against an analytic per-pixel reference.
 #include "AnalyticMeshes.h"
 #include "PolyDataMesh.h"
+#include "RenderTestUtil.h"
 #include "vtkSoftwareShadingRenderer.h"
 #include "shadinglab/cpu/SoftwareRenderer.h"
 
@@ -22,14 +23,15 @@
 #include <string>
 
 namespace sl = shadinglab;
-namespace cpu = shadinglab::cpu;
+namespace render = shadinglab::render;
+namespace test = shadinglab::test;
 using sl::Vec3d;
 using sl::Vec3f;
 
 namespace
 {
 
-cpu::Mesh MeshOf(vtkPolyData* raw, bool exactNormals = false)
+render::Mesh MeshOf(vtkPolyData* raw, bool exactNormals = false)
 {
   vtkSmartPointer<vtkPolyData> pd;
   pd.TakeReference(raw);
@@ -37,7 +39,7 @@ cpu::Mesh MeshOf(vtkPolyData* raw, bool exactNormals = false)
   {
     pd->GetPointData()->SetNormals(pd->GetPointData()->GetArray(sl::datasets::kExactNormalArray));
   }
-  return cpu::MeshFromPolyData(pd);
+  return render::MeshFromPolyData(pd);
 }
 
 sl::Lighting<float> OneLight(const Vec3f& direction)
@@ -60,9 +62,9 @@ sl::Material<float> BlinnPhong()
   return m;
 }
 
-cpu::Camera CameraLookingAt(const Vec3d& position, const Vec3d& focal, double viewAngle)
+render::Camera CameraLookingAt(const Vec3d& position, const Vec3d& focal, double viewAngle)
 {
-  cpu::Camera cam;
+  render::Camera cam;
   cam.position = position;
   cam.focalPoint = focal;
   cam.viewUp = Vec3d(0, 1, 0);
@@ -73,7 +75,7 @@ cpu::Camera CameraLookingAt(const Vec3d& position, const Vec3d& focal, double vi
 }
 
 /// Ray through the centre of pixel (i, j) for the renderer's camera model.
-Vec3d PixelRay(const cpu::Camera& cam, int width, int height, int i, int j)
+Vec3d PixelRay(const render::Camera& cam, int width, int height, int i, int j)
 {
   const Vec3d forward = sl::NormalizeOr(cam.focalPoint - cam.position, Vec3d(0, 0, -1));
   const Vec3d right = sl::NormalizeOr(sl::Cross(forward, cam.viewUp), Vec3d(1, 0, 0));
@@ -154,7 +156,7 @@ struct ErrorStats
 
 /// Mean absolute difference (per channel, linear) between the rendered image
 /// and the analytic reference over pixels covered by both.
-ErrorStats CompareToReference(const cpu::Image& image, const cpu::Camera& cam,
+ErrorStats CompareToReference(const render::Image& image, const render::Camera& cam,
   const sl::Lighting<float>& lighting, const sl::Material<float>& material, const Intersector& hit)
 {
   const auto md = material.Cast<double>();
@@ -205,14 +207,14 @@ ErrorStats CompareToReference(const cpu::Image& image, const cpu::Camera& cam,
 
 TEST(CpuRendererTest, ClosedConvexMeshCoversEveryPixelExactlyOnce)
 {
-  const cpu::Mesh mesh = MeshOf(sl::datasets::MakeIcosphere(3));
-  cpu::RenderOptions opt;
+  const render::Mesh mesh = MeshOf(sl::datasets::MakeIcosphere(3));
+  render::RenderOptions opt;
   opt.width = 320;
   opt.height = 240;
   opt.countCoverage = true;
   opt.cullBackFaces = true;
   const auto cam = CameraLookingAt(Vec3d(0.3, 0.2, 4), Vec3d(0, 0, 0), 40);
-  const auto image = cpu::Render(mesh, cam, OneLight(Vec3f(0, 0, 1)), BlinnPhong(), opt);
+  const auto image = test::RenderCpu(mesh, cam, OneLight(Vec3f(0, 0, 1)), BlinnPhong(), opt);
   int64_t covered = 0, multiple = 0;
   for (size_t i = 0; i < image.coverage.size(); ++i)
   {
@@ -227,7 +229,7 @@ TEST(CpuRendererTest, TessellatedPlaneHasNoCracksOrOverlaps)
 {
   // A 40 x 30 grid with jittered interior vertices (sub-pixel positions
   // everywhere), facing the camera: every pixel inside is covered once.
-  cpu::Mesh mesh;
+  render::Mesh mesh;
   std::mt19937 rng(3);
   std::uniform_real_distribution<float> jitter(-0.3f, 0.3f);
   const int nx = 40, ny = 30;
@@ -255,12 +257,12 @@ TEST(CpuRendererTest, TessellatedPlaneHasNoCracksOrOverlaps)
       mesh.offsets.push_back(static_cast<int64_t>(mesh.connectivity.size()));
     }
   }
-  cpu::RenderOptions opt;
+  render::RenderOptions opt;
   opt.width = 301;
   opt.height = 233;
   opt.countCoverage = true;
   const auto cam = CameraLookingAt(Vec3d(0.01, -0.02, 2.9), Vec3d(0.01, -0.02, 0), 45);
-  const auto image = cpu::Render(mesh, cam, OneLight(Vec3f(0, 0, 1)), BlinnPhong(), opt);
+  const auto image = test::RenderCpu(mesh, cam, OneLight(Vec3f(0, 0, 1)), BlinnPhong(), opt);
   int64_t holes = 0, overlaps = 0, covered = 0;
   int x0 = opt.width, x1 = 0, y0 = opt.height, y1 = 0;
   for (int j = 0; j < opt.height; ++j)
@@ -290,22 +292,34 @@ TEST(CpuRendererTest, TessellatedPlaneHasNoCracksOrOverlaps)
 
 TEST(CpuRendererTest, OutputIsBitIdenticalForAnyThreadCount)
 {
-  const cpu::Mesh mesh = MeshOf(sl::datasets::MakeTorus(1.0, 0.4, 48, 24));
+  const render::Mesh mesh = MeshOf(sl::datasets::MakeTorus(1.0, 0.4, 48, 24));
   const auto cam = CameraLookingAt(Vec3d(0.5, 2.0, 3.0), Vec3d(0, 0, 0), 40);
-  for (cpu::ShadingMode mode : { cpu::ShadingMode::Flat, cpu::ShadingMode::Gouraud,
-         cpu::ShadingMode::Phong, cpu::ShadingMode::FastPhong, cpu::ShadingMode::CookTorrance })
+  // Every shading mode, and Cook-Torrance per pixel and per vertex.
+  const std::pair<render::ShadingMode, sl::ReflectanceModel> cases[] = {
+    { render::ShadingMode::Flat, sl::ReflectanceModel::BlinnPhong },
+    { render::ShadingMode::Gouraud, sl::ReflectanceModel::BlinnPhong },
+    { render::ShadingMode::Phong, sl::ReflectanceModel::BlinnPhong },
+    { render::ShadingMode::FastPhong, sl::ReflectanceModel::BlinnPhong },
+    { render::ShadingMode::FastPhong, sl::ReflectanceModel::Phong },
+    { render::ShadingMode::Phong, sl::ReflectanceModel::CookTorrance },
+    { render::ShadingMode::Gouraud, sl::ReflectanceModel::CookTorrance },
+  };
+  for (const auto& [mode, model] : cases)
   {
-    cpu::RenderOptions opt;
+    render::RenderOptions opt;
     opt.width = 257;
     opt.height = 199;
     opt.mode = mode;
     opt.threads = 1;
-    const auto ref = cpu::Render(mesh, cam, OneLight(Vec3f(0.3f, 0.6f, 0.7f)), BlinnPhong(), opt);
+    auto material = BlinnPhong();
+    material.model = model;
+    const auto ref = test::RenderCpu(mesh, cam, OneLight(Vec3f(0.3f, 0.6f, 0.7f)), material, opt);
     for (int threads : { 2, 3, 7 })
     {
       opt.threads = threads;
-      const auto img = cpu::Render(mesh, cam, OneLight(Vec3f(0.3f, 0.6f, 0.7f)), BlinnPhong(), opt);
-      EXPECT_EQ(img.rgb, ref.rgb) << cpu::ModeName(mode) << " threads " << threads;
+      const auto img = test::RenderCpu(mesh, cam, OneLight(Vec3f(0.3f, 0.6f, 0.7f)), material, opt);
+      EXPECT_EQ(img.rgb, ref.rgb) << render::ShadingModeName(mode) << " "
+                                  << static_cast<int>(model) << " threads " << threads;
     }
   }
 }
@@ -314,19 +328,19 @@ TEST(CpuRendererTest, PolygonsCrossingTheCameraPlaneAreClipped)
 {
   // A large floor under the camera extends behind it: its triangles cross
   // the camera plane and must be clipped, not wrapped around or crashed on.
-  cpu::Mesh mesh;
+  render::Mesh mesh;
   mesh.points = { -50, -1, -50, 50, -1, -50, 50, -1, 50, -50, -1, 50 };
   mesh.offsets = { 0, 4 };
   mesh.connectivity = { 0, 3, 2, 1 };
   const auto cam = CameraLookingAt(Vec3d(0, 0, 0), Vec3d(0, 0, -1), 60);
-  for (auto poly : { cpu::PolygonHandling::Triangulate, cpu::PolygonHandling::Direct })
+  for (auto poly : { render::PolygonHandling::Triangulate, render::PolygonHandling::Direct })
   {
-    cpu::RenderOptions opt;
+    render::RenderOptions opt;
     opt.width = 200;
     opt.height = 150;
     opt.polygons = poly;
-    cpu::RenderStats stats;
-    const auto image = cpu::Render(mesh, cam, OneLight(Vec3f(0, 1, 0)), BlinnPhong(), opt, &stats);
+    render::RenderStats stats;
+    const auto image = test::RenderCpu(mesh, cam, OneLight(Vec3f(0, 1, 0)), BlinnPhong(), opt, &stats);
     EXPECT_GE(stats.clipped, 1);
     // The floor's far edge (z = -50, y = -1) is at row
     // (0.5 + 0.5 f / 50) H with f = 1/tan(30 deg); every row below it is
@@ -360,19 +374,19 @@ TEST(CpuRendererTest, PolygonsCrossingTheCameraPlaneAreClipped)
 
 TEST(CpuRendererTest, DegenerateTrianglesAreSkipped)
 {
-  cpu::Mesh mesh;
+  render::Mesh mesh;
   mesh.points = { 0, 0, 0, 1, 0, 0, 0, 1, 0, 2, 2, 0 };
   mesh.offsets = { 0, 3, 6, 9 };
   // A good triangle, a repeated-index one and a collinear one.
   mesh.connectivity = { 0, 1, 2, 0, 0, 1, 0, 1, 1 };
   mesh.points.insert(mesh.points.end(), { 3, 0, 0 });
   mesh.connectivity[6] = 0, mesh.connectivity[7] = 1, mesh.connectivity[8] = 4;
-  cpu::RenderOptions opt;
+  render::RenderOptions opt;
   opt.width = 64;
   opt.height = 64;
-  cpu::RenderStats stats;
+  render::RenderStats stats;
   const auto cam = CameraLookingAt(Vec3d(0.5, 0.5, 4), Vec3d(0.5, 0.5, 0), 40);
-  const auto image = cpu::Render(mesh, cam, OneLight(Vec3f(0, 0, 1)), BlinnPhong(), opt, &stats);
+  const auto image = test::RenderCpu(mesh, cam, OneLight(Vec3f(0, 0, 1)), BlinnPhong(), opt, &stats);
   EXPECT_EQ(stats.degenerate, 2);
   EXPECT_EQ(stats.rasterized, 1);
   EXPECT_GT(stats.pixelsCovered, 100);
@@ -385,7 +399,7 @@ TEST(CpuRendererTest, ScreenSpaceInterpolationDistortsAsPredicted)
   // image shows the interpolated colour itself. Along the centre column,
   // screen-linear interpolation gives the screen parameter s while the
   // perspective-correct value is t = (s/w1) / ((1-s)/w0 + s/w1).
-  cpu::Mesh mesh;
+  render::Mesh mesh;
   const float zNear = -2.0f, zFar = -12.0f;
   mesh.points = { -1, -1, zNear, 1, -1, zNear, 1, -1, zFar, -1, -1, zFar };
   // Tilt: the quad lies in y = -1 (a floor); the camera looks level.
@@ -400,14 +414,14 @@ TEST(CpuRendererTest, ScreenSpaceInterpolationDistortsAsPredicted)
   m.ambient = Vec3f(0, 0, 0);
   auto lighting = OneLight(Vec3f(0, 1, 0));
   const auto cam = CameraLookingAt(Vec3d(0, 0, 0), Vec3d(0, 0, -1), 60);
-  cpu::RenderOptions opt;
+  render::RenderOptions opt;
   opt.width = 200;
   opt.height = 300;
-  opt.mode = cpu::ShadingMode::Phong;
-  opt.interpolation = cpu::InterpolationSpace::Perspective;
-  const auto persp = cpu::Render(mesh, cam, lighting, m, opt);
-  opt.interpolation = cpu::InterpolationSpace::Screen;
-  const auto screen = cpu::Render(mesh, cam, lighting, m, opt);
+  opt.mode = render::ShadingMode::Phong;
+  opt.interpolation = render::InterpolationSpace::Perspective;
+  const auto persp = test::RenderCpu(mesh, cam, lighting, m, opt);
+  opt.interpolation = render::InterpolationSpace::Screen;
+  const auto screen = test::RenderCpu(mesh, cam, lighting, m, opt);
   // Screen rows of the near and far edges: y_ndc = f * y / (-z).
   const double f = 1.0 / std::tan(30.0 * sl::kPi<double> / 180.0);
   auto rowOf = [&](double z) { return (0.5 - 0.5 * f * (-1.0) / (-z)) * opt.height; };
@@ -457,37 +471,37 @@ TEST(CpuRendererTest, AccuracyAgainstAnalyticSphereAndTorus)
   for (const auto& c : cases)
   {
     const auto cam = CameraLookingAt(c.eye, Vec3d(0, 0, 0), 40);
-    std::map<cpu::ShadingMode, std::vector<double>> errors;
+    std::map<render::ShadingMode, std::vector<double>> errors;
     for (int level : c.levels)
     {
       // Exact vertex normals: the comparison isolates interpolation error.
-      const cpu::Mesh mesh = MeshOf(c.make(level), true);
-      for (auto mode : { cpu::ShadingMode::Flat, cpu::ShadingMode::Gouraud,
-             cpu::ShadingMode::Phong, cpu::ShadingMode::FastPhong })
+      const render::Mesh mesh = MeshOf(c.make(level), true);
+      for (auto mode : { render::ShadingMode::Flat, render::ShadingMode::Gouraud,
+             render::ShadingMode::Phong, render::ShadingMode::FastPhong })
       {
-        cpu::RenderOptions opt;
+        render::RenderOptions opt;
         opt.width = 240;
         opt.height = 180;
         opt.mode = mode;
         opt.cullBackFaces = true;
         // Fast Phong is a screen-space method: compare it with Phong in
         // the same space; the others perspective-correct.
-        if (mode == cpu::ShadingMode::FastPhong)
+        if (mode == render::ShadingMode::FastPhong)
         {
-          opt.interpolation = cpu::InterpolationSpace::Screen;
+          opt.interpolation = render::InterpolationSpace::Screen;
         }
-        const auto image = cpu::Render(mesh, cam, lighting, material, opt);
+        const auto image = test::RenderCpu(mesh, cam, lighting, material, opt);
         const auto e = CompareToReference(image, cam, lighting, material, c.hit);
         ASSERT_GT(e.pixels, 2000);
         errors[mode].push_back(e.mean);
-        std::printf("%-10s %-6d %-14s %10.5f %10.5f\n", c.name, level, cpu::ModeName(mode), e.mean,
+        std::printf("%-10s %-6d %-14s %10.5f %10.5f\n", c.name, level, render::ShadingModeName(mode), e.mean,
           e.p99);
       }
     }
     for (size_t k = 0; k < c.levels.size(); ++k)
     {
       // The lecture's ordering at equal tessellation.
-      EXPECT_LT(errors[cpu::ShadingMode::Phong][k], errors[cpu::ShadingMode::Gouraud][k])
+      EXPECT_LT(errors[render::ShadingMode::Phong][k], errors[render::ShadingMode::Gouraud][k])
         << c.name << " level " << c.levels[k];
       // Known exception, kept visible rather than hidden: on the 80-triangle
       // icosphere a vertex highlight smears over its five triangles and
@@ -496,20 +510,20 @@ TEST(CpuRendererTest, AccuracyAgainstAnalyticSphereAndTorus)
       const bool coarseIcosphere = std::string(c.name) == "icosphere" && c.levels[k] == 1;
       if (coarseIcosphere)
       {
-        EXPECT_GT(errors[cpu::ShadingMode::Gouraud][k], errors[cpu::ShadingMode::Flat][k]);
+        EXPECT_GT(errors[render::ShadingMode::Gouraud][k], errors[render::ShadingMode::Flat][k]);
       }
       else
       {
-        EXPECT_LT(errors[cpu::ShadingMode::Gouraud][k], errors[cpu::ShadingMode::Flat][k])
+        EXPECT_LT(errors[render::ShadingMode::Gouraud][k], errors[render::ShadingMode::Flat][k])
           << c.name << " level " << c.levels[k];
       }
       if (k > 0)
       {
-        for (auto mode : { cpu::ShadingMode::Flat, cpu::ShadingMode::Gouraud,
-               cpu::ShadingMode::Phong })
+        for (auto mode : { render::ShadingMode::Flat, render::ShadingMode::Gouraud,
+               render::ShadingMode::Phong })
         {
           EXPECT_LT(errors[mode][k], errors[mode][k - 1])
-            << c.name << " " << cpu::ModeName(mode) << " level " << c.levels[k];
+            << c.name << " " << render::ShadingModeName(mode) << " level " << c.levels[k];
         }
       }
     }
@@ -518,17 +532,17 @@ TEST(CpuRendererTest, AccuracyAgainstAnalyticSphereAndTorus)
 
 TEST(CpuRendererTest, FastPhongStaysCloseToPhong)
 {
-  const cpu::Mesh mesh = MeshOf(sl::datasets::MakeTorus(1.0, 0.4, 96, 48), true);
+  const render::Mesh mesh = MeshOf(sl::datasets::MakeTorus(1.0, 0.4, 96, 48), true);
   const auto cam = CameraLookingAt(Vec3d(0.3, 2.2, 2.6), Vec3d(0, 0, 0), 40);
   const auto lighting = OneLight(sl::NormalizeOr(Vec3f(-0.4f, 0.5f, 1.0f), Vec3f(0, 0, 1)));
-  cpu::RenderOptions opt;
+  render::RenderOptions opt;
   opt.width = 480;
   opt.height = 360;
-  opt.interpolation = cpu::InterpolationSpace::Screen;
-  opt.mode = cpu::ShadingMode::Phong;
-  const auto phong = cpu::Render(mesh, cam, lighting, BlinnPhong(), opt);
-  opt.mode = cpu::ShadingMode::FastPhong;
-  const auto fast = cpu::Render(mesh, cam, lighting, BlinnPhong(), opt);
+  opt.interpolation = render::InterpolationSpace::Screen;
+  opt.mode = render::ShadingMode::Phong;
+  const auto phong = test::RenderCpu(mesh, cam, lighting, BlinnPhong(), opt);
+  opt.mode = render::ShadingMode::FastPhong;
+  const auto fast = test::RenderCpu(mesh, cam, lighting, BlinnPhong(), opt);
   double sum = 0;
   int64_t n = 0;
   for (size_t p = 0; p < phong.covered.size(); ++p)
@@ -551,21 +565,21 @@ TEST(CpuRendererTest, FastPhongStaysCloseToPhong)
 
 TEST(CpuRendererTest, BadParametersThrow)
 {
-  const cpu::Mesh mesh = MeshOf(sl::datasets::MakeIcosphere(1));
+  const render::Mesh mesh = MeshOf(sl::datasets::MakeIcosphere(1));
   const auto cam = CameraLookingAt(Vec3d(0, 0, 4), Vec3d(0, 0, 0), 40);
-  cpu::RenderOptions opt;
+  render::RenderOptions opt;
   opt.width = 0;
-  EXPECT_THROW(cpu::Render(mesh, cam, OneLight(Vec3f(0, 0, 1)), BlinnPhong(), opt),
+  EXPECT_THROW(test::RenderCpu(mesh, cam, OneLight(Vec3f(0, 0, 1)), BlinnPhong(), opt),
     std::invalid_argument);
   opt.width = 10;
   auto badCam = cam;
   badCam.position.x = std::nan("");
-  EXPECT_THROW(cpu::Render(mesh, badCam, OneLight(Vec3f(0, 0, 1)), BlinnPhong(), opt),
+  EXPECT_THROW(test::RenderCpu(mesh, badCam, OneLight(Vec3f(0, 0, 1)), BlinnPhong(), opt),
     std::invalid_argument);
   auto ct = BlinnPhong();
   ct.model = sl::ReflectanceModel::CookTorrance;
-  opt.mode = cpu::ShadingMode::FastPhong;
-  EXPECT_THROW(cpu::Render(mesh, cam, OneLight(Vec3f(0, 0, 1)), ct, opt), std::invalid_argument);
+  opt.mode = render::ShadingMode::FastPhong;
+  EXPECT_THROW(test::RenderCpu(mesh, cam, OneLight(Vec3f(0, 0, 1)), ct, opt), std::invalid_argument);
 }
 
 TEST(CpuRendererTest, VtkImageAlgorithmFrontEnd)

@@ -5,6 +5,8 @@
 #include "AnalyticMeshes.h"
 #include "GpuRenderer.h"
 #include "PolyDataMesh.h"
+#include "shadinglab/cpu/SoftwareRenderer.h"
+#include "RenderTestUtil.h"
 #include "vtkShadingLabCompositePolyDataMapper.h"
 #include "vtkShadingLabPolyDataMapper.h"
 
@@ -33,9 +35,12 @@
 #include <cstdlib>
 #include <cstdio>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace sl = shadinglab;
-namespace cpu = shadinglab::cpu;
+namespace render = shadinglab::render;
+namespace test = shadinglab::test;
 
 namespace
 {
@@ -47,7 +52,7 @@ struct Difference
   int64_t pixels = 0;
 };
 
-Difference Compare(const cpu::Image& a, const cpu::Image& b)
+Difference Compare(const render::Image& a, const render::Image& b)
 {
   std::vector<double> d;
   for (size_t p = 0; p < a.covered.size(); ++p)
@@ -98,9 +103,9 @@ bool HaveGpu()
   return true;
 }
 
-cpu::Camera Camera(bool parallel = false)
+render::Camera Camera(bool parallel = false)
 {
-  cpu::Camera cam;
+  render::Camera cam;
   cam.position = { 0.6, 1.1, 3.4 };
   cam.focalPoint = { 0, 0, 0 };
   cam.viewUp = { 0, 1, 0 };
@@ -149,6 +154,22 @@ vtkSmartPointer<vtkPolyData> WithExactNormals(vtkPolyData* raw)
   return pd;
 }
 
+/// One frame of a fresh GL renderer, through the render::Renderer interface.
+render::Image RenderGpu(vtkPolyData* pd, const render::Camera& camera,
+  const sl::Lighting<double>& lighting, const sl::Material<double>& material,
+  const render::RenderOptions& options, int* shaderBuilds = nullptr)
+{
+  const render::Mesh mesh = render::MeshFromPolyData(pd);
+  sl::gl::GpuRenderer renderer;
+  render::RenderStats stats;
+  auto image = test::RenderWith(renderer, mesh, camera, lighting, material, options, &stats);
+  if (shaderBuilds)
+  {
+    *shaderBuilds = stats.shaderBuilds;
+  }
+  return image;
+}
+
 // Thresholds (in 1/255): mean over covered pixels and 99th percentile.
 // llvmpipe evaluates the same float formulas, so most pixels agree to the
 // 8-bit rounding; the tail comes from pixels on triangle edges where the two
@@ -159,7 +180,33 @@ constexpr double kP99Threshold = 4.0;
 
 } // namespace
 
-TEST(GpuParityGLTest, EveryModeBothInterpolationSpaces)
+/// The reflectance models of the parity table, each a named material.
+std::vector<std::pair<std::string, sl::Material<double>>> ParityMaterials()
+{
+  std::vector<std::pair<std::string, sl::Material<double>>> out;
+  auto m = BlinnPhong();
+  m.model = sl::ReflectanceModel::Lambert;
+  out.emplace_back("lambert", m);
+  m.model = sl::ReflectanceModel::Phong;
+  out.emplace_back("phong", m);
+  m.model = sl::ReflectanceModel::BlinnPhong;
+  out.emplace_back("blinn-phong", m);
+  m.model = sl::ReflectanceModel::CookTorrance;
+  m.lobeCount = 1;
+  m.lobes[0] = { 1.0, 0.3 };
+  m.eta = { 1.5, 1.5, 1.5 };
+  out.emplace_back("ct-dielectric", m);
+  m.lobeCount = 2;
+  m.lobes[0] = { 0.6, 0.2 };
+  m.lobes[1] = { 0.4, 0.5 };
+  m.eta = { 0.14, 0.43, 1.38 };
+  m.k = { 3.7, 2.45, 1.9 };
+  m.variant = sl::SpecularVariant::Walter2007;
+  out.emplace_back("ct-conductor", m);
+  return out;
+}
+
+TEST(GpuParityGLTest, EveryModeTimesModelBothInterpolationSpaces)
 {
   if (!HaveGpu())
   {
@@ -167,53 +214,63 @@ TEST(GpuParityGLTest, EveryModeBothInterpolationSpaces)
   }
   auto torus = WithExactNormals(sl::datasets::MakeTorus(1.0, 0.4, 48, 24));
   auto sphere = WithExactNormals(sl::datasets::MakeIcosphere(3));
-  const cpu::Mesh torusMesh = cpu::MeshFromPolyData(torus);
-  const cpu::Mesh sphereMesh = cpu::MeshFromPolyData(sphere);
+  // Irregular meshes as a user brings them: non-uniform triangle sizes and
+  // valences (a noisy decimated surface; a marching-cubes isosurface).
+  vtkSmartPointer<vtkPolyData> irregular, blobs;
+  irregular.TakeReference(sl::datasets::MakeNoisyDecimatedSphere(5, 0.08, 0.15));
+  blobs.TakeReference(sl::datasets::MakeMetaballIsosurface(40));
   struct Case
   {
     const char* name;
     vtkPolyData* pd;
-    const cpu::Mesh* mesh;
+    int width, height;
   };
-  const Case cases[] = { { "torus", torus, &torusMesh }, { "icosphere", sphere, &sphereMesh } };
-  std::printf("%-10s %-14s %-12s %8s %8s %8s\n", "mesh", "mode", "interp", "mean", "p99", "pixels");
+  const Case cases[] = { { "torus", torus, 320, 240 }, { "icosphere", sphere, 320, 240 },
+    { "noisy-decimated", irregular, 640, 480 }, { "metaballs", blobs, 640, 480 } };
+  sl::gl::GpuRenderer gpuRenderer;
+  sl::cpu::SoftwareRenderer cpuRenderer;
+  std::printf("%-16s %-11s %-14s %-12s %8s %8s %8s\n", "mesh", "mode", "model", "interp",
+    "mean", "p99", "pixels");
   for (const auto& c : cases)
   {
-    for (int mode = 0; mode < 5; ++mode)
+    const render::Mesh mesh = render::MeshFromPolyData(c.pd);
+    double bounds[6];
+    mesh.Bounds(bounds);
+    const render::Camera camera = c.pd == torus.Get() || c.pd == sphere.Get()
+      ? Camera()
+      : render::FitCamera(bounds, 20, 15, 1.0, static_cast<double>(c.width) / c.height, false);
+    for (const auto& [modelName, material] : ParityMaterials())
     {
-      for (bool perspective : { true, false })
+      for (const auto& mode : render::kShadingModes)
       {
-        cpu::RenderOptions opt;
-        opt.width = 320;
-        opt.height = 240;
-        opt.mode = static_cast<cpu::ShadingMode>(mode);
-        opt.interpolation =
-          perspective ? cpu::InterpolationSpace::Perspective : cpu::InterpolationSpace::Screen;
-        // Fast Phong expands about the provoking vertex on both (a fragment
-        // shader has no triangle centroid).
-        opt.expansion = sl::ExpansionPoint::Vertex;
-        auto material = BlinnPhong();
-        if (opt.mode == cpu::ShadingMode::CookTorrance)
+        for (bool perspective : { true, false })
         {
-          material.model = sl::ReflectanceModel::CookTorrance;
-          material.lobeCount = 2;
-          material.lobes[0] = { 0.6, 0.2 };
-          material.lobes[1] = { 0.4, 0.5 };
-          material.eta = { 0.14, 0.43, 1.38 };
-          material.k = { 3.7, 2.45, 1.9 };
-          material.variant = sl::SpecularVariant::Walter2007;
+          render::RenderOptions opt;
+          opt.width = c.width;
+          opt.height = c.height;
+          opt.mode = mode.value;
+          opt.interpolation =
+            perspective ? render::InterpolationSpace::Perspective : render::InterpolationSpace::Screen;
+          const auto lights = Lights(true);
+          if (!render::SupportsModel(mode.value, material.model))
+          {
+            // No quadratic form: both backends refuse with the same error.
+            EXPECT_THROW(test::RenderWith(gpuRenderer, mesh, camera, lights, material, opt),
+              std::invalid_argument);
+            EXPECT_THROW(test::RenderWith(cpuRenderer, mesh, camera, lights, material, opt),
+              std::invalid_argument);
+            continue;
+          }
+          const auto gpu = test::RenderWith(gpuRenderer, mesh, camera, lights, material, opt);
+          const auto ref = test::RenderWith(cpuRenderer, mesh, camera, lights, material, opt);
+          const auto d = Compare(ref, gpu);
+          std::printf("%-16s %-11s %-14s %-12s %8.3f %8.3f %8lld\n", c.name, mode.name,
+            modelName.c_str(), perspective ? "perspective" : "screen", d.mean, d.p99,
+            static_cast<long long>(d.pixels));
+          EXPECT_GT(d.pixels, 5000);
+          EXPECT_LE(d.mean, kMeanThreshold) << c.name << " " << mode.name << " " << modelName;
+          EXPECT_LE(d.p99, kP99Threshold) << c.name << " " << mode.name << " " << modelName;
         }
-        const auto lights = Lights(true);
-        const auto gpu = sl::gl::RenderGpu(c.pd, Camera(), lights, material, opt);
-        const auto ref = cpu::Render(
-          *c.mesh, Camera(), lights.Cast<float>(), material.Cast<float>(), opt);
-        const auto d = Compare(ref, gpu);
-        std::printf("%-10s %-14s %-12s %8.3f %8.3f %8lld\n", c.name,
-          cpu::ModeName(opt.mode), perspective ? "perspective" : "screen", d.mean, d.p99,
-          static_cast<long long>(d.pixels));
-        EXPECT_GT(d.pixels, 5000);
-        EXPECT_LE(d.mean, kMeanThreshold) << c.name << " " << cpu::ModeName(opt.mode);
-        EXPECT_LE(d.p99, kP99Threshold) << c.name << " " << cpu::ModeName(opt.mode);
       }
     }
   }
@@ -225,7 +282,7 @@ TEST(GpuParityGLTest, EveryModeBothInterpolationSpaces)
 namespace
 {
 /// Linear image read back from a render window (rows top-down).
-cpu::Image Grab(vtkRenderWindow* window)
+render::Image Grab(vtkRenderWindow* window)
 {
   int* size = window->GetSize();
   const int W = size[0], H = size[1];
@@ -234,7 +291,7 @@ cpu::Image Grab(vtkRenderWindow* window)
   delete[] pixels;
   std::vector<float> z(static_cast<size_t>(W) * H);
   window->GetZbufferData(0, 0, W - 1, H - 1, z.data());
-  cpu::Image image;
+  render::Image image;
   image.width = W;
   image.height = H;
   image.rgb.resize(rgb.size());
@@ -267,7 +324,7 @@ vtkSmartPointer<vtkRenderWindow> RenderOffscreen(vtkRenderer* ren, int width, in
   return window;
 }
 
-void SetCamera(vtkRenderer* ren, const cpu::Camera& c)
+void SetCamera(vtkRenderer* ren, const render::Camera& c)
 {
   vtkCamera* cam = ren->GetActiveCamera();
   cam->SetPosition(c.position.x, c.position.y, c.position.z);
@@ -307,8 +364,8 @@ TEST(GpuParityGLTest, ScreenSpaceInterpolationMatchesTheCpu)
     normals->InsertNextTuple(n);
   }
   floor->GetPointData()->SetNormals(normals);
-  const cpu::Mesh mesh = cpu::MeshFromPolyData(floor);
-  cpu::Camera cam;
+  const render::Mesh mesh = render::MeshFromPolyData(floor);
+  render::Camera cam;
   cam.position = { 0, 0, 0 };
   cam.focalPoint = { 0, 0, -1 };
   cam.viewAngle = 60;
@@ -320,16 +377,16 @@ TEST(GpuParityGLTest, ScreenSpaceInterpolationMatchesTheCpu)
   sl::Material<double> m = BlinnPhong();
   m.ks = 0.0;
   m.kd = 1.0;
-  cpu::RenderOptions opt;
+  render::RenderOptions opt;
   opt.width = 200;
   opt.height = 300;
-  opt.mode = cpu::ShadingMode::Gouraud;
-  cpu::Image gpu[2], ref[2];
+  opt.mode = render::ShadingMode::Gouraud;
+  render::Image gpu[2], ref[2];
   for (int i = 0; i < 2; ++i)
   {
-    opt.interpolation = i == 0 ? cpu::InterpolationSpace::Perspective : cpu::InterpolationSpace::Screen;
-    gpu[i] = sl::gl::RenderGpu(floor, cam, lights, m, opt);
-    ref[i] = cpu::Render(mesh, cam, lights.Cast<float>(), m.Cast<float>(), opt);
+    opt.interpolation = i == 0 ? render::InterpolationSpace::Perspective : render::InterpolationSpace::Screen;
+    gpu[i] = RenderGpu(floor, cam, lights, m, opt);
+    ref[i] = test::RenderCpu(mesh, cam, lights.Cast<float>(), m.Cast<float>(), opt);
     const auto d = Compare(ref[i], gpu[i]);
     EXPECT_LE(d.mean, kMeanThreshold) << i;
     EXPECT_LE(d.p99, kP99Threshold) << i;
@@ -348,18 +405,18 @@ TEST(GpuParityGLTest, MeshesWithoutNormalsAndWithCellNormals)
   // No point normals: both compute area-weighted vertex normals.
   vtkSmartPointer<vtkPolyData> bare;
   bare.TakeReference(sl::datasets::MakeUVSphere(24, 12));
-  cpu::RenderOptions opt;
+  render::RenderOptions opt;
   opt.width = 240;
   opt.height = 180;
-  for (auto mode : { cpu::ShadingMode::Gouraud, cpu::ShadingMode::Phong })
+  for (auto mode : { render::ShadingMode::Gouraud, render::ShadingMode::Phong })
   {
     opt.mode = mode;
-    const auto gpu = sl::gl::RenderGpu(bare, Camera(), Lights(false), BlinnPhong(), opt);
-    const auto ref = cpu::Render(cpu::MeshFromPolyData(bare), Camera(), Lights(false).Cast<float>(),
+    const auto gpu = RenderGpu(bare, Camera(), Lights(false), BlinnPhong(), opt);
+    const auto ref = test::RenderCpu(render::MeshFromPolyData(bare), Camera(), Lights(false).Cast<float>(),
       BlinnPhong().Cast<float>(), opt);
     const auto d = Compare(ref, gpu);
-    EXPECT_LE(d.mean, kMeanThreshold) << cpu::ModeName(mode);
-    EXPECT_LE(d.p99, kP99Threshold) << cpu::ModeName(mode);
+    EXPECT_LE(d.mean, kMeanThreshold) << render::ShadingModeName(mode);
+    EXPECT_LE(d.p99, kP99Threshold) << render::ShadingModeName(mode);
   }
   // The mapper computed normals on a copy: the input still has none.
   EXPECT_EQ(bare->GetPointData()->GetNormals(), nullptr);
@@ -373,9 +430,9 @@ TEST(GpuParityGLTest, MeshesWithoutNormalsAndWithCellNormals)
   cellNormals->Update();
   vtkPolyData* withCells = cellNormals->GetOutput();
   ASSERT_NE(withCells->GetCellData()->GetNormals(), nullptr);
-  opt.mode = cpu::ShadingMode::Flat;
-  const auto gpu = sl::gl::RenderGpu(withCells, Camera(), Lights(false), BlinnPhong(), opt);
-  const auto ref = cpu::Render(cpu::MeshFromPolyData(withCells), Camera(), Lights(false).Cast<float>(),
+  opt.mode = render::ShadingMode::Flat;
+  const auto gpu = RenderGpu(withCells, Camera(), Lights(false), BlinnPhong(), opt);
+  const auto ref = test::RenderCpu(render::MeshFromPolyData(withCells), Camera(), Lights(false).Cast<float>(),
     BlinnPhong().Cast<float>(), opt);
   const auto d = Compare(ref, gpu);
   EXPECT_LE(d.mean, kMeanThreshold);
@@ -389,15 +446,15 @@ TEST(GpuParityGLTest, HeadlightAndCameraLight)
     GTEST_SKIP() << "no X display with OpenGL";
   }
   auto torus = WithExactNormals(sl::datasets::MakeTorus(1.0, 0.4, 48, 24));
-  const cpu::Camera cam = Camera();
+  const render::Camera cam = Camera();
   // Both lights shine from the camera: a directional light towards the eye.
   sl::Lighting<double> equivalent;
   equivalent.lightCount = 1;
   equivalent.lights[0].vector = cam.position - cam.focalPoint;
-  cpu::RenderOptions opt;
+  render::RenderOptions opt;
   opt.width = 240;
   opt.height = 180;
-  const auto ref = cpu::Render(cpu::MeshFromPolyData(torus), cam, equivalent.Cast<float>(),
+  const auto ref = test::RenderCpu(render::MeshFromPolyData(torus), cam, equivalent.Cast<float>(),
     BlinnPhong().Cast<float>(), opt);
   for (int kind = 0; kind < 2; ++kind)
   {
@@ -447,12 +504,12 @@ TEST(GpuParityGLTest, SpotLight)
   spot.coneAngle = 20;
   spot.coneExponent = 2;
   spot.intensity = { 2, 2, 2 };
-  cpu::RenderOptions opt;
+  render::RenderOptions opt;
   opt.width = 320;
   opt.height = 240;
-  opt.mode = cpu::ShadingMode::Phong;
-  const auto gpu = sl::gl::RenderGpu(torus, Camera(), lights, BlinnPhong(), opt);
-  const auto ref = cpu::Render(cpu::MeshFromPolyData(torus), Camera(), lights.Cast<float>(),
+  opt.mode = render::ShadingMode::Phong;
+  const auto gpu = RenderGpu(torus, Camera(), lights, BlinnPhong(), opt);
+  const auto ref = test::RenderCpu(render::MeshFromPolyData(torus), Camera(), lights.Cast<float>(),
     BlinnPhong().Cast<float>(), opt);
   const auto d = Compare(ref, gpu);
   EXPECT_LE(d.mean, kMeanThreshold);
@@ -503,8 +560,8 @@ TEST(GpuParityGLTest, MultiblockInput)
   auto window = RenderOffscreen(ren, 240, 180);
   EXPECT_GE(mapper->GetShaderBuildCount(), 1);
   // The CPU reference: both blocks as one mesh.
-  cpu::Mesh both = cpu::MeshFromPolyData(a);
-  const cpu::Mesh second = cpu::MeshFromPolyData(b);
+  render::Mesh both = render::MeshFromPolyData(a);
+  const render::Mesh second = render::MeshFromPolyData(b);
   const int64_t offset = both.NumberOfPoints();
   both.points.insert(both.points.end(), second.points.begin(), second.points.end());
   both.normals.insert(both.normals.end(), second.normals.begin(), second.normals.end());
@@ -520,11 +577,11 @@ TEST(GpuParityGLTest, MultiblockInput)
   sl::Lighting<double> lights;
   lights.lightCount = 1;
   lights.lights[0].vector = { -0.4, 0.6, 1.0 };
-  cpu::RenderOptions opt;
+  render::RenderOptions opt;
   opt.width = 240;
   opt.height = 180;
-  opt.mode = cpu::ShadingMode::Gouraud;
-  const auto ref = cpu::Render(both, Camera(), lights.Cast<float>(), BlinnPhong().Cast<float>(), opt);
+  opt.mode = render::ShadingMode::Gouraud;
+  const auto ref = test::RenderCpu(both, Camera(), lights.Cast<float>(), BlinnPhong().Cast<float>(), opt);
   const auto d = Compare(ref, Grab(window));
   EXPECT_GT(d.pixels, 8000);
   EXPECT_LE(d.mean, kMeanThreshold);

@@ -10,6 +10,7 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkQuadricDecimation.h>
 #include <vtkSmartPointer.h>
 #include <vtkUnsignedCharArray.h>
 
@@ -524,6 +525,33 @@ vtkPolyData* MakeTerrain(int n)
   }
   mesh->GetPointData()->AddArray(elevation);
   return mesh;
+}
+
+vtkPolyData* MakeNoisyDecimatedSphere(int level, double noise, double keep)
+{
+  vtkSmartPointer<vtkPolyData> sphere;
+  sphere.TakeReference(MakeIcosphere(level));
+  vtkPoints* points = sphere->GetPoints();
+  for (vtkIdType i = 0; i < points->GetNumberOfPoints(); ++i)
+  {
+    double p[3];
+    points->GetPoint(i, p);
+    // A smooth bumpy field plus a hash-based jitter: deterministic on every
+    // machine (no std random distribution, whose output is unspecified).
+    const double bumps = std::sin(5.0 * p[0]) * std::sin(4.0 * p[1] + 1.0) * std::cos(3.0 * p[2]);
+    const double hash = std::fmod(std::sin(12.9898 * i + 78.233) * 43758.5453, 1.0);
+    const double r = 1.0 + noise * (0.7 * bumps + 0.3 * hash);
+    points->SetPoint(i, p[0] * r, p[1] * r, p[2] * r);
+  }
+  sphere->GetPointData()->RemoveArray(kExactNormalArray);
+  vtkNew<vtkQuadricDecimation> decimate;
+  decimate->SetInputData(sphere);
+  decimate->SetTargetReduction(1.0 - keep);
+  decimate->VolumePreservationOn();
+  decimate->Update();
+  vtkPolyData* out = vtkPolyData::New();
+  out->ShallowCopy(decimate->GetOutput());
+  return out;
 }
 
 } // namespace shadinglab::datasets

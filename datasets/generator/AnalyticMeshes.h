@@ -44,4 +44,10 @@ vtkPolyData* MakeRecedingPlane(double depth);
 /// and the exact normal.
 vtkPolyData* MakeTerrain(int n);
 
+/// An irregular surface like a scanned part: an icosphere of `level`
+/// (20 * 4^level triangles) with deterministic radial noise of relative
+/// amplitude `noise`, then quadric-decimated to `keep` of its triangles, so
+/// triangle sizes and vertex valences vary widely. No exact normal.
+vtkPolyData* MakeNoisyDecimatedSphere(int level, double noise, double keep);
+
 } // namespace shadinglab::datasets

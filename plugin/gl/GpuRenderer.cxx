@@ -15,11 +15,15 @@
 #include <vtkProperty.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
+#include <vtkSmartPointer.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkWindowToImageFilter.h>
 
+#include "PolyDataMesh.h"
+
 #include <X11/Xlib.h>
 
+#include <chrono>
 #include <cstdlib>
 #include <stdexcept>
 
@@ -52,41 +56,35 @@ bool GpuAvailable(std::string& why)
   return true;
 }
 
-cpu::Image RenderGpu(vtkPolyData* mesh, const cpu::Camera& cam, const Lighting<double>& lighting,
-  const Material<double>& material, const cpu::RenderOptions& options, int* shaderBuilds)
+struct GpuRenderer::Internals
 {
-  // The same rule as the CPU renderer: fast Phong expands (N.L) and (N.H)
-  // only, so it has no Cook-Torrance form.
-  if (options.mode == cpu::ShadingMode::FastPhong &&
-    material.model == ReflectanceModel::CookTorrance)
+  vtkNew<vtkShadingLabPolyDataMapper> Mapper;
+  vtkNew<vtkActor> Actor;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkRenderWindow> Window;
+  render::Image Output;
+
+  Internals()
   {
-    throw std::invalid_argument("fast-phong evaluates (N.L) and (N.H)^n quadratics: use a "
-                                "lambert, phong or blinn-phong material");
+    this->Actor->SetMapper(this->Mapper);
+    this->Renderer->AddActor(this->Actor);
+    this->Window->SetOffScreenRendering(1);
+    this->Window->SetMultiSamples(0);
+    this->Window->AddRenderer(this->Renderer);
   }
-  const int ssaa = options.ssaa;
-  const int W = options.width * ssaa, H = options.height * ssaa;
-  vtkNew<vtkShadingLabPolyDataMapper> mapper;
-  mapper->SetInputData(mesh);
-  mapper->SetShadingMode(static_cast<int>(options.mode));
-  mapper->SetPerspectiveCorrect(options.interpolation == cpu::InterpolationSpace::Perspective);
-  mapper->SetMaterial(material);
-  mapper->SetFastPhongMaxSpread(options.fastPhongMaxSpread);
-  mapper->ScalarVisibilityOn();
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  vtkProperty* prop = actor->GetProperty();
-  prop->SetDiffuse(1.0);
-  prop->SetDiffuseColor(material.diffuseColor.x, material.diffuseColor.y, material.diffuseColor.z);
-  prop->SetAmbient(0.0);
-  prop->SetSpecular(0.0);
-  prop->SetBackfaceCulling(options.cullBackFaces);
-  vtkNew<vtkRenderer> renderer;
-  renderer->AddActor(actor);
-  renderer->SetBackground(options.background.x, options.background.y, options.background.z);
-  renderer->SetAmbient(lighting.ambientIntensity.x, lighting.ambientIntensity.y,
-    lighting.ambientIntensity.z);
+
+  void SetLights(const Lighting<double>& lighting);
+  void SetCamera(const render::Camera& cam);
+  void ReadBack(int W, int H, int ssaa);
+};
+
+void GpuRenderer::Internals::SetLights(const Lighting<double>& lighting)
+{
+  this->Renderer->RemoveAllLights();
+  this->Renderer->SetAmbient(
+    lighting.ambientIntensity.x, lighting.ambientIntensity.y, lighting.ambientIntensity.z);
   // No lights given: VTK's automatic headlight (a light at the camera).
-  renderer->SetAutomaticLightCreation(lighting.lightCount == 0);
+  this->Renderer->SetAutomaticLightCreation(lighting.lightCount == 0);
   for (int j = 0; j < lighting.lightCount; ++j)
   {
     const Light<double>& l = lighting.lights[j];
@@ -112,9 +110,13 @@ cpu::Image RenderGpu(vtkPolyData* mesh, const cpu::Camera& cam, const Lighting<d
       light->SetExponent(l.coneExponent);
       light->SetAttenuationValues(l.attenuation.x, l.attenuation.y, l.attenuation.z);
     }
-    renderer->AddLight(light);
+    this->Renderer->AddLight(light);
   }
-  vtkCamera* camera = renderer->GetActiveCamera();
+}
+
+void GpuRenderer::Internals::SetCamera(const render::Camera& cam)
+{
+  vtkCamera* camera = this->Renderer->GetActiveCamera();
   camera->SetPosition(cam.position.x, cam.position.y, cam.position.z);
   camera->SetFocalPoint(cam.focalPoint.x, cam.focalPoint.y, cam.focalPoint.z);
   camera->SetViewUp(cam.viewUp.x, cam.viewUp.y, cam.viewUp.z);
@@ -122,36 +124,26 @@ cpu::Image RenderGpu(vtkPolyData* mesh, const cpu::Camera& cam, const Lighting<d
   camera->SetParallelProjection(cam.parallel);
   camera->SetParallelScale(cam.parallelScale);
   camera->SetClippingRange(cam.nearClip, cam.farClip);
-  vtkNew<vtkRenderWindow> window;
-  window->SetOffScreenRendering(1);
-  window->SetMultiSamples(0);
-  window->SetSize(W, H);
-  window->AddRenderer(renderer);
-  window->Render();
-  if (mapper->GetFailedSubstitutionCount() > 0)
-  {
-    throw std::runtime_error("GPU shader substitution failed (see log)");
-  }
+}
+
+void GpuRenderer::Internals::ReadBack(int W, int H, int ssaa)
+{
   vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
+  grab->SetInput(this->Window);
   grab->SetInputBufferTypeToRGB();
   grab->ReadFrontBufferOff();
   grab->Update();
   vtkNew<vtkWindowToImageFilter> depthGrab;
-  depthGrab->SetInput(window);
+  depthGrab->SetInput(this->Window);
   depthGrab->SetInputBufferTypeToZBuffer();
   depthGrab->ReadFrontBufferOff();
   depthGrab->Update();
-  vtkImageData* rgbImage = grab->GetOutput();
-  auto* pixels = vtkUnsignedCharArray::SafeDownCast(rgbImage->GetPointData()->GetScalars());
+  auto* pixels =
+    vtkUnsignedCharArray::SafeDownCast(grab->GetOutput()->GetPointData()->GetScalars());
   auto* depth = vtkFloatArray::SafeDownCast(depthGrab->GetOutput()->GetPointData()->GetScalars());
-  if (!pixels || !depth)
+  if (!pixels || !depth || pixels->GetNumberOfTuples() != static_cast<vtkIdType>(W) * H)
   {
     throw std::runtime_error("GPU read-back failed");
-  }
-  if (shaderBuilds)
-  {
-    *shaderBuilds = mapper->GetShaderBuildCount();
   }
   // Frame to linear floats, rows top-down (VTK rows start at the bottom),
   // then the same resolve as the CPU renderer.
@@ -170,9 +162,81 @@ cpu::Image RenderGpu(vtkPolyData* mesh, const cpu::Camera& cam, const Lighting<d
       covered[o] = depth->GetValue(i) < 1.0f;
     }
   }
-  cpu::Image image;
-  cpu::DownsampleBox(rgb, covered, W, H, ssaa, image);
-  return image;
+  render::DownsampleBox(rgb, covered, W, H, ssaa, this->Output);
+}
+
+GpuRenderer::GpuRenderer()
+  : Impl(new Internals)
+{
+}
+
+GpuRenderer::~GpuRenderer() = default;
+
+const render::Image& GpuRenderer::Render(
+  const render::Scene& scene, const render::RenderOptions& options, render::RenderStats* stats)
+{
+  const std::string error = render::ValidateRequest(scene, options);
+  if (!error.empty())
+  {
+    throw std::invalid_argument(error);
+  }
+  if (options.mode == render::ShadingMode::FastPhong &&
+    options.expansion != ExpansionPoint::Vertex)
+  {
+    throw std::invalid_argument("the GPU expands fast-phong about the provoking vertex only "
+                                "(a fragment shader cannot see its triangle's centroid): use "
+                                "--expansion vertex or --backend cpu");
+  }
+  const auto start = std::chrono::steady_clock::now();
+  Internals& in = *this->Impl;
+  const Material<double>& material = scene.material;
+  vtkSmartPointer<vtkPolyData> polydata;
+  polydata.TakeReference(render::PolyDataFromMesh(*scene.mesh));
+  in.Mapper->SetInputData(polydata);
+  in.Mapper->SetShadingMode(static_cast<int>(options.mode));
+  in.Mapper->SetPerspectiveCorrect(options.interpolation == render::InterpolationSpace::Perspective);
+  in.Mapper->SetMaterial(material);
+  in.Mapper->SetFastPhongMaxSpread(options.fastPhongMaxSpread);
+  in.Mapper->ScalarVisibilityOn();
+  in.Mapper->SetColorModeToDirectScalars();
+  vtkProperty* prop = in.Actor->GetProperty();
+  prop->SetDiffuse(1.0);
+  prop->SetDiffuseColor(material.diffuseColor.x, material.diffuseColor.y, material.diffuseColor.z);
+  prop->SetAmbient(0.0);
+  prop->SetSpecular(0.0);
+  prop->SetBackfaceCulling(options.cullBackFaces);
+  in.Renderer->SetBackground(options.background.x, options.background.y, options.background.z);
+  in.SetLights(scene.lighting);
+  in.SetCamera(scene.camera);
+  const int ssaa = options.ssaa;
+  const int W = options.width * ssaa, H = options.height * ssaa;
+  in.Window->SetSize(W, H);
+  const int buildsBefore = in.Mapper->GetShaderBuildCount();
+  in.Window->Render();
+  if (in.Mapper->GetFailedSubstitutionCount() > 0)
+  {
+    throw std::runtime_error("GPU shader substitution failed (see log)");
+  }
+  in.ReadBack(W, H, ssaa);
+  if (stats)
+  {
+    *stats = render::RenderStats();
+    stats->milliseconds =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    stats->polygons = scene.mesh->NumberOfPolygons();
+    for (int64_t p = 0; p < stats->polygons; ++p)
+    {
+      stats->triangles += scene.mesh->offsets[p + 1] - scene.mesh->offsets[p] - 2;
+    }
+    for (uint8_t c : in.Output.covered)
+    {
+      stats->pixelsCovered += c;
+    }
+    stats->shaderBuilds = in.Mapper->GetShaderBuildCount() - buildsBefore;
+    stats->normalsComputed = scene.mesh->normals.empty() &&
+      options.mode != render::ShadingMode::Flat;
+  }
+  return in.Output;
 }
 
 } // namespace shadinglab::gl

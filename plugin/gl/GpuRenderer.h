@@ -1,15 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Offscreen rendering through vtkShadingLabPolyDataMapper with the same
-// inputs and output as the CPU renderer (the interchangeable-evaluator idea
-// of OpenSubdiv's cpu/gpu evaluators): mesh + camera + lights + material +
-// mode -> image.
+// The GL renderer: one implementation of render::Renderer (the CPU software
+// renderer in plugin/cpu is the other), drawing through
+// vtkShadingLabPolyDataMapper into an offscreen VTK window.
 #pragma once
 
-#include "shadinglab/cpu/SoftwareRenderer.h"
+#include "shadinglab/render/Renderer.h"
 
+#include <memory>
 #include <string>
-
-class vtkPolyData;
 
 namespace shadinglab::gl
 {
@@ -20,18 +18,32 @@ namespace shadinglab::gl
 bool GpuAvailable(std::string& why);
 
 /**
- * Renders `mesh` offscreen with the mapper. The options' mode, size, ssaa
- * (box filter over an N-times larger framebuffer), interpolation space and
- * background apply; threads, polygon handling and culling are the GPU's.
- * Lights are given in world coordinates and become scene vtkLights; with
- * none, VTK's automatic headlight is used.
- * Returns the linear image as floats in [0, 1] (8-bit framebuffer precision)
- * with `covered` from the framebuffer's depth. Throws std::invalid_argument
- * for a mode/material mismatch (as cpu::Render) and std::runtime_error for a
- * failed GL render.
+ * Renders offscreen with the mapper. The options' mode, size, ssaa (box
+ * filter over an N-times larger framebuffer), interpolation space, culling
+ * and background apply; threads and polygon handling are the GPU's. Lights
+ * are given in world coordinates and become scene vtkLights; with none,
+ * VTK's automatic headlight is used. The image is linear floats in [0, 1]
+ * (8-bit framebuffer precision) with `covered` from the framebuffer's depth.
+ * The window, renderer and mapper persist across calls, so VTK's shader
+ * cache serves a variant compiled before.
+ * Check GpuAvailable() first: without an X display VTK aborts.
  */
-cpu::Image RenderGpu(vtkPolyData* mesh, const cpu::Camera& camera, const Lighting<double>& lighting,
-  const Material<double>& material, const cpu::RenderOptions& options,
-  int* shaderBuilds = nullptr);
+class GpuRenderer final : public render::Renderer
+{
+public:
+  GpuRenderer();
+  ~GpuRenderer() override;
+  GpuRenderer(const GpuRenderer&) = delete;
+  GpuRenderer& operator=(const GpuRenderer&) = delete;
+
+  render::Backend GetBackend() const override { return render::Backend::GPU; }
+
+  const render::Image& Render(const render::Scene& scene, const render::RenderOptions& options,
+    render::RenderStats* stats = nullptr) override;
+
+private:
+  struct Internals;
+  std::unique_ptr<Internals> Impl;
+};
 
 } // namespace shadinglab::gl

@@ -14,13 +14,13 @@
 #include "shadinglab/model/Shading.h"
 
 #include "shadinglabGLModule.h" // for export macro
+#include "vtkShadingLabPolyDataMapper.h" // for Modes
 
 #include <vtkCompositePolyDataMapper.h>
 #include <vtkWeakPointer.h>
 
 #include <vector>
 
-class vtkShadingLabPolyDataMapper;
 
 class SHADINGLABGL_EXPORT vtkShadingLabCompositePolyDataMapper : public vtkCompositePolyDataMapper
 {
@@ -29,7 +29,9 @@ public:
   vtkTypeMacro(vtkShadingLabCompositePolyDataMapper, vtkCompositePolyDataMapper);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  vtkSetClampMacro(ShadingMode, int, 0, 4);
+  /// vtkShadingLabPolyDataMapper::Modes (default PHONG).
+  vtkSetClampMacro(ShadingMode, int, vtkShadingLabPolyDataMapper::FLAT,
+    vtkShadingLabPolyDataMapper::FAST_PHONG);
   vtkGetMacro(ShadingMode, int);
   vtkSetMacro(PerspectiveCorrect, bool);
   vtkGetMacro(PerspectiveCorrect, bool);
@@ -44,7 +46,7 @@ protected:
   vtkPolyDataMapper* MakeAMapper() override;
   void Render(vtkRenderer* ren, vtkActor* act) override;
 
-  int ShadingMode = 2;
+  int ShadingMode = vtkShadingLabPolyDataMapper::PHONG;
   bool PerspectiveCorrect = true;
   shadinglab::Material<double> Material;
   /// The block mappers made so far (the superclass owns them; weak here).

@@ -3,7 +3,10 @@
 
 #include "MeshArrays.h"
 #include "VertexNormals.h"
+#include "shadinglab/model/Materials.h"
+#include "shadinglab/render/Renderer.h"
 #include "shadinglab_glsl.h"
+#include "shadinglab_glsl_defines.h"
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
@@ -49,6 +52,13 @@ struct vtkShadingLabPolyDataMapper::Internals
 
 vtkStandardNewMacro(vtkShadingLabPolyDataMapper);
 
+// The VTK enum is the render::ShadingMode list, checked at compile time.
+static_assert(vtkShadingLabPolyDataMapper::FLAT == static_cast<int>(shadinglab::render::ShadingMode::Flat) &&
+  vtkShadingLabPolyDataMapper::GOURAUD == static_cast<int>(shadinglab::render::ShadingMode::Gouraud) &&
+  vtkShadingLabPolyDataMapper::PHONG == static_cast<int>(shadinglab::render::ShadingMode::Phong) &&
+  vtkShadingLabPolyDataMapper::FAST_PHONG == static_cast<int>(shadinglab::render::ShadingMode::FastPhong) &&
+  shadinglab::render::kShadingModeCount == 4);
+
 vtkShadingLabPolyDataMapper::vtkShadingLabPolyDataMapper()
   : Internal(new Internals)
 {
@@ -78,18 +88,16 @@ const sl::Material<double>& vtkShadingLabPolyDataMapper::GetMaterial() const
   return this->Internal->Material;
 }
 
+int vtkShadingLabPolyDataMapper::EffectiveMode() const
+{
+  const auto mode = static_cast<sl::render::ShadingMode>(this->ShadingMode);
+  return sl::render::SupportsModel(mode, this->Internal->Material.model) ? this->ShadingMode : PHONG;
+}
+
 std::string vtkShadingLabPolyDataMapper::Variant(vtkRenderer* ren) const
 {
   const sl::Material<double>& m = this->Internal->Material;
-  int model = static_cast<int>(m.model);
-  if (this->ShadingMode == COOK_TORRANCE)
-  {
-    model = static_cast<int>(sl::ReflectanceModel::CookTorrance);
-  }
-  if (this->ShadingMode == FAST_PHONG && model == static_cast<int>(sl::ReflectanceModel::CookTorrance))
-  {
-    model = static_cast<int>(sl::ReflectanceModel::BlinnPhong);
-  }
+  const int model = static_cast<int>(m.model);
   int lights = 0;
   bool point = false;
   bool headlightOnly = true;
@@ -106,9 +114,9 @@ std::string vtkShadingLabPolyDataMapper::Variant(vtkRenderer* ren) const
     }
   }
   headlightOnly &= lights == 1;
-  const bool specular = model != 0 && m.ks > 0;
+  const bool specular = m.model != sl::ReflectanceModel::Lambert && m.ks > 0;
   std::ostringstream v;
-  v << "#define SL_MODE " << this->ShadingMode << "\n"
+  v << "#define SL_MODE " << this->EffectiveMode() << "\n"
     << "#define SL_MODEL " << model << "\n"
     << "#define SL_LIGHT_COUNT " << lights << "\n"
     << "#define SL_POINT_LIGHTS " << (point ? 1 : 0) << "\n"
@@ -191,23 +199,23 @@ void vtkShadingLabPolyDataMapper::ReplaceShaderValues(
   std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
 {
   ++this->ShaderBuildCount;
-  if (this->ShadingMode == FAST_PHONG &&
-    this->Internal->Material.model == sl::ReflectanceModel::CookTorrance)
+  if (this->EffectiveMode() != this->ShadingMode)
   {
     // Said once per shader build, not per frame: not a silent substitution.
-    vtkWarningMacro("FAST_PHONG has no Cook-Torrance form (it expands (N.L) and (N.H)); "
-                    "shading with Blinn-Phong");
+    vtkWarningMacro("FAST_PHONG has no Cook-Torrance form (it expands N.L, N.H and N.V); "
+                    "evaluating Cook-Torrance per fragment (PHONG)");
   }
   const std::string variant = this->Variant(ren);
   this->LastVariant = variant;
   vtkShader* vs = shaders[vtkShader::Vertex];
   vtkShader* fs = shaders[vtkShader::Fragment];
-  const std::string library = std::string(sl_brdf_glsl) + sl_shading_glsl + sl_fastphong_glsl;
+  const std::string library =
+    std::string(sl_defines_glsl) + sl_brdf_glsl + sl_shading_glsl + sl_fastphong_glsl;
 
   // Vertex shader: Gouraud lights here; flat and fast-phong pass the
   // provoking vertex's data.
   this->Substitute(vs, "//VTK::System::Dec", "//VTK::System::Dec\n" + variant +
-      (this->ShadingMode == GOURAUD ? library : std::string()));
+      (this->ShadingMode == GOURAUD ? library : std::string(sl_defines_glsl)));
   this->Substitute(vs, "//VTK::Light::Dec", "//VTK::Light::Dec\n" + std::string(sl_mapper_vs_dec_glsl));
   this->Substitute(vs, "//VTK::Light::Impl", std::string(sl_mapper_vs_impl_glsl) + "\n//VTK::Light::Impl");
   // Fragment shader: the model replaces VTK's lighting.
@@ -393,8 +401,10 @@ void vtkShadingLabPolyDataMapper::SetMapperShaderParameters(
 void vtkShadingLabPolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  const char* names[] = { "flat", "gouraud", "phong", "fast-phong", "cook-torrance" };
-  os << indent << "ShadingMode: " << names[this->ShadingMode] << "\n";
+  os << indent << "ShadingMode: "
+     << sl::render::ShadingModeName(static_cast<sl::render::ShadingMode>(this->ShadingMode)) << "\n";
+  os << indent << "ReflectanceModel: " << sl::ReflectanceModelName(this->Internal->Material.model)
+     << "\n";
   os << indent << "PerspectiveCorrect: " << this->PerspectiveCorrect << "\n";
   os << indent << "ShaderBuildCount: " << this->ShaderBuildCount << "\n";
 }

@@ -1,15 +1,17 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkShadingLabPolyDataMapper
- * @brief   the five ShadingLab modes on the GPU, by shader replacement
+ * @brief   the four ShadingLab shading modes on the GPU, by shader replacement
  *
  * A vtkOpenGLPolyDataMapper whose shaders evaluate the ShadingLab model (the
- * GLSL twin of plugin/model, in plugin/gl/glsl/) in one of five modes:
- * FLAT (face normal, lit once per triangle at its provoking vertex), GOURAUD
- * (the model per vertex in the vertex shader, colour interpolated; VTK's own
- * Gouraud lights per fragment), PHONG (normals interpolated and renormalized,
- * model per fragment), FAST_PHONG (Bishop & Weimer's quadratic about the
- * triangle's provoking vertex) and COOK_TORRANCE. Interpolation is
+ * GLSL twin of plugin/model, in plugin/gl/glsl/) in one of four shading
+ * modes: FLAT (face normal, lit once per triangle at its provoking vertex),
+ * GOURAUD (the model per vertex in the vertex shader, colour interpolated;
+ * VTK's own Gouraud lights per fragment), PHONG (normals interpolated and
+ * renormalized, model per fragment) and FAST_PHONG (Bishop & Weimer's
+ * quadratic about the triangle's provoking vertex). The reflectance model
+ * (Lambert, Phong, Blinn-Phong, Cook-Torrance) is the material's: any mode
+ * evaluates any model, except FAST_PHONG with Cook-Torrance. Interpolation is
  * perspective-correct or, with PerspectiveCorrect off, screen-linear
  * (GLSL noperspective).
  *
@@ -27,8 +29,8 @@
  * that variant before. Material changes that do not change the variant only
  * update uniforms, and uniforms are re-sent only when they changed.
  *
- * @warning FAST_PHONG with a Cook-Torrance material shades Blinn-Phong and
- * says so (vtkWarningMacro). Gouraud mode takes rho from the property, not from point
+ * @warning FAST_PHONG with a Cook-Torrance material (no quadratic form)
+ * evaluates it per fragment as PHONG and says so (vtkWarningMacro). Gouraud mode takes rho from the property, not from point
  * scalars. Meshes without point normals get area-weighted normals computed
  * once per input change; flat mode uploads no point normals.
  */
@@ -36,6 +38,7 @@
 #define vtkShadingLabPolyDataMapper_h
 
 #include "shadinglab/model/Shading.h"
+#include "shadinglab/render/Options.h"
 
 #include "shadinglabGLModule.h" // for export macro
 
@@ -51,18 +54,19 @@ public:
   vtkTypeMacro(vtkShadingLabPolyDataMapper, vtkOpenGLPolyDataMapper);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  /// Where the model is evaluated: shadinglab::render::ShadingMode's values
+  /// (plain numbers for VTK's wrappers; static_asserts in the .cxx tie them).
   enum Modes
   {
     FLAT = 0,
     GOURAUD = 1,
     PHONG = 2,
-    FAST_PHONG = 3,
-    COOK_TORRANCE = 4
+    FAST_PHONG = 3
   };
 
   ///@{
   /// Shading mode (default PHONG).
-  vtkSetClampMacro(ShadingMode, int, FLAT, COOK_TORRANCE);
+  vtkSetClampMacro(ShadingMode, int, FLAT, FAST_PHONG);
   vtkGetMacro(ShadingMode, int);
   ///@}
 
@@ -118,6 +122,9 @@ private:
   void operator=(const vtkShadingLabPolyDataMapper&) = delete;
 
   std::string Variant(vtkRenderer* ren) const;
+  /// The mode the shaders evaluate: ShadingMode, or PHONG where the
+  /// material's model has no form in it (render::SupportsModel).
+  int EffectiveMode() const;
   bool Substitute(vtkShader* shader, const std::string& tag, const std::string& code);
 
   struct Internals;

@@ -26,6 +26,15 @@
 namespace shadinglab::cpu
 {
 
+using render::Camera;
+using render::Image;
+using render::InterpolationSpace;
+using render::Mesh;
+using render::PolygonHandling;
+using render::RenderOptions;
+using render::RenderStats;
+using render::ShadingMode;
+
 namespace
 {
 
@@ -383,7 +392,7 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh, const Camera& ca
   // Attribute layout by mode: only what the mode reads is interpolated.
   int slot = 0;
   const bool perPixel =
-    this->Opt.mode == ShadingMode::Phong || this->Opt.mode == ShadingMode::CookTorrance;
+    this->Opt.mode == ShadingMode::Phong;
   if (this->Opt.mode == ShadingMode::Gouraud)
   {
     slot = 3;
@@ -485,7 +494,7 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh, const Camera& ca
   }
   else
   {
-    DownsampleBox(this->Rgb, this->Covered, this->Width, this->Height, ssaa, image);
+    render::DownsampleBox(this->Rgb, this->Covered, this->Width, this->Height, ssaa, image);
     image.coverage.clear();
   }
 
@@ -1164,7 +1173,6 @@ void SoftwareRenderer::Internals::DrawPolygon(const ScreenVertex* const* verts,
       this->DrawTriangleFastPhong(verts, meshIds, back, rowBegin, rowEnd, state);
       return;
     case ShadingMode::Phong:
-    case ShadingMode::CookTorrance:
       break;
   }
   const float flip = (back && this->Opt.twoSidedLighting) ? -1.0f : 1.0f;
@@ -1221,31 +1229,38 @@ void SoftwareRenderer::Internals::DrawTriangleFastPhong(const ScreenVertex* cons
   // The triangle's setup is done lazily, on its first span with pixels:
   // most triangles of a million-triangle mesh cover no pixel centre at all.
   FastPhongTriangle<float> tri;
-  Vec3f Ls[kMaxLights], Hs[kMaxLights];
+  Vec3f Ls[kMaxLights], Hs[kMaxLights], V, N0;
+  float LoV[kMaxLights];
   const int nl = this->Lights.lightCount;
-  FastPhongQuadratic<float> diffuseQ[kMaxLights], specularQ[kMaxLights];
+  // The quadratics each model needs: N.L always; N.H for Blinn-Phong; N.V
+  // for Phong, whose R.V = 2 (N.L)(N.V) - L.V (docs/model.md eq. 2.8).
+  const bool specular = this->Mat.ks > 0.0f &&
+    (this->Mat.model == ReflectanceModel::BlinnPhong || this->Mat.model == ReflectanceModel::Phong);
+  const bool halfVector = specular && this->Mat.model == ReflectanceModel::BlinnPhong;
+  const bool viewCosine = specular && this->Mat.model == ReflectanceModel::Phong;
+  FastPhongQuadratic<float> diffuseQ[kMaxLights], specularQ[kMaxLights], viewQ;
   Vec3f irradiance[kMaxLights];
   bool active[kMaxLights];
-  const bool specular = this->Mat.model != ReflectanceModel::Lambert && this->Mat.ks > 0.0f;
   bool ready = false;
-  bool exact = false;
   auto setup = [&]() {
     ready = true;
     tri.Setup(sx, sy, normals);
     // L, V and H are taken at the expansion point's surface position.
     const Vec3f expansionPoint =
       this->Opt.expansion == ExpansionPoint::Vertex ? this->PointOf(meshIds[2]) : centroid;
-    const Vec3f V = this->ViewDirection(expansionPoint);
-    // Bishop & Weimer's expansion holds for small normal variation; beyond
-    // the spread limit the triangle is evaluated exactly (the same affine
-    // normal, renormalized per pixel), so no Taylor blow-up reaches a pixel.
-    const Vec3f unit[3] = { NormalizeOr(normals[0], this->ToEye),
-      NormalizeOr(normals[1], this->ToEye), NormalizeOr(normals[2], this->ToEye) };
-    const float minCos =
-      std::min(Dot(unit[0], unit[1]), std::min(Dot(unit[1], unit[2]), Dot(unit[2], unit[0])));
-    exact = minCos < this->FastPhongMinCos;
-    // Counted once per triangle: in the call for its first row band.
-    state.fastPhongExact += exact && rowBegin == std::max(0, CeilToInt(std::min({ sy[0], sy[1], sy[2] }) - 0.5f));
+    V = this->ViewDirection(expansionPoint);
+    // Bishop & Weimer's expansion holds for small normal variation: where
+    // the interpolated normal turns more than the spread limit away from the
+    // expansion point's, the pixel is evaluated exactly (the same affine
+    // normal, renormalized), so no Taylor blow-up reaches a pixel. The same
+    // per-pixel rule as the GPU (FastPhongTriangle::WithinSpread).
+    N0 = this->Opt.expansion == ExpansionPoint::Vertex ? tri.Normal(tri.vertexX, tri.vertexY)
+                                                      : tri.Normal(tri.centroidX, tri.centroidY);
+    const Vec3f unit2 = NormalizeOr(normals[2], this->ToEye);
+    if (viewCosine)
+    {
+      viewQ = tri.Expand(V, this->Opt.expansion);
+    }
     for (int l = 0; l < nl; ++l)
     {
       Vec3f L;
@@ -1255,22 +1270,21 @@ void SoftwareRenderer::Internals::DrawTriangleFastPhong(const ScreenVertex* cons
         continue;
       }
       Ls[l] = L;
-      // HalfVector's fallback normal (for L = -V only): the provoking vertex's.
-      Hs[l] = HalfVector(L, V, unit[2]);
+      LoV[l] = Dot(L, V);
       diffuseQ[l] = tri.Expand(L, this->Opt.expansion);
-      if (specular)
+      if (halfVector)
       {
+        // HalfVector's fallback normal (for L = -V only): the provoking vertex's.
+        Hs[l] = HalfVector(L, V, unit2);
         specularQ[l] = tri.Expand(Hs[l], this->Opt.expansion);
       }
     }
   };
-  FastPhongScanline<float> diffuseLine[kMaxLights], specularLine[kMaxLights];
+  FastPhongScanline<float> diffuseLine[kMaxLights], specularLine[kMaxLights], viewLine;
   const Vec3f ambient = this->Mat.ambient * this->Lights.ambientIntensity;
-  const float kdOverPi = this->Mat.kd * Fd_Lambert<float>();
-  const Vec3f specColor = this->Mat.specularColor * this->Mat.ks;
-  // Fs_BlinnPhong's normalization (n + 8) / (8 pi).
-  const float blinnNorm = (this->Mat.shininess + 8.0f) * (0.125f * kInvPi<float>);
-  int64_t shaded = 0;
+  // The cosine power by table, as Bishop & Weimer (their section 4).
+  const auto tablePower = [this](float x, float) { return this->PowerTable.Lookup(x); };
+  int64_t shaded = 0, exactPixels = 0;
   const int W = this->Width;
   float* rgb = this->Rgb.data();
   uint8_t* covered = this->Covered.data();
@@ -1282,10 +1296,14 @@ void SoftwareRenderer::Internals::DrawTriangleFastPhong(const ScreenVertex* cons
         setup();
       }
       const float yc = static_cast<float>(j) + 0.5f, xc = static_cast<float>(i0) + 0.5f;
+      if (viewCosine)
+      {
+        viewLine.Begin(viewQ, xc, yc);
+      }
       for (int l = 0; l < nl; ++l)
       {
         diffuseLine[l].Begin(diffuseQ[l], xc, yc);
-        if (specular)
+        if (halfVector)
         {
           specularLine[l].Begin(specularQ[l], xc, yc);
         }
@@ -1293,22 +1311,38 @@ void SoftwareRenderer::Internals::DrawTriangleFastPhong(const ScreenVertex* cons
     },
     [&](int j, int i, const float* a) {
       // Forward differences advance for every pixel of the span, drawn or not.
-      float NoL[kMaxLights], NoH[kMaxLights];
-      if (exact)
+      float NoL[kMaxLights], NoH[kMaxLights], NoV = 0.0f;
+      const float xc = static_cast<float>(i) + 0.5f, yc = static_cast<float>(j) + 0.5f;
+      if (!tri.WithinSpread(N0, xc, yc, this->FastPhongMinCos))
       {
-        const float xc = static_cast<float>(i) + 0.5f, yc = static_cast<float>(j) + 0.5f;
+        ++exactPixels;
+        // The forward differences still advance by one pixel.
+        if (viewCosine)
+        {
+          viewLine.Next();
+        }
+        for (int l = 0; l < nl; ++l)
+        {
+          diffuseLine[l].Next();
+          if (halfVector)
+          {
+            specularLine[l].Next();
+          }
+        }
+        NoV = viewCosine ? tri.Exact(V, xc, yc) : 0.0f;
         for (int l = 0; l < nl; ++l)
         {
           NoL[l] = tri.Exact(Ls[l], xc, yc);
-          NoH[l] = specular ? tri.Exact(Hs[l], xc, yc) : 0.0f;
+          NoH[l] = halfVector ? tri.Exact(Hs[l], xc, yc) : 0.0f;
         }
       }
       else
       {
+        NoV = viewCosine ? viewLine.Next() : 0.0f;
         for (int l = 0; l < nl; ++l)
         {
           NoL[l] = diffuseLine[l].Next();
-          NoH[l] = specular ? specularLine[l].Next() : 0.0f;
+          NoH[l] = halfVector ? specularLine[l].Next() : 0.0f;
         }
       }
       const float z = a[kAttrZ];
@@ -1334,13 +1368,8 @@ void SoftwareRenderer::Internals::DrawTriangleFastPhong(const ScreenVertex* cons
         {
           continue;
         }
-        Vec3f f = color * kdOverPi;
-        if (specular)
-        {
-          // Fs_BlinnPhong with the power from the table.
-          f += specColor * (blinnNorm * this->PowerTable.Lookup(NoH[l]));
-        }
-        I += irradiance[l] * f * cl;
+        const float RoV = 2.0f * cl * NoV - LoV[l];
+        I += irradiance[l] * BrdfFromCosines(this->Mat, color, NoH[l], RoV, tablePower) * cl;
       }
       const size_t pix = static_cast<size_t>(j) * W + i;
       covered[pix] = 1;
@@ -1350,66 +1379,7 @@ void SoftwareRenderer::Internals::DrawTriangleFastPhong(const ScreenVertex* cons
       ++shaded;
     });
   state.shaded += shaded;
-}
-
-namespace
-{
-
-float EncodeSRGB(float v)
-{
-  return v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
-}
-
-} // namespace
-
-void DownsampleBox(const std::vector<float>& rgb, const std::vector<uint8_t>& covered, int width,
-  int height, int factor, Image& out)
-{
-  out.width = width / factor;
-  out.height = height / factor;
-  out.rgb.assign(static_cast<size_t>(out.width) * out.height * 3, 0.0f);
-  out.covered.assign(static_cast<size_t>(out.width) * out.height, 0);
-  const float norm = 1.0f / static_cast<float>(factor * factor);
-  for (int y = 0; y < out.height; ++y)
-  {
-    for (int x = 0; x < out.width; ++x)
-    {
-      float sum[3] = { 0, 0, 0 };
-      uint8_t any = 0;
-      for (int sy = 0; sy < factor; ++sy)
-      {
-        for (int sx = 0; sx < factor; ++sx)
-        {
-          const size_t i = static_cast<size_t>(y * factor + sy) * width + (x * factor + sx);
-          for (int c = 0; c < 3; ++c)
-          {
-            sum[c] += rgb[3 * i + c];
-          }
-          any |= covered[i];
-        }
-      }
-      const size_t o = static_cast<size_t>(y) * out.width + x;
-      for (int c = 0; c < 3; ++c)
-      {
-        out.rgb[3 * o + c] = sum[c] * norm;
-      }
-      out.covered[o] = any;
-    }
-  }
-}
-
-void Mesh::Bounds(double bounds[6]) const
-{
-  bounds[0] = bounds[2] = bounds[4] = std::numeric_limits<double>::infinity();
-  bounds[1] = bounds[3] = bounds[5] = -std::numeric_limits<double>::infinity();
-  for (size_t i = 0; i + 2 < this->points.size(); i += 3)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      bounds[2 * c] = std::min(bounds[2 * c], static_cast<double>(this->points[i + c]));
-      bounds[2 * c + 1] = std::max(bounds[2 * c + 1], static_cast<double>(this->points[i + c]));
-    }
-  }
+  state.fastPhongExact += exactPixels;
 }
 
 std::vector<float> AreaWeightedNormals(const Mesh& mesh)
@@ -1424,90 +1394,6 @@ std::vector<float> AreaWeightedNormals(const Mesh& mesh)
   return std::vector<float>(normals.begin(), normals.end());
 }
 
-Camera FitCamera(const double bounds[6], double azimuthDeg, double elevationDeg, double zoom,
-  double aspect, bool parallel)
-{
-  Camera cam;
-  const Vec3<double> center(
-    0.5 * (bounds[0] + bounds[1]), 0.5 * (bounds[2] + bounds[3]), 0.5 * (bounds[4] + bounds[5]));
-  const Vec3<double> extent(bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4]);
-  double radius = 0.5 * Length(extent);
-  if (!(radius > 0))
-  {
-    radius = 0.5;
-  }
-  // vtkSoftwareRenderer::Internals::ResetCamera: distance so the bounding sphere fits the view
-  // angle (the narrower of the vertical and horizontal angles).
-  cam.viewAngle = 30.0;
-  double half = 0.5 * cam.viewAngle * kPi<double> / 180.0;
-  if (aspect < 1.0)
-  {
-    half = std::atan(std::tan(half) * aspect);
-  }
-  const double distance = radius / std::sin(half);
-  const double az = azimuthDeg * kPi<double> / 180.0, el = elevationDeg * kPi<double> / 180.0;
-  // Start on +z looking down -z with +y up; azimuth about y, then elevation.
-  const Vec3<double> dir(std::sin(az) * std::cos(el), std::sin(el), std::cos(az) * std::cos(el));
-  cam.focalPoint = center;
-  cam.position = center + dir * distance;
-  const Vec3<double> right = NormalizeOr(Cross(Vec3<double>(0, 1, 0), dir), Vec3<double>(1, 0, 0));
-  cam.viewUp = NormalizeOr(Cross(dir, right), Vec3<double>(0, 1, 0));
-  cam.viewAngle /= std::max(zoom, 1e-6);
-  cam.parallel = parallel;
-  cam.parallelScale = radius / std::max(zoom, 1e-6);
-  cam.nearClip = std::max(distance - 1.01 * radius, 1e-3 * distance);
-  cam.farClip = distance + 1.01 * radius;
-  return cam;
-}
-
-std::vector<uint8_t> Image::ToRGB8(DisplayTransform transform) const
-{
-  std::vector<uint8_t> out(this->rgb.size());
-  for (size_t i = 0; i < this->rgb.size(); ++i)
-  {
-    float v = this->rgb[i];
-    v = std::isfinite(v) ? std::clamp(v, 0.0f, 1.0f) : 0.0f;
-    if (transform == DisplayTransform::SRGB)
-    {
-      v = EncodeSRGB(v);
-    }
-    out[i] = static_cast<uint8_t>(std::lround(v * 255.0f));
-  }
-  return out;
-}
-
-const char* ModeName(ShadingMode mode)
-{
-  switch (mode)
-  {
-    case ShadingMode::Flat:
-      return "flat";
-    case ShadingMode::Gouraud:
-      return "gouraud";
-    case ShadingMode::Phong:
-      return "phong";
-    case ShadingMode::FastPhong:
-      return "fast-phong";
-    case ShadingMode::CookTorrance:
-      return "cook-torrance";
-  }
-  return "?";
-}
-
-bool ParseMode(const std::string& name, ShadingMode& mode)
-{
-  for (ShadingMode m : { ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong,
-         ShadingMode::FastPhong, ShadingMode::CookTorrance })
-  {
-    if (name == ModeName(m))
-    {
-      mode = m;
-      return true;
-    }
-  }
-  return false;
-}
-
 SoftwareRenderer::SoftwareRenderer()
   : Impl(new Internals)
 {
@@ -1515,52 +1401,26 @@ SoftwareRenderer::SoftwareRenderer()
 
 SoftwareRenderer::~SoftwareRenderer() = default;
 
-const Image& SoftwareRenderer::Render(const Mesh& mesh, const Camera& camera,
-  const Lighting<float>& lighting, const Material<float>& material, const RenderOptions& options,
-  RenderStats* stats)
+const render::Image& SoftwareRenderer::Render(
+  const render::Scene& scene, const render::RenderOptions& options, render::RenderStats* stats)
 {
-  if (options.width < 1 || options.height < 1 || options.width > 16384 || options.height > 16384)
+  const std::string error = render::ValidateRequest(scene, options);
+  if (!error.empty())
   {
-    throw std::invalid_argument("image size must be between 1x1 and 16384x16384");
+    throw std::invalid_argument(error);
   }
-  if (options.ssaa < 1 || options.ssaa > 8)
+  Lighting<float> lighting = scene.lighting.Cast<float>();
+  if (lighting.lightCount == 0)
   {
-    throw std::invalid_argument("supersampling factor must be 1 to 8");
+    // No lights: a headlight, as VTK's automatic light (and the GL backend).
+    Light<float> headlight;
+    headlight.vector = Vec3f(NormalizeOr(
+      scene.camera.position - scene.camera.focalPoint, Vec3<double>(0, 0, 1)));
+    lighting.lights[0] = headlight;
+    lighting.lightCount = 1;
   }
-  if (static_cast<double>(options.width) * options.height * options.ssaa * options.ssaa > 4e8)
-  {
-    throw std::invalid_argument("image size times supersampling exceeds 4e8 samples");
-  }
-  if (!IsFinite(camera.position) || !IsFinite(camera.focalPoint) || !IsFinite(camera.viewUp) ||
-    !(camera.viewAngle > 0 && camera.viewAngle < 180) || !(camera.nearClip > 0) ||
-    !(camera.farClip > camera.nearClip) || !(camera.parallelScale > 0))
-  {
-    throw std::invalid_argument("invalid camera (non-finite, view angle outside (0,180), or "
-                                "bad clipping range)");
-  }
-  if (options.mode == ShadingMode::FastPhong && material.model == ReflectanceModel::CookTorrance)
-  {
-    throw std::invalid_argument(
-      "fast-phong evaluates (N.L) and (N.H)^n quadratics: use a lambert, phong or blinn-phong "
-      "material");
-  }
-  if (lighting.lightCount < 0 || lighting.lightCount > kMaxLights)
-  {
-    throw std::invalid_argument("between 0 and 8 lights");
-  }
-  Material<float> effective = material;
-  if (options.mode == ShadingMode::CookTorrance)
-  {
-    effective.model = ReflectanceModel::CookTorrance;
-  }
-  return this->Impl->Run(mesh, camera, lighting, effective, options, stats);
-}
-
-Image Render(const Mesh& mesh, const Camera& camera, const Lighting<float>& lighting,
-  const Material<float>& material, const RenderOptions& options, RenderStats* stats)
-{
-  SoftwareRenderer renderer;
-  return renderer.Render(mesh, camera, lighting, material, options, stats);
+  return this->Impl->Run(
+    *scene.mesh, scene.camera, lighting, scene.material.Cast<float>(), options, stats);
 }
 
 } // namespace shadinglab::cpu

@@ -24,10 +24,17 @@ struct vtkSoftwareShadingRenderer::Internals
   sl::Lighting<double> Lighting;
   bool HasLighting = false;
   vtkSmartPointer<vtkCamera> Camera;
-  sl::cpu::RenderStats Stats;
+  sl::render::RenderStats Stats;
 };
 
 vtkStandardNewMacro(vtkSoftwareShadingRenderer);
+
+// The VTK enum is the render::ShadingMode list, checked at compile time.
+static_assert(vtkSoftwareShadingRenderer::FLAT == static_cast<int>(shadinglab::render::ShadingMode::Flat) &&
+  vtkSoftwareShadingRenderer::GOURAUD == static_cast<int>(shadinglab::render::ShadingMode::Gouraud) &&
+  vtkSoftwareShadingRenderer::PHONG == static_cast<int>(shadinglab::render::ShadingMode::Phong) &&
+  vtkSoftwareShadingRenderer::FAST_PHONG == static_cast<int>(shadinglab::render::ShadingMode::FastPhong) &&
+  shadinglab::render::kShadingModeCount == 4);
 
 vtkSoftwareShadingRenderer::vtkSoftwareShadingRenderer()
   : Internal(new Internals)
@@ -71,7 +78,7 @@ void vtkSoftwareShadingRenderer::ClearLighting()
   this->Modified();
 }
 
-const sl::cpu::RenderStats& vtkSoftwareShadingRenderer::GetLastStats() const
+const sl::render::RenderStats& vtkSoftwareShadingRenderer::GetLastStats() const
 {
   return this->Internal->Stats;
 }
@@ -102,26 +109,21 @@ int vtkSoftwareShadingRenderer::RequestData(
     vtkErrorMacro("input has no polygons");
     return 0;
   }
-  if (this->Size[0] < 1 || this->Size[1] < 1 || this->Size[0] > 16384 || this->Size[1] > 16384)
-  {
-    vtkErrorMacro("Size must be 1..16384 in each direction");
-    return 0;
-  }
-  const sl::cpu::Mesh mesh = sl::cpu::MeshFromPolyData(input);
-  sl::cpu::RenderOptions options;
-  options.mode = static_cast<sl::cpu::ShadingMode>(this->Mode);
+  const sl::render::Mesh mesh = sl::render::MeshFromPolyData(input);
+  sl::render::RenderOptions options;
+  options.mode = static_cast<sl::render::ShadingMode>(this->Mode);
   options.width = this->Size[0];
   options.height = this->Size[1];
-  options.interpolation = this->PerspectiveCorrect ? sl::cpu::InterpolationSpace::Perspective
-                                                   : sl::cpu::InterpolationSpace::Screen;
+  options.interpolation = this->PerspectiveCorrect ? sl::render::InterpolationSpace::Perspective
+                                                   : sl::render::InterpolationSpace::Screen;
   options.polygons =
-    this->DirectPolygons ? sl::cpu::PolygonHandling::Direct : sl::cpu::PolygonHandling::Triangulate;
+    this->DirectPolygons ? sl::render::PolygonHandling::Direct : sl::render::PolygonHandling::Triangulate;
   options.ssaa = this->Supersampling;
   options.threads = this->NumberOfThreads;
 
   double bounds[6];
   mesh.Bounds(bounds);
-  sl::cpu::Camera camera = sl::cpu::FitCamera(
+  sl::render::Camera camera = sl::render::FitCamera(
     bounds, 0.0, 0.0, 1.0, static_cast<double>(options.width) / options.height, false);
   if (vtkCamera* cam = this->Internal->Camera)
   {
@@ -142,25 +144,15 @@ int vtkSoftwareShadingRenderer::RequestData(
   sl::Lighting<double> lighting = this->Internal->Lighting;
   if (!this->Internal->HasLighting)
   {
-    const sl::Vec3d toEye =
-      sl::NormalizeOr(camera.position - camera.focalPoint, sl::Vec3d(0, 0, 1));
-    const sl::Vec3d right = sl::NormalizeOr(sl::Cross(camera.viewUp, toEye), sl::Vec3d(1, 0, 0));
-    const sl::Vec3d up = sl::Cross(toEye, right);
     lighting = sl::Lighting<double>();
-    lighting.lights[0].vector = sl::NormalizeOr(toEye + up * 0.5 - right * 0.4, toEye);
+    lighting.lights[0] = sl::render::KeyLight(camera);
     lighting.lightCount = 1;
   }
-  const std::string problem = sl::ValidateMaterial(this->Internal->Material);
-  if (!problem.empty())
-  {
-    vtkErrorMacro("invalid material: " << problem);
-    return 0;
-  }
-  const sl::cpu::Image* image = nullptr;
+  const sl::render::Image* image = nullptr;
   try
   {
-    image = &this->Internal->Renderer.Render(mesh, camera, lighting.Cast<float>(),
-      this->Internal->Material.Cast<float>(), options, &this->Internal->Stats);
+    const sl::render::Scene scene{ &mesh, camera, lighting, this->Internal->Material };
+    image = &this->Internal->Renderer.Render(scene, options, &this->Internal->Stats);
   }
   catch (const std::exception& e)
   {
@@ -169,7 +161,7 @@ int vtkSoftwareShadingRenderer::RequestData(
   }
   output->SetExtent(0, image->width - 1, 0, image->height - 1, 0, 0);
   const vtkIdType n = static_cast<vtkIdType>(image->width) * image->height;
-  const std::vector<uint8_t> rgb8 = image->ToRGB8(sl::cpu::DisplayTransform::Clamp);
+  const std::vector<uint8_t> rgb8 = image->ToRGB8(sl::render::DisplayTransform::Clamp);
   vtkNew<vtkUnsignedCharArray> rgb;
   rgb->SetName("RGB");
   rgb->SetNumberOfComponents(3);
@@ -204,7 +196,7 @@ int vtkSoftwareShadingRenderer::RequestData(
 void vtkSoftwareShadingRenderer::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Mode: " << sl::cpu::ModeName(static_cast<sl::cpu::ShadingMode>(this->Mode))
+  os << indent << "Mode: " << sl::render::ShadingModeName(static_cast<sl::render::ShadingMode>(this->Mode))
      << "\n";
   os << indent << "Size: " << this->Size[0] << " x " << this->Size[1] << "\n";
   os << indent << "PerspectiveCorrect: " << this->PerspectiveCorrect << "\n";

@@ -33,23 +33,24 @@ public:
   vtkTypeMacro(vtkSoftwareShadingRenderer, vtkImageAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
+  /// Where the model is evaluated: shadinglab::render::ShadingMode's values
+  /// (plain numbers for VTK's wrappers; static_asserts in the .cxx tie them).
   enum Modes
   {
     FLAT = 0,
     GOURAUD = 1,
     PHONG = 2,
-    FAST_PHONG = 3,
-    COOK_TORRANCE = 4
+    FAST_PHONG = 3
   };
 
   ///@{
-  /// Shading mode (default PHONG).
-  vtkSetClampMacro(Mode, int, FLAT, COOK_TORRANCE);
+  /// Shading mode (default PHONG). The reflectance model is the material's.
+  vtkSetClampMacro(Mode, int, FLAT, FAST_PHONG);
   vtkGetMacro(Mode, int);
   ///@}
 
   ///@{
-  /// Image size in pixels (default 640 x 480, 1 .. 16384 each).
+  /// Image size in pixels (default 640 x 480, 1 .. kMaxImageSize = 16384 each).
   vtkSetVector2Macro(Size, int);
   vtkGetVector2Macro(Size, int);
   ///@}
@@ -94,7 +95,7 @@ public:
   void ClearLighting();
 
   /// Statistics of the last render.
-  const shadinglab::cpu::RenderStats& GetLastStats() const;
+  const shadinglab::render::RenderStats& GetLastStats() const;
 
 protected:
   vtkSoftwareShadingRenderer();

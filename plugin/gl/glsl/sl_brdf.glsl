@@ -4,17 +4,8 @@
 // names, same guards, same constants; the CPU/GPU parity test keeps them
 // together. Directions are unit vectors pointing away from the surface.
 
-#define SL_PI 3.14159265358979
-#define SL_INV_PI 0.318309886183791
-// Constants.h: kMinCosTheta, kMinRoughness, kMaxRoughness, kMinCos4Alpha,
-// kMinHalfVectorLength, kMinVoH (derivations there).
-#define SL_MIN_COS_THETA 1e-4
-#define SL_MIN_ROUGHNESS 1e-3
-#define SL_MAX_ROUGHNESS 1e3
-#define SL_MIN_COS4_ALPHA 1e-16
-#define SL_MIN_HALF_VECTOR_LENGTH 1e-6
-#define SL_MIN_VOH 1e-7
-#define SL_MAX_LOBES 4
+// SL_PI, SL_INV_PI and the guards (SL_MIN_COS_THETA, ...) are #defines
+// generated from Constants.h at build time (GenerateGlslDefines.cpp).
 
 // Lambert 1760; lecture slide 12: Rd = 1/pi.
 float Fd_Lambert()
@@ -22,7 +13,8 @@ float Fd_Lambert()
   return SL_INV_PI;
 }
 
-// Phong 1975, (R.V)^n, normalized by (n+2)/(2 pi) (Lewis 1994).
+// Phong 1975, (R.V)^n, normalized by (n+2)/(2 pi) (Lewis 1994);
+// docs/model.md eq. 1.3.
 float Fs_Phong(float RoV, float shininess)
 {
   float lobe = (shininess + 2.0) * (0.5 * SL_INV_PI) * pow(clamp(RoV, 0.0, 1.0), shininess);
@@ -43,7 +35,7 @@ float D_Beckmann(float NoH, float m)
   m = clamp(m, SL_MIN_ROUGHNESS, SL_MAX_ROUGHNESS);
   float cos2Alpha = c * c;
   float cos4Alpha = cos2Alpha * cos2Alpha;
-  float tan2Alpha = (1.0 - cos2Alpha) / max(cos2Alpha, 1e-30);
+  float tan2Alpha = (1.0 - cos2Alpha) / max(cos2Alpha, SL_TINY_DENOMINATOR);
   float m2 = m * m;
   float D = exp(-tan2Alpha / m2) / (m2 * max(cos4Alpha, SL_MIN_COS4_ALPHA));
   return (NoH > 0.0 && cos4Alpha >= SL_MIN_COS4_ALPHA) ? D : 0.0;
@@ -136,5 +128,5 @@ vec3 HalfVector(vec3 L, vec3 V, vec3 N)
   vec3 s = L + V;
   float lengthSq = dot(s, s);
   bool defined = lengthSq >= SL_MIN_HALF_VECTOR_LENGTH * SL_MIN_HALF_VECTOR_LENGTH;
-  return defined ? s * inversesqrt(max(lengthSq, 1e-30)) : N;
+  return defined ? s * inversesqrt(max(lengthSq, SL_TINY_DENOMINATOR)) : N;
 }

@@ -13,8 +13,8 @@
 float FastPhongQuadratic(vec3 L, vec3 N0, vec3 A, vec3 B, vec2 uv)
 {
   float q0 = dot(N0, N0);
-  // kMinNormalLengthSq (Constants.h): no direction, intensity 0.
-  if (!(q0 >= 1e-12))
+  // No direction, intensity 0.
+  if (!(q0 >= SL_MIN_NORMAL_LENGTH_SQ))
   {
     return 0.0;
   }

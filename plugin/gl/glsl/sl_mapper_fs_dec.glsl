@@ -2,14 +2,14 @@
 uniform int slCameraParallel;
 uniform float slInvDiffuseIntensity;
 uniform float slFastPhongMinCos; // cos of the fast-phong spread limit
-#if SL_MODE == 1
+#if SL_MODE == SL_MODE_GOURAUD
 SL_INTERP in vec3 slGouraudFrontVSOut;
 SL_INTERP in vec3 slGouraudBackVSOut;
 #endif
-#if SL_MODE == 0 || SL_MODE == 3
+#if SL_MODE == SL_MODE_FLAT || SL_MODE == SL_MODE_FAST_PHONG
 flat in vec4 slProvokingVCVSOut;
 #endif
-#if SL_MODE == 3
+#if SL_MODE == SL_MODE_FAST_PHONG
 noperspective in vec3 slNormalVCVSOut;
 flat in vec2 slProvokingXYVSOut;
 #endif

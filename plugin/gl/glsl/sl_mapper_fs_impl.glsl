@@ -3,7 +3,7 @@
   // coefficient; kd comes from the material.
   vec3 slRho = diffuseColor * slInvDiffuseIntensity;
   vec3 slColor;
-#if SL_MODE == 0
+#if SL_MODE == SL_MODE_FLAT
   {
     // Flat: VTK's face normal (cell normal, else the plane of the
     // triangle from position derivatives), lit at the provoking vertex:
@@ -12,9 +12,9 @@
     vec3 slV = slCameraParallel == 1 ? vec3(0.0, 0.0, 1.0) : normalize(-slP);
     slColor = Shade(slRho, slP, normalize(normalVCVSOutput), slV);
   }
-#elif SL_MODE == 1
+#elif SL_MODE == SL_MODE_GOURAUD
   slColor = gl_FrontFacing ? slGouraudFrontVSOut : slGouraudBackVSOut;
-#elif SL_MODE == 3
+#elif SL_MODE == SL_MODE_FAST_PHONG
   {
     // Bishop & Weimer 1986 about the provoking vertex (L, H fixed there).
     vec3 slNf = gl_FrontFacing ? slNormalVCVSOut : -slNormalVCVSOut;
@@ -28,9 +28,13 @@
     // expansion point's, the quadratic is unreliable: evaluate exactly.
     // (Per fragment here; the CPU decides per triangle from its vertex
     // normals, which a fragment shader cannot see.)
-    float slCosSpread = dot(slN0, slNf) * inversesqrt(max(dot(slN0, slN0) * dot(slNf, slNf), 1e-24));
+    float slCosSpread = dot(slN0, slNf) * inversesqrt(max(dot(slN0, slN0) * dot(slNf, slNf),
+      SL_MIN_NORMAL_LENGTH_SQ * SL_MIN_NORMAL_LENGTH_SQ));
     bool slExact = slCosSpread < slFastPhongMinCos;
     vec3 slNexact = normalize(slNf);
+    // Phong's R.V = 2 (N.L)(N.V) - L.V needs N.V as a quadratic too
+    // (docs/model.md eq. 2.8).
+    float slNoV = slExact ? dot(slV0, slNexact) : FastPhongQuadratic(slV0, slN0, slA, slB, slUV);
     slColor = slAmbient;
     for (int j = 0; j < SL_LIGHT_COUNT; ++j)
     {
@@ -44,18 +48,18 @@
       {
         continue;
       }
-      vec3 slF = slRho * (slKd * Fd_Lambert());
-#if SL_SPECULAR
+      float slNoH = 0.0;
+#if SL_SPECULAR && SL_MODEL == SL_MODEL_BLINN_PHONG
       vec3 slH = HalfVector(slL, slV0, normalize(slN0));
-      float slNoH = slExact ? dot(slH, slNexact) : FastPhongQuadratic(slH, slN0, slA, slB, slUV);
-      slF += slSpecularColor * (slKs * Fs_BlinnPhong(slNoH, slShininess));
+      slNoH = slExact ? dot(slH, slNexact) : FastPhongQuadratic(slH, slN0, slA, slB, slUV);
 #endif
-      slColor += slIrr * slF * slNoL;
+      float slRoV = 2.0 * slNoL * slNoV - dot(slL, slV0);
+      slColor += slIrr * BrdfFromCosines(slRho, slNoH, slRoV) * slNoL;
     }
   }
 #else
   {
-    // Phong / Cook-Torrance: the interpolated normal, renormalized and
+    // Phong: the interpolated normal, renormalized and
     // flipped for back faces by VTK's //VTK::Normal::Impl.
     vec3 slP = vertexVC.xyz;
     vec3 slV = slCameraParallel == 1 ? vec3(0.0, 0.0, 1.0) : normalize(-slP);

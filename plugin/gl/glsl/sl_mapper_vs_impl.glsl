@@ -1,5 +1,5 @@
   // ShadingLab: per-vertex work of the mode.
-#if SL_MODE == 1
+#if SL_MODE == SL_MODE_GOURAUD
   {
     // Gouraud 1971: the model at the vertex; both sides, chosen per fragment.
     vec3 slP = vertexVCVSOutput.xyz;
@@ -9,10 +9,10 @@
     slGouraudBackVSOut = Shade(slDiffuseColor, slP, -slN, slV);
   }
 #endif
-#if SL_MODE == 0 || SL_MODE == 3
+#if SL_MODE == SL_MODE_FLAT || SL_MODE == SL_MODE_FAST_PHONG
   slProvokingVCVSOut = vertexVCVSOutput;
 #endif
-#if SL_MODE == 3
+#if SL_MODE == SL_MODE_FAST_PHONG
   slNormalVCVSOut = normalVCVSOutput;
   slProvokingXYVSOut = (gl_Position.xy / gl_Position.w * 0.5 + 0.5) * slViewport.zw + slViewport.xy;
 #endif

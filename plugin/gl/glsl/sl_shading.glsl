@@ -3,7 +3,7 @@
 //   I_r = Ra Ia + sum_j I_Lj (N.Lj) dw_j (kd Rd + ks Rs).
 // Variants are compile-time #defines set by vtkShadingLabPolyDataMapper, so
 // a scene pays only for what it uses:
-//   SL_MODEL        0 Lambert, 1 Phong, 2 Blinn-Phong, 3 Cook-Torrance
+//   SL_MODEL        SL_MODEL_LAMBERT, _PHONG, _BLINN_PHONG or _COOK_TORRANCE
 //   SL_LIGHT_COUNT  number of lights (1..8)
 //   SL_POINT_LIGHTS 1 when any light is positional
 //   SL_SPECULAR     0 drops the specular term (ks = 0)
@@ -11,8 +11,6 @@
 //   SL_CONDUCTOR    1 when any k > 0 (complex-index Fresnel)
 //   SL_HEADLIGHT    1 when the only light is a headlight: L = +z in view
 //                   coordinates, a constant the compiler folds
-
-#define SL_MAX_LIGHTS 8
 
 // xyz; w = 0: unit direction to the light (normalized by the mapper), 1: position.
 uniform vec4 slLightVectorVC[SL_MAX_LIGHTS];
@@ -59,7 +57,7 @@ bool LightIncidence(int j, vec3 P, out vec3 L, out vec3 irradiance)
   }
   L = toLight / d;
   vec3 a = slLightAttenuation[j];
-  irradiance = slLightIrradiance[j] / max(a.x + a.y * d + a.z * d * d, 1e-30);
+  irradiance = slLightIrradiance[j] / max(a.x + a.y * d + a.z * d * d, SL_TINY_DENOMINATOR);
   vec4 spot = slLightSpot[j];
   if (spot.w > -1.5)
   {
@@ -75,24 +73,42 @@ bool LightIncidence(int j, vec3 P, out vec3 L, out vec3 irradiance)
 #endif
 }
 
-// kd Rd + ks Rs (slide 12) for one pair of directions.
+// kd Rd + ks Rs of the cosine-lobe models from the cosines alone
+// (Shading.h BrdfFromCosines; docs/model.md eq. 1.3-1.4): exact shading and
+// fast Phong both call it. RoV = R.V, NoH = N.H.
+vec3 BrdfFromCosines(vec3 diffuseColor, float NoH, float RoV)
+{
+  vec3 diffuse = diffuseColor * (slKd * Fd_Lambert());
+#if SL_MODEL == SL_MODEL_PHONG && SL_SPECULAR
+  return diffuse + slSpecularColor * (slKs * Fs_Phong(RoV, slShininess));
+#elif SL_MODEL == SL_MODEL_BLINN_PHONG && SL_SPECULAR
+  return diffuse + slSpecularColor * (slKs * Fs_BlinnPhong(NoH, slShininess));
+#else
+  return diffuse;
+#endif
+}
+
+// kd Rd + ks Rs for one pair of directions (Shading.h EvaluateBrdf;
+// docs/model.md eq. 1.2).
 vec3 EvaluateBrdf(vec3 diffuseColor, vec3 N, vec3 L, vec3 V)
 {
   float NoL = dot(N, L);
   float NoV = dot(N, V);
   bool above = NoL > 0.0 && NoV > 0.0;
-  vec3 diffuse = diffuseColor * (slKd * Fd_Lambert());
-#if SL_MODEL == 0 || !SL_SPECULAR
-  return above ? diffuse : vec3(0.0);
-#elif SL_MODEL == 1
+#if SL_MODEL != SL_MODEL_COOK_TORRANCE || !SL_SPECULAR
+#if SL_MODEL == SL_MODEL_PHONG
   float RoV = dot(N * (2.0 * NoL) - L, V);
-  vec3 f = diffuse + slSpecularColor * (slKs * Fs_Phong(RoV, slShininess));
-  return above ? f : vec3(0.0);
-#elif SL_MODEL == 2
+  float NoH = 0.0;
+#elif SL_MODEL == SL_MODEL_BLINN_PHONG
+  float RoV = 0.0;
   float NoH = dot(N, HalfVector(L, V, N));
-  vec3 f = diffuse + slSpecularColor * (slKs * Fs_BlinnPhong(NoH, slShininess));
+#else
+  float RoV = 0.0, NoH = 0.0;
+#endif
+  vec3 f = BrdfFromCosines(diffuseColor, NoH, RoV);
   return above ? f : vec3(0.0);
 #else
+  vec3 diffuse = diffuseColor * (slKd * Fd_Lambert());
   vec3 H = HalfVector(L, V, N);
   float NoH = dot(N, H);
   float VoH = max(dot(V, H), 0.0);

@@ -246,23 +246,33 @@ bool F_SpectralToRGB(
 namespace shadinglab
 {
 
-namespace
+const char* ReflectanceModelName(ReflectanceModel model)
 {
-const char* ModelName(ReflectanceModel m)
-{
-  switch (m)
+  for (const auto& row : kReflectanceModels)
   {
-    case ReflectanceModel::Lambert:
-      return "lambert";
-    case ReflectanceModel::Phong:
-      return "phong";
-    case ReflectanceModel::BlinnPhong:
-      return "blinn-phong";
-    case ReflectanceModel::CookTorrance:
-      return "cook-torrance";
+    if (row.value == model)
+    {
+      return row.name;
+    }
   }
   return "?";
 }
+
+bool ParseReflectanceModel(const std::string& name, ReflectanceModel& model)
+{
+  for (const auto& row : kReflectanceModels)
+  {
+    if (name == row.name)
+    {
+      model = row.value;
+      return true;
+    }
+  }
+  return false;
+}
+
+namespace
+{
 
 std::vector<double> ParseNumbers(const std::string& text, bool& ok)
 {
@@ -293,7 +303,7 @@ std::string SerializeMaterial(const Material<double>& m)
   auto rgb = [&](const char* key, const Vec3<double>& v) {
     s << key << "=" << v.x << "," << v.y << "," << v.z << ";";
   };
-  s << "model=" << ModelName(m.model) << ";kd=" << m.kd << ";ks=" << m.ks << ";";
+  s << "model=" << ReflectanceModelName(m.model) << ";kd=" << m.kd << ";ks=" << m.ks << ";";
   rgb("ambient", m.ambient);
   rgb("diffuse", m.diffuseColor);
   rgb("specular", m.specularColor);
@@ -333,16 +343,7 @@ std::string ParseMaterial(const std::string& text, Material<double>& m)
     const std::string key = pair.substr(0, eq), value = pair.substr(eq + 1);
     if (key == "model")
     {
-      bool found = false;
-      for (auto model : { ReflectanceModel::Lambert, ReflectanceModel::Phong,
-             ReflectanceModel::BlinnPhong, ReflectanceModel::CookTorrance })
-      {
-        if (value == ModelName(model))
-        {
-          m.model = model;
-          found = true;
-        }
-      }
+      const bool found = ParseReflectanceModel(value, m.model);
       if (!found)
       {
         return "material: unknown model '" + value + "'";

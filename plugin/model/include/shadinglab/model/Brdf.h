@@ -39,14 +39,25 @@ T ClampRoughness(T m)
  * Deviation from the 1975 paper (no normalization) stated here on purpose:
  * one shading equation I = Ra Ia + sum I_L (N.L) dw f serves all models.
  */
-template <typename T>
-SL_INLINE T Fs_Phong(T RoV, T shininess)
+/// x^n by std::pow: the default power of the cosine lobes below. Fast Phong
+/// passes a table lookup instead (Bishop & Weimer 1986, section 4).
+struct StdPow
+{
+  template <typename T>
+  SL_INLINE T operator()(T x, T n) const
+  {
+    return std::pow(x, n);
+  }
+};
+
+template <typename T, typename Power = StdPow>
+SL_INLINE T Fs_Phong(T RoV, T shininess, Power power = {})
 {
   if (!(RoV > T(0)))
   {
     return T(0);
   }
-  return (shininess + T(2)) * (T(0.5) * kInvPi<T>)*std::pow(std::min(RoV, T(1)), shininess);
+  return (shininess + T(2)) * (T(0.5) * kInvPi<T>)*power(std::min(RoV, T(1)), shininess);
 }
 
 /**
@@ -54,14 +65,14 @@ SL_INLINE T Fs_Phong(T RoV, T shininess)
  * Pictures": (N.H)^n, normalized by (n + 8) / (8 pi) (Akenine-Moller et al.,
  * Real-Time Rendering 3rd ed., eq. 7.49), see Fs_Phong for why.
  */
-template <typename T>
-SL_INLINE T Fs_BlinnPhong(T NoH, T shininess)
+template <typename T, typename Power = StdPow>
+SL_INLINE T Fs_BlinnPhong(T NoH, T shininess, Power power = {})
 {
   if (!(NoH > T(0)))
   {
     return T(0);
   }
-  return (shininess + T(8)) * (T(0.125) * kInvPi<T>)*std::pow(std::min(NoH, T(1)), shininess);
+  return (shininess + T(8)) * (T(0.125) * kInvPi<T>)*power(std::min(NoH, T(1)), shininess);
 }
 
 /**

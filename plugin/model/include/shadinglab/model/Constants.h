@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Named numerical guards of the shading model. Each value is derived where it
-// is defined; the GLSL twin (plugin/gl/glsl/sl_constants.glsl) uses the same
-// names and values.
+// is defined. The GLSL twin gets them as SL_* #defines generated from this
+// header at build time (plugin/gl/GenerateGlslDefines.cpp): one source.
 #pragma once
 
 namespace shadinglab
@@ -71,6 +71,14 @@ constexpr T kMinScreenArea = T(1e-9);
 /// absurd input rather than silently producing a black picture.
 template <typename T>
 constexpr T kMaxShininess = T(1e4);
+
+/// Floor of a denominator that is positive by construction but may
+/// underflow (a point light's attenuation sum, cos^2 of a half angle, a
+/// squared length): 1e-30 lies 8 orders above float's smallest normal
+/// (1.2e-38), so x / 1e-30 for any x <= 1 stays below 1e30 < FLT_MAX and no
+/// Inf can reach a pixel.
+template <typename T>
+constexpr T kTinyDenominator = T(1e-30);
 
 /// Maximum number of Beckmann lobes in a mixture D = sum_k w_k D(m_k) and of
 /// lights in one evaluation; fixed so the GPU uniform arrays match.

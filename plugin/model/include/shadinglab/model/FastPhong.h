@@ -150,6 +150,20 @@ struct FastPhongTriangle
   /// The interpolated (unnormalized) normal at (x, y).
   Vec3<T> Normal(T x, T y) const { return A * x + B * y + C; }
 
+  /**
+   * The exact-shading rule of both backends (docs/model.md eq. 2.9): at
+   * (x, y) the quadratic is trusted while the interpolated normal stays
+   * within the spread limit of N0, the normal at the expansion point:
+   * cos(N0, N(x, y)) >= minCos. Per pixel, because a fragment shader sees
+   * only its own normal; the same test in sl_mapper_fs_impl.glsl.
+   */
+  bool WithinSpread(const Vec3<T>& N0, T x, T y, T minCos) const
+  {
+    const Vec3<T> N = Normal(x, y);
+    const T lengths = std::max(Dot(N0, N0) * Dot(N, N), kMinNormalLengthSq<T> * kMinNormalLengthSq<T>);
+    return !(Dot(N0, N) / std::sqrt(lengths) < minCos);
+  }
+
   /// Exact (L.N)/|N| at (x, y): what Phong shading computes. A normal with
   /// no direction (|N|^2 < kMinNormalLengthSq) gives 0.
   T Exact(const Vec3<T>& L, T x, T y) const

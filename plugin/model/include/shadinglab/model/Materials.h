@@ -60,6 +60,10 @@ namespace shadinglab
  */
 std::string SerializeMaterial(const Material<double>& material);
 
+/// "lambert", "phong", "blinn-phong" or "cook-torrance".
+const char* ReflectanceModelName(ReflectanceModel model);
+bool ParseReflectanceModel(const std::string& name, ReflectanceModel& model);
+
 /// Parses SerializeMaterial's format (keys in any order, missing keys keep
 /// the defaults). Returns an empty string on success, else a one-line error.
 std::string ParseMaterial(const std::string& text, Material<double>& material);

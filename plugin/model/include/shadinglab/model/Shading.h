@@ -19,12 +19,32 @@
 namespace shadinglab
 {
 
+/// What is evaluated: the reflectance model (docs/model.md section 1).
+/// Where it is evaluated (flat, Gouraud, Phong, fast Phong) is a separate
+/// choice, render::ShadingMode.
 enum class ReflectanceModel
 {
   Lambert,
   Phong,
   BlinnPhong,
   CookTorrance,
+};
+
+/// One row of the reflectance models' name table: the one list the CLI,
+/// the material format, the VTK classes and the GLSL #defines read.
+struct ReflectanceModelRow
+{
+  ReflectanceModel value;
+  const char* name;  ///< command-line / material-format name
+  const char* label; ///< for people
+  const char* glsl;  ///< GLSL #define suffix (SL_MODEL_<glsl>)
+};
+
+inline constexpr ReflectanceModelRow kReflectanceModels[] = {
+  { ReflectanceModel::Lambert, "lambert", "Lambert", "LAMBERT" },
+  { ReflectanceModel::Phong, "phong", "Phong", "PHONG" },
+  { ReflectanceModel::BlinnPhong, "blinn-phong", "Blinn-Phong", "BLINN_PHONG" },
+  { ReflectanceModel::CookTorrance, "cook-torrance", "Cook-Torrance", "COOK_TORRANCE" },
 };
 
 /// Material parameters of the illumination model. Plain data, so it can be
@@ -177,7 +197,7 @@ SL_INLINE bool LightIncidence(const Light<T>& light, const Vec3<T>& P, Vec3<T>& 
     light.attenuation.x + light.attenuation.y * d + light.attenuation.z * d * d;
   // Validation keeps c0 > 0 or the other terms positive; a zero sum at d > 0
   // cannot happen, but guard anyway so no Inf reaches a pixel.
-  irradiance = light.intensity * (light.solidAngle / std::max(attenuation, T(1e-30)));
+  irradiance = light.intensity * (light.solidAngle / std::max(attenuation, kTinyDenominator<T>));
   if (light.coneAngle <= T(90))
   {
     // Spot cone (OpenGL 1.x / VTK): outside it no light, inside cos^e.
@@ -192,7 +212,37 @@ SL_INLINE bool LightIncidence(const Light<T>& light, const Vec3<T>& P, Vec3<T>& 
 }
 
 /**
- * kd Rd + ks Rs for one pair of directions: the BRDF (1/sr) of slide 12.
+ * kd Rd + ks Rs of the models whose specular lobe is a power of one cosine
+ * (Lambert; Phong 1975, docs/model.md eq. 1.3; Blinn 1977, eq. 1.4), from
+ * the cosines alone: RoV = R.V = 2 (N.L)(N.V) - L.V and NoH = N.H. The one
+ * place these BRDFs are written: EvaluateBrdf calls it with exact cosines,
+ * fast Phong with its quadratics and a table power (eq. 2.6-2.8), and the
+ * GLSL twin (sl_shading.glsl) has the same function. Cook-Torrance is not a
+ * function of these cosines: it returns the diffuse term only for it.
+ */
+template <typename T, typename Power = StdPow>
+SL_INLINE Vec3<T> BrdfFromCosines(const Material<T>& material, const Vec3<T>& diffuseColor, T NoH,
+  T RoV, Power power = {})
+{
+  const Vec3<T> diffuse = diffuseColor * (material.kd * Fd_Lambert<T>());
+  switch (material.model)
+  {
+    case ReflectanceModel::Phong:
+      return diffuse +
+        material.specularColor * (material.ks * Fs_Phong(RoV, material.shininess, power));
+    case ReflectanceModel::BlinnPhong:
+      return diffuse +
+        material.specularColor * (material.ks * Fs_BlinnPhong(NoH, material.shininess, power));
+    case ReflectanceModel::Lambert:
+    case ReflectanceModel::CookTorrance:
+      break;
+  }
+  return diffuse;
+}
+
+/**
+ * kd Rd + ks Rs for one pair of directions: the BRDF (1/sr) of
+ * docs/model.md eq. 1.2.
  * N, L, V unit, pointing away from the surface.
  */
 template <typename T>
@@ -206,24 +256,17 @@ SL_INLINE Vec3<T> EvaluateBrdf(
   {
     return {};
   }
-  const Vec3<T> diffuse = diffuseColor * (material.kd * Fd_Lambert<T>());
   switch (material.model)
   {
     case ReflectanceModel::Lambert:
-      return diffuse;
+      return BrdfFromCosines(material, diffuseColor, T(0), T(0));
     case ReflectanceModel::Phong:
-    {
-      const T RoV = Dot(Reflect(L, N), V);
-      return diffuse + material.specularColor * (material.ks * Fs_Phong(RoV, material.shininess));
-    }
+      return BrdfFromCosines(material, diffuseColor, T(0), Dot(Reflect(L, N), V));
     case ReflectanceModel::BlinnPhong:
-    {
-      const T NoH = Dot(N, HalfVector(L, V, N));
-      return diffuse +
-        material.specularColor * (material.ks * Fs_BlinnPhong(NoH, material.shininess));
-    }
+      return BrdfFromCosines(material, diffuseColor, Dot(N, HalfVector(L, V, N)), T(0));
     case ReflectanceModel::CookTorrance:
     {
+      const Vec3<T> diffuse = diffuseColor * (material.kd * Fd_Lambert<T>());
       const Vec3<T> H = HalfVector(L, V, N);
       const T NoH = Dot(N, H);
       const T VoH = std::max(Dot(V, H), T(0));
@@ -235,7 +278,7 @@ SL_INLINE Vec3<T> EvaluateBrdf(
       return diffuse + F * (material.ks * DG);
     }
   }
-  return diffuse;
+  return {};
 }
 
 /**

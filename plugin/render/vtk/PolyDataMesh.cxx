@@ -4,6 +4,8 @@
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
+#include <vtkFloatArray.h>
+#include <vtkIdTypeArray.h>
 #include <vtkIdList.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
@@ -13,7 +15,7 @@
 #include <vtkTriangleFilter.h>
 #include <vtkUnsignedCharArray.h>
 
-namespace shadinglab::cpu
+namespace shadinglab::render
 {
 
 Mesh MeshFromPolyData(vtkPolyData* input)
@@ -101,4 +103,52 @@ Mesh MeshFromPolyData(vtkPolyData* input)
   return mesh;
 }
 
-} // namespace shadinglab::cpu
+namespace
+{
+
+vtkSmartPointer<vtkFloatArray> FloatArray(const std::vector<float>& values, const char* name)
+{
+  auto array = vtkSmartPointer<vtkFloatArray>::New();
+  array->SetName(name);
+  array->SetNumberOfComponents(3);
+  array->SetNumberOfTuples(static_cast<vtkIdType>(values.size() / 3));
+  std::copy(values.begin(), values.end(), array->GetPointer(0));
+  return array;
+}
+
+} // namespace
+
+vtkPolyData* PolyDataFromMesh(const Mesh& mesh)
+{
+  vtkPolyData* pd = vtkPolyData::New();
+  vtkNew<vtkPoints> points;
+  points->SetData(FloatArray(mesh.points, "Points"));
+  pd->SetPoints(points);
+  vtkNew<vtkIdTypeArray> offsets, connectivity;
+  offsets->SetNumberOfTuples(static_cast<vtkIdType>(mesh.offsets.size()));
+  std::copy(mesh.offsets.begin(), mesh.offsets.end(), offsets->GetPointer(0));
+  connectivity->SetNumberOfTuples(static_cast<vtkIdType>(mesh.connectivity.size()));
+  std::copy(mesh.connectivity.begin(), mesh.connectivity.end(), connectivity->GetPointer(0));
+  vtkNew<vtkCellArray> polys;
+  if (mesh.offsets.empty())
+  {
+    offsets->InsertNextValue(0);
+  }
+  polys->SetData(offsets, connectivity);
+  pd->SetPolys(polys);
+  if (!mesh.normals.empty())
+  {
+    pd->GetPointData()->SetNormals(FloatArray(mesh.normals, "Normals"));
+  }
+  if (!mesh.colors.empty())
+  {
+    pd->GetPointData()->SetScalars(FloatArray(mesh.colors, "Colors"));
+  }
+  if (!mesh.faceNormals.empty())
+  {
+    pd->GetCellData()->SetNormals(FloatArray(mesh.faceNormals, "Normals"));
+  }
+  return pd;
+}
+
+} // namespace shadinglab::render

@@ -1,0 +1,151 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The choices a render is made of, as one enum each: where the illumination
+// model is evaluated (ShadingMode), how attributes are interpolated
+// (InterpolationSpace), how polygons are scan-converted, and how linear
+// intensity becomes a display value. What is evaluated (the reflectance
+// model) is the Material's, in plugin/model: the two are independent.
+//
+// Each enum's names live in one table below; the CLI, the VTK classes and
+// the GLSL #defines (generated at build time by plugin/gl/GenerateGlslDefines)
+// all read these tables, so the lists cannot drift.
+#pragma once
+
+#include "shadinglab/model/FastPhong.h"
+#include "shadinglab/model/Vec3.h"
+
+#include <cstdint>
+#include <string>
+
+namespace shadinglab::render
+{
+
+/// Where the illumination model is evaluated: the lecture's four
+/// interpolation schemes (docs/model.md, section 2).
+enum class ShadingMode
+{
+  Flat,     ///< once per polygon from its face normal (eq. 2.1)
+  Gouraud,  ///< at the vertices, intensities interpolated (eq. 2.2-2.4)
+  Phong,    ///< normals interpolated and renormalized, model per pixel (eq. 2.5)
+  FastPhong ///< Bishop & Weimer 1986 quadratic by forward differences (eq. 2.6-2.8)
+};
+
+/// One row of an enum's name table.
+template <typename E>
+struct EnumName
+{
+  E value;
+  const char* name;  ///< command-line / settings name
+  const char* label; ///< for people (menus, panel titles)
+  const char* glsl;  ///< GLSL #define suffix (SL_MODE_<glsl>), or nullptr
+};
+
+inline constexpr EnumName<ShadingMode> kShadingModes[] = {
+  { ShadingMode::Flat, "flat", "Flat", "FLAT" },
+  { ShadingMode::Gouraud, "gouraud", "Gouraud", "GOURAUD" },
+  { ShadingMode::Phong, "phong", "Phong", "PHONG" },
+  { ShadingMode::FastPhong, "fast-phong", "Fast Phong", "FAST_PHONG" },
+};
+inline constexpr int kShadingModeCount = 4;
+
+/// How attributes are interpolated across a polygon.
+enum class InterpolationSpace
+{
+  Perspective, ///< perspective-correct (interpolate a/w and 1/w)
+  Screen       ///< linear in screen space, as the lecture (shows its perspective distortion)
+};
+
+inline constexpr EnumName<InterpolationSpace> kInterpolationSpaces[] = {
+  { InterpolationSpace::Perspective, "perspective", "Perspective-correct", nullptr },
+  { InterpolationSpace::Screen, "screen", "Screen-space", nullptr },
+};
+
+/// Polygons with more than three vertices.
+enum class PolygonHandling
+{
+  Triangulate, ///< fan-triangulated
+  Direct       ///< scan-converted as polygons: edge walk in y, span in x (eq. 2.3)
+};
+
+enum class DisplayTransform
+{
+  Clamp, ///< linear intensity clamped to [0, 1] (what fixed-function GL shows)
+  SRGB   ///< clamp, then the sRGB encoding curve (IEC 61966-2-1)
+};
+
+/// Largest image side in pixels (both backends, the CLI and the VTK
+/// classes). 16384 is OpenGL's usual GL_MAX_VIEWPORT_DIMS and keeps one
+/// float RGB frame under 3.2 GB.
+inline constexpr int kMaxImageSize = 16384;
+/// Largest supersampling factor per axis: 8 x 8 = 64 samples per pixel is
+/// beyond any visible gain for a box filter.
+inline constexpr int kMaxSupersampling = 8;
+/// Largest supersampled frame (samples): 4e8 samples are 6.4 GB of float
+/// RGB + depth, the memory budget of a render on the 24 GiB machines we
+/// target.
+inline constexpr double kMaxFrameSamples = 4e8;
+
+struct RenderOptions
+{
+  ShadingMode mode = ShadingMode::Phong;
+  InterpolationSpace interpolation = InterpolationSpace::Perspective;
+  PolygonHandling polygons = PolygonHandling::Triangulate;
+  /// fast-phong's Taylor point: the provoking (last) vertex on both
+  /// backends by default; Centroid (lower error, docs/model.md eq. 2.7) is
+  /// CPU only: a fragment shader cannot see its triangle's centroid.
+  ExpansionPoint expansion = ExpansionPoint::Vertex;
+  int width = 1024;
+  int height = 768;
+  int ssaa = 1;    ///< supersampling factor per axis (box filter)
+  int threads = 0; ///< 0: all hardware threads (CPU backend)
+  bool cullBackFaces = false;
+  /// Back-facing polygons are lit with their normals flipped (VTK's default).
+  bool twoSidedLighting = true;
+  /// Instead of shading, count how many polygons cover each pixel (no depth
+  /// test): the fill-rule check (CPU backend). Result in Image::coverage.
+  bool countCoverage = false;
+  Vec3<float> background{ 0.32f, 0.34f, 0.43f };
+  /// fast-phong: a pixel whose interpolated normal is more than this many
+  /// degrees from the expansion point's normal is evaluated exactly instead
+  /// of by the Taylor quadratic (the same per-pixel rule on both backends).
+  /// The quadratic's error grows as the cube of the spread: at 30 degrees it
+  /// is ~1/255 (FastPhongTest measures 2.4e-3 at ~23 degrees); at 45 degrees
+  /// it is ~5/255 and visible. 180 disables the fallback.
+  double fastPhongMaxSpread = 30.0;
+};
+
+/// What a render did; fields a backend cannot know stay 0.
+struct RenderStats
+{
+  double milliseconds = 0;
+  int64_t polygons = 0;       ///< input polygons
+  int64_t triangles = 0;      ///< input polygons counted as triangles (n - 2 each)
+  int64_t rasterized = 0;     ///< polygons scan-converted (after culling and clipping; CPU)
+  int64_t clipped = 0;        ///< polygons crossing the near plane (CPU)
+  int64_t degenerate = 0;     ///< zero-area polygons skipped (CPU)
+  int64_t pixelsCovered = 0;  ///< pixels with a surface in the final image
+  int64_t pixelsShaded = 0;   ///< illumination-model evaluations at pixels (CPU)
+  int64_t fastPhongExact = 0; ///< fast-phong pixels evaluated exactly (spread limit; CPU)
+  int threads = 1;
+  int shaderBuilds = 0;       ///< shader sources generated by this render (GPU)
+  bool normalsComputed = false; ///< the mesh had no normals: area-weighted ones were made
+};
+
+const char* ShadingModeName(ShadingMode mode);
+const char* ShadingModeLabel(ShadingMode mode);
+/// Parses a ShadingMode name ("flat", "gouraud", "phong", "fast-phong").
+bool ParseShadingMode(const std::string& name, ShadingMode& mode);
+/// "flat, gouraud, phong or fast-phong", for error messages.
+std::string ShadingModeChoices();
+
+const char* InterpolationSpaceName(InterpolationSpace space);
+bool ParseInterpolationSpace(const std::string& name, InterpolationSpace& space);
+
+/**
+ * Checks what every backend needs of the options: image size in
+ * [1, kMaxImageSize], supersampling in [1, kMaxSupersampling], the frame
+ * under kMaxFrameSamples, threads in [0, 256], a spread limit in [0, 180].
+ * Returns "" or a one-line error.
+ */
+std::string ValidateOptions(const RenderOptions& options);
+
+} // namespace shadinglab::render

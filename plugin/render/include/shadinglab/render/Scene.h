@@ -1,0 +1,69 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// What a renderer draws: a mesh (borrowed), a camera, lights and a material.
+// Plain data, no VTK, no GL; both backends take exactly this.
+#pragma once
+
+#include "shadinglab/model/Shading.h"
+
+#include <cstdint>
+#include <vector>
+
+namespace shadinglab::render
+{
+
+/// A surface mesh as flat arrays (borrowed by a renderer, never modified).
+struct Mesh
+{
+  std::vector<float> points;      ///< 3 per vertex
+  std::vector<float> normals;     ///< 3 per vertex, or empty (then computed, area-weighted)
+  std::vector<float> colors;      ///< 3 per vertex in [0,1] linear, or empty
+  std::vector<int64_t> offsets;   ///< polygon p uses connectivity[offsets[p] .. offsets[p+1])
+  std::vector<int64_t> connectivity;
+  std::vector<float> faceNormals; ///< 3 per polygon, or empty (then Newell normals)
+
+  int64_t NumberOfPoints() const { return static_cast<int64_t>(points.size() / 3); }
+  int64_t NumberOfPolygons() const
+  {
+    return offsets.empty() ? 0 : static_cast<int64_t>(offsets.size() - 1);
+  }
+  void Bounds(double bounds[6]) const;
+};
+
+/// A vtkCamera-compatible description.
+struct Camera
+{
+  Vec3<double> position{ 0, 0, 5 };
+  Vec3<double> focalPoint{ 0, 0, 0 };
+  Vec3<double> viewUp{ 0, 1, 0 };
+  double viewAngle = 30.0; ///< vertical, degrees (perspective)
+  bool parallel = false;
+  double parallelScale = 1.0; ///< half the view height in world units (parallel)
+  double nearClip = 0.01;
+  double farClip = 100.0;
+};
+
+/**
+ * A camera looking at the bounds like vtkRenderer::ResetCamera (view along
+ * -z, up +y, 30 degree view angle, the bounding sphere filling the view),
+ * then rotated by azimuth (about view up) and elevation (about the right
+ * axis) around the focal point, and zoomed (view angle / zoom).
+ */
+Camera FitCamera(const double bounds[6], double azimuthDeg, double elevationDeg, double zoom,
+  double aspect, bool parallel);
+
+/// One key light above-left of the camera, in world coordinates: the default
+/// light of every front end (CLI, explorer, VTK classes).
+Light<double> KeyLight(const Camera& camera, double intensity = 1.0);
+
+/// Everything a renderer draws. The mesh is borrowed: it must outlive the
+/// Render call. With lighting.lightCount == 0 a headlight (a directional
+/// light from the camera) is used.
+struct Scene
+{
+  const Mesh* mesh = nullptr;
+  Camera camera;
+  Lighting<double> lighting;
+  Material<double> material;
+};
+
+} // namespace shadinglab::render

@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "shadinglab/render/Renderer.h"
+
+namespace shadinglab::render
+{
+
+const char* BackendName(Backend backend)
+{
+  return backend == Backend::GPU ? "gpu" : "cpu";
+}
+
+bool SupportsModel(ShadingMode mode, ReflectanceModel model)
+{
+  // Fast Phong expands cosines of the interpolated normal (N.L, N.H, N.V)
+  // as quadratics (docs/model.md eq. 2.6-2.8); Cook-Torrance's D, G and F
+  // are not functions of those cosines alone in a form the paper expands.
+  return !(mode == ShadingMode::FastPhong && model == ReflectanceModel::CookTorrance);
+}
+
+std::string ValidateRequest(const Scene& scene, const RenderOptions& options)
+{
+  if (!scene.mesh)
+  {
+    return "no mesh to render";
+  }
+  std::string error = ValidateOptions(options);
+  if (!error.empty())
+  {
+    return error;
+  }
+  error = ValidateMaterial(scene.material);
+  if (!error.empty())
+  {
+    return error;
+  }
+  if (scene.lighting.lightCount < 0 || scene.lighting.lightCount > kMaxLights)
+  {
+    return "between 0 and " + std::to_string(kMaxLights) + " lights";
+  }
+  const Camera& camera = scene.camera;
+  if (!IsFinite(camera.position) || !IsFinite(camera.focalPoint) || !IsFinite(camera.viewUp) ||
+    !(camera.viewAngle > 0 && camera.viewAngle < 180) || !(camera.nearClip > 0) ||
+    !(camera.farClip > camera.nearClip) || !(camera.parallelScale > 0))
+  {
+    return "invalid camera (non-finite, view angle outside (0,180), or bad clipping range)";
+  }
+  if (!SupportsModel(options.mode, scene.material.model))
+  {
+    return "fast-phong evaluates (N.L), (N.H)^n and (R.V)^n quadratics: use a lambert, phong or "
+           "blinn-phong material (or another --mode for cook-torrance)";
+  }
+  return {};
+}
+
+} // namespace shadinglab::render

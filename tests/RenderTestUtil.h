@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Renders through the one render::Renderer interface, for tests: the scene
+// assembled from its parts (lighting and material in float or double; the
+// float values cast to double and back are exact).
+#pragma once
+
+#include "shadinglab/cpu/SoftwareRenderer.h"
+#include "shadinglab/render/Renderer.h"
+
+namespace shadinglab::test
+{
+
+template <typename T>
+render::Image RenderWith(render::Renderer& renderer, const render::Mesh& mesh,
+  const render::Camera& camera, const Lighting<T>& lighting, const Material<T>& material,
+  const render::RenderOptions& options, render::RenderStats* stats = nullptr)
+{
+  const render::Scene scene{ &mesh, camera, lighting.template Cast<double>(),
+    material.template Cast<double>() };
+  return renderer.Render(scene, options, stats);
+}
+
+/// One frame of a fresh CPU renderer.
+template <typename T>
+render::Image RenderCpu(const render::Mesh& mesh, const render::Camera& camera,
+  const Lighting<T>& lighting, const Material<T>& material, const render::RenderOptions& options,
+  render::RenderStats* stats = nullptr)
+{
+  cpu::SoftwareRenderer renderer;
+  return RenderWith(renderer, mesh, camera, lighting, material, options, stats);
+}
+
+} // namespace shadinglab::test

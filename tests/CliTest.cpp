@@ -189,6 +189,45 @@ TEST(CliTest, RenderEveryFormatAndMode)
   }
 }
 
+TEST(CliTest, ShadingModeAndReflectanceModelAreIndependent)
+{
+  // Every mode with every model it has a form for; fast Phong with Phong's
+  // (R.V)^n included (R.V = 2 (N.L)(N.V) - L.V from its quadratics).
+  const char* modes[] = { "flat", "gouraud", "phong", "fast-phong" };
+  const char* models[] = { "lambert", "phong", "blinn-phong", "cook-torrance" };
+  int k = 0;
+  for (const char* m : modes)
+  {
+    for (const char* model : models)
+    {
+      const std::string out = ::testing::TempDir() + "/shadinglab_mm_" + std::to_string(k++) + ".png";
+      const auto r = RunCli("render " + kData + "torus_24x12.vtp --backend cpu --mode " + m +
+        " --model " + model + " --size 64x48 --stats --out " + out);
+      if (std::string(m) == "fast-phong" && std::string(model) == "cook-torrance")
+      {
+        EXPECT_EQ(r.status, 2) << r.err;
+        continue;
+      }
+      ASSERT_EQ(r.status, 0) << m << " " << model << ": " << r.err;
+      EXPECT_NE(r.out.find(std::string("\"mode\":\"") + m + "\""), std::string::npos) << r.out;
+      EXPECT_NE(r.out.find(std::string("\"model\":\"") + model + "\""), std::string::npos) << r.out;
+    }
+  }
+  // The shorthand is phong interpolation of a Cook-Torrance material.
+  const auto r = RunCli("render " + kData + "torus_24x12.vtp --backend cpu --mode cook-torrance "
+                        "--size 64x48 --stats --out " + ::testing::TempDir() + "/shadinglab_ct.png");
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.out.find("\"mode\":\"phong\",\"model\":\"cook-torrance\""), std::string::npos) << r.out;
+  // compare takes mode/model panels.
+  const std::string strip = ::testing::TempDir() + "/shadinglab_mm_strip.png";
+  const auto c = RunCli("compare " + kData + "torus_24x12.vtp --modes gouraud/cook-torrance,"
+                        "phong/cook-torrance,fast-phong/phong --material gold --size 80x60 --out " + strip);
+  ASSERT_EQ(c.status, 0) << c.err;
+  int w = 0, h = 0;
+  ASSERT_TRUE(PngSize(strip, w, h));
+  EXPECT_EQ(w, 3 * 80 + 2 * 4);
+}
+
 TEST(CliTest, RenderStatsIsOneJsonLine)
 {
   const std::string out = ::testing::TempDir() + "/shadinglab_stats.png";
@@ -230,6 +269,12 @@ TEST(CliTest, RenderBadInputExitsTwoWithOneLine)
     "render " + good + " --light spot:0,0,3:0,0,-1:120" + out, // cone over 90 degrees
     "render " + good + " --light spot:0,0,3:0,0,0:20" + out,   // no axis
     "render " + good + " --mode fast-phong --material gold" + out,
+    "render " + good + " --mode fast-phong --model cook-torrance" + out,
+    "render " + good + " --mode cook-torrance --model phong" + out,   // contradicts the shorthand
+    "render " + good + " --mode cook-torrance --m 0" + out,           // shorthand validates too
+    "render " + good + " --backend cpu --mode fast-phong --expansion middle" + out,
+    "compare " + good + " --modes gouraud/toon" + out,
+    "compare " + good + " --modes fast-phong/cook-torrance" + out,
     "render " + good + " --kd 2" + out,
     "render " + good + " --interp curved" + out,
     "render " + good + " --backend cpu --out /nonexistent-dir/x.png", // unwritable

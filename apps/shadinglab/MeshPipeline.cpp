@@ -1,14 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "MeshPipeline.h"
 
-#include "vtkMeshRepair.h"
-#include "vtkOpenSubdivRefine.h"
-#include "vtkWeightedPolyDataNormals.h"
-
-#include <vtkNew.h>
-#include <vtkPolyData.h>
-
-#include <cmath>
+#include <string>
 
 namespace shadinglab::cli
 {
@@ -25,22 +18,13 @@ bool WantsMeshPipeline(const Arguments& args)
   return false;
 }
 
-MeshPipelineOptions MeshPipelineFromArguments(const Arguments& args, bool always)
+mesh::PreparationOptions MeshPipelineFromArguments(const Arguments& args, bool always)
 {
-  MeshPipelineOptions o;
+  mesh::PreparationOptions o;
   o.repair = always || WantsMeshPipeline(args);
   o.computeNormals = o.repair;
   const std::string weights = args.Has("weights") ? args.Get("weights") : args.Get("normals", "area");
-  const char* names[] = { "uniform", "area", "angle", "max" };
-  o.weights = -1;
-  for (int i = 0; i < 4; ++i)
-  {
-    if (weights == names[i])
-    {
-      o.weights = i;
-    }
-  }
-  if (o.weights < 0)
+  if (!mesh::ParseNormalWeighting(weights, o.weighting))
   {
     throw UsageError("unknown weights '" + weights + "' (expected uniform, area, angle or max)");
   }
@@ -64,24 +48,13 @@ MeshPipelineOptions MeshPipelineFromArguments(const Arguments& args, bool always
   }
   o.fixTJunctions = args.Has("fix-t-junctions");
   o.subdivisionLevels = args.GetInt("subdivide", 0);
-  if (o.subdivisionLevels < 0 || o.subdivisionLevels > 6)
+  if (o.subdivisionLevels < 0 || o.subdivisionLevels > mesh::kMaxSubdivisionLevels)
   {
-    throw UsageError("--subdivide must be 0..6 levels");
+    throw UsageError("--subdivide must be 0.." + std::to_string(mesh::kMaxSubdivisionLevels) +
+      " levels");
   }
   const std::string scheme = args.Get("scheme", "auto");
-  if (scheme == "auto")
-  {
-    o.scheme = vtkOpenSubdivRefine::AUTO;
-  }
-  else if (scheme == "loop")
-  {
-    o.scheme = vtkOpenSubdivRefine::LOOP;
-  }
-  else if (scheme == "catmull-clark")
-  {
-    o.scheme = vtkOpenSubdivRefine::CATMULL_CLARK;
-  }
-  else
+  if (!mesh::ParseSubdivisionScheme(scheme, o.scheme))
   {
     throw UsageError("unknown --scheme '" + scheme + "' (expected loop or catmull-clark)");
   }
@@ -90,67 +63,6 @@ MeshPipelineOptions MeshPipelineFromArguments(const Arguments& args, bool always
     throw UsageError("--scheme needs --subdivide N");
   }
   return o;
-}
-
-vtkSmartPointer<vtkPolyData> RunMeshPipeline(
-  vtkPolyData* input, const MeshPipelineOptions& o, MeshPipelineReport& report)
-{
-  vtkSmartPointer<vtkPolyData> current = input;
-  if (!o.repair)
-  {
-    return current;
-  }
-  vtkNew<vtkMeshRepair> repair;
-  repair->SetInputData(current);
-  repair->SetWeld(o.weld);
-  repair->SetWeldTolerance(o.weldTolerance);
-  repair->SetFixTJunctions(o.fixTJunctions);
-  repair->Update();
-  current = repair->GetOutput();
-  report.welded = repair->GetNumberOfWeldedPoints();
-  report.tJunctionsFixed = repair->GetNumberOfTJunctionsFixed();
-  report.degenerateRemoved = repair->GetNumberOfDegenerateCellsRemoved();
-  report.nonManifoldEdges = repair->GetNumberOfNonManifoldEdges();
-  report.duplicatedPoints = repair->GetNumberOfDuplicatedPoints();
-  report.flipped = repair->GetNumberOfFlippedCells();
-  if (current->GetNumberOfPolys() == 0)
-  {
-    throw UsageError("no polygon left after removing degenerate faces");
-  }
-  if (o.subdivisionLevels > 0)
-  {
-    vtkNew<vtkOpenSubdivRefine> refine;
-    refine->SetInputData(current);
-    refine->SetLevels(o.subdivisionLevels);
-    refine->SetScheme(o.scheme);
-    refine->UseFeatureAngleOn();
-    refine->SetFeatureAngle(o.featureAngle);
-    refine->GlobalWarningDisplayOff();
-    refine->Update();
-    if (refine->GetOutput()->GetNumberOfPolys() == 0)
-    {
-      throw UsageError("subdivision failed: Loop needs triangles (use --scheme catmull-clark)");
-    }
-    current = refine->GetOutput();
-    report.creaseEdges = refine->GetNumberOfCreaseEdges();
-    report.scheme = refine->GetSchemeUsed() == vtkOpenSubdivRefine::LOOP ? "loop" : "catmull-clark";
-    report.weights = "limit";
-    return current; // limit-surface normals
-  }
-  if (o.computeNormals)
-  {
-    vtkNew<vtkWeightedPolyDataNormals> normals;
-    normals->SetInputData(current);
-    normals->SetWeighting(o.weights);
-    normals->SetFeatureAngle(o.featureAngle);
-    normals->Update();
-    current = normals->GetOutput();
-    report.creaseEdges = normals->GetNumberOfCreaseEdges();
-    report.splitPoints = normals->GetNumberOfSplitPoints();
-    const char* names[] = { "uniform", "area", "angle", "max" };
-    report.weights = names[o.weights];
-  }
-  return current;
 }
 
 } // namespace shadinglab::cli

@@ -10,6 +10,7 @@
 #include <vtkSmartPointer.h>
 
 #include <cstdio>
+#include <stdexcept>
 #include <iostream>
 
 namespace shadinglab::cli
@@ -47,7 +48,7 @@ int RunNormals(int argc, char** argv)
   {
     throw UsageError("--out OUT is required");
   }
-  MeshPipelineOptions options = MeshPipelineFromArguments(args, true);
+  mesh::PreparationOptions options = MeshPipelineFromArguments(args, true);
   vtkSmartPointer<vtkPolyData> input;
   try
   {
@@ -57,8 +58,16 @@ int RunNormals(int argc, char** argv)
   {
     throw UsageError(e.what());
   }
-  MeshPipelineReport report;
-  vtkSmartPointer<vtkPolyData> output = RunMeshPipeline(input, options, report);
+  mesh::PreparationReport report;
+  vtkSmartPointer<vtkPolyData> output;
+  try
+  {
+    output = mesh::PrepareMesh(input, options, report);
+  }
+  catch (const std::invalid_argument& e)
+  {
+    throw UsageError(e.what());
+  }
   try
   {
     WriteMesh(output, args.Get("out"));

@@ -243,8 +243,15 @@ std::unique_ptr<SceneArguments> SceneFromArguments(int argc, char** argv, const 
   if (WantsMeshPipeline(args))
   {
     // The same filters as 'shadinglab normals'.
-    MeshPipelineReport report;
-    polydata = RunMeshPipeline(polydata, MeshPipelineFromArguments(args, false), report);
+    mesh::PreparationReport report;
+    try
+    {
+      polydata = mesh::PrepareMesh(polydata, MeshPipelineFromArguments(args, false), report);
+    }
+    catch (const std::invalid_argument& e)
+    {
+      throw UsageError(e.what());
+    }
   }
   scene.mesh = render::MeshFromPolyData(polydata);
   scene.scene.mesh = &scene.mesh;

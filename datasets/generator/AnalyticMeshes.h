@@ -25,7 +25,7 @@ vtkPolyData* MakeEllipsoid(double a, double b, double c, int slices, int stacks)
 vtkPolyData* MakeLowPolyCylinder(int sides);
 /// Plane whose rows of vertices alternate between +amplitude and
 /// -amplitude: every interior vertex normal averages to straight up, so
-/// smooth shading renders the corrugation flat (lecture slide 4).
+/// smooth shading renders the corrugation flat (docs/model.md eq. 2.2).
 vtkPolyData* MakeCorrugatedPlane(int ridges, int depth, double amplitude);
 /// A strip of quads bent along a half cylinder.
 vtkPolyData* MakeQuadStrip(int quads);
@@ -38,7 +38,7 @@ vtkPolyData* MakeMetaballIsosurface(int n);
 /// A unit-wide floor (y = 0, facing +y) receding from z = 0 to z = -depth,
 /// one quad, with point colours black at the near edge and white at the far
 /// edge: rendered in screen-space interpolation it shows the lecture's
-/// perspective distortion (slide 9) at a glance.
+/// perspective distortion (docs/model.md eq. 3.1) at a glance.
 vtkPolyData* MakeRecedingPlane(double depth);
 /// Analytic terrain height field on an n x n grid with an "Elevation" array
 /// and the exact normal.

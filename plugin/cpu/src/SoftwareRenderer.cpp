@@ -5,8 +5,8 @@
 //   2. per thread, over an interleaved set of 16-row bands: every polygon in
 //      input order is rejected early when it misses the thread's bands, else
 //      clipped at the near plane, culled, lit (flat) and scan-converted as in
-//      the lecture: edge walk in y (slide 5), span in x with
-//      I_{p+1} = I_p + dI (slide 6), depth test, shading. Each pixel belongs
+//      the lecture: edge walk in y (docs/model.md eq. 2.3), span in x with
+//      I_{p+1} = I_p + dI (eq. 2.4), depth test, shading. Each pixel belongs
 //      to one band and sees polygons in input order, and no arithmetic
 //      depends on the band split, so the image is bit-identical for any
 //      thread count.
@@ -902,11 +902,11 @@ void SoftwareRenderer::Internals::ScanConvert(const ScreenVertex* const* verts, 
 }
 
 /*
- * Triangles. Slide 5's interpolation along the edges and slide 6's across
+ * Triangles. The interpolation along the edges (docs/model.md eq. 2.3) and across
  * the span give, on a triangle, the one linear function of (x, y) through
  * the three vertex values: its gradients dI/dx and dI/dy are constant. They
  * are computed once per triangle; each span starts from the plane value at
- * its first pixel centre and steps I_{p+1} = I_p + dI/dx (slide 6). Edge
+ * its first pixel centre and steps I_{p+1} = I_p + dI/dx (eq. 2.4). Edge
  * crossings are computed from each edge's canonical endpoint order, as in
  * ScanPolygon, so shared edges stay watertight.
  */
@@ -1010,9 +1010,9 @@ void SoftwareRenderer::Internals::ScanTriangle(const ScreenVertex* const* verts,
 /*
  * General polygons (--polygons direct): the lecture's algorithm literally.
  * For each scanline, every edge crossing is interpolated along its edge in y
- * (slide 5), crossings are paired left to right, and each span is
- * interpolated in x (slide 6). For a polygon of more than three vertices the
- * result depends on the polygon's orientation on screen (slide 9).
+ * (eq. 2.3), crossings are paired left to right, and each span is
+ * interpolated in x (eq. 2.4). For a polygon of more than three vertices the
+ * result depends on the polygon's orientation on screen (docs/model.md eq. 3.2).
  */
 template <typename PixelFn, typename SpanFn>
 void SoftwareRenderer::Internals::ScanPolygon(const ScreenVertex* const* verts, int n, int rowBegin, int rowEnd,
@@ -1056,7 +1056,7 @@ void SoftwareRenderer::Internals::ScanPolygon(const ScreenVertex* const* verts, 
       {
         continue;
       }
-      // Slide 5: I_4 = (y_1 - y_4)/(y_1 - y_2) I_2 + (y_4 - y_2)/(y_1 - y_2) I_1.
+      // docs/model.md eq. 2.3: I_4 = (y_1 - y_4)/(y_1 - y_2) I_2 + (y_4 - y_2)/(y_1 - y_2) I_1.
       const float t = (yc - p->y) / (q->y - p->y);
       Crossing& c = cross[nc++];
       c.x = p->x + t * (q->x - p->x);
@@ -1083,7 +1083,7 @@ void SoftwareRenderer::Internals::ScanPolygon(const ScreenVertex* const* verts, 
       {
         continue;
       }
-      // Slide 6: I_p = (x_5 - x_p)/(x_5 - x_4) I_4 + (x_p - x_4)/(x_5 - x_4) I_5,
+      // docs/model.md eq. 2.4: I_p = (x_5 - x_p)/(x_5 - x_4) I_4 + (x_p - x_4)/(x_5 - x_4) I_5,
       // then incrementally I_{p+1} = I_p + (I_5 - I_4)/(x_5 - x_4).
       const float invSpan = 1.0f / (R.x - L.x);
       const float start = (static_cast<float>(i0) + 0.5f - L.x);
@@ -1185,7 +1185,7 @@ void SoftwareRenderer::Internals::DrawPolygon(const ScreenVertex* const* verts,
     }
     const float w = this->Perspective ? 1.0f / a[kAttrInvW] : 1.0f;
     const float* n = a + kAttrFirst + this->NormalSlot;
-    // Slide 8: the interpolated normal is renormalized before lighting.
+    // docs/model.md eq. 2.5: the interpolated normal is renormalized before lighting.
     const Vec3f N = NormalizeOr(Vec3f(n[0], n[1], n[2]) * (w * flip), this->ToEye);
     Vec3f P;
     if (this->PositionSlot >= 0)

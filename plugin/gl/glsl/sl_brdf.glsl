@@ -7,7 +7,7 @@
 // SL_PI, SL_INV_PI and the guards (SL_MIN_COS_THETA, ...) are #defines
 // generated from Constants.h at build time (GenerateGlslDefines.cpp).
 
-// Lambert 1760; lecture slide 12: Rd = 1/pi.
+// Lambert 1760; docs/model.md eq. 1.2: Rd = 1/pi.
 float Fd_Lambert()
 {
   return SL_INV_PI;
@@ -28,7 +28,7 @@ float Fs_BlinnPhong(float NoH, float shininess)
   return NoH > 0.0 ? lobe : 0.0;
 }
 
-// Beckmann distribution, Cook & Torrance 1982 (slide 14), without 1/pi.
+// Beckmann distribution, Cook & Torrance 1982 (docs/model.md eq. 1.6), without 1/pi.
 float D_Beckmann(float NoH, float m)
 {
   float c = clamp(NoH, 0.0, 1.0);
@@ -41,7 +41,7 @@ float D_Beckmann(float NoH, float m)
   return (NoH > 0.0 && cos4Alpha >= SL_MIN_COS4_ALPHA) ? D : 0.0;
 }
 
-// D = sum_k w_k D(m_k) (slide 14).
+// D = sum_k w_k D(m_k) (docs/model.md eq. 1.7).
 float D_BeckmannMixture(float NoH, float weights[SL_MAX_LOBES], float ms[SL_MAX_LOBES], int count)
 {
   float D = 0.0;
@@ -52,7 +52,7 @@ float D_BeckmannMixture(float NoH, float weights[SL_MAX_LOBES], float ms[SL_MAX_
   return D;
 }
 
-// Torrance & Sparrow 1967 V-groove attenuation (slide 16):
+// Torrance & Sparrow 1967 V-groove attenuation (docs/model.md eq. 1.10):
 // min(1, Gs, Gm) = min(1, 2 (N.H) min(N.L, N.V) / (V.H)); V.H -> 0 gives 1.
 float G_CookTorrance(float NoH, float NoV, float NoL, float VoH)
 {
@@ -61,7 +61,7 @@ float G_CookTorrance(float NoH, float NoV, float NoL, float VoH)
   return (NoL > 0.0 && NoV > 0.0 && NoH > 0.0) ? G : 0.0;
 }
 
-// Cook & Torrance 1982 unpolarized Fresnel (slide 15), cosine form (finite
+// Cook & Torrance 1982 unpolarized Fresnel (docs/model.md eq. 1.8), cosine form (finite
 // at normal incidence; equal in value to the slide's form).
 float F_Dielectric(float cosTheta_i, float eta)
 {

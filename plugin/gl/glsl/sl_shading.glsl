@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The illumination model of lecture slide 11 (GLSL twin of Shading.h):
+// The illumination model (docs/model.md eq. 1.1) (GLSL twin of Shading.h):
 //   I_r = Ra Ia + sum_j I_Lj (N.Lj) dw_j (kd Rd + ks Rs).
 // Variants are compile-time #defines set by vtkShadingLabPolyDataMapper, so
 // a scene pays only for what it uses:

@@ -117,7 +117,7 @@ std::string ValidateMaterial(const Material<double>& m)
   }
   if (m.kd + m.ks > 1.0 + kSumTolerance)
   {
-    err << "kd + ks must be <= 1 (energy conservation, slide 12): got kd=" << m.kd
+    err << "kd + ks must be <= 1 (energy conservation, docs/model.md eq. 1.2): got kd=" << m.kd
         << " + ks=" << m.ks << " = " << (m.kd + m.ks);
     return err.str();
   }

@@ -16,7 +16,7 @@
 namespace shadinglab
 {
 
-/// Lambert 1760; lecture slide 12: Rd = 1/pi, the BRDF of a perfectly
+/// Lambert 1760; docs/model.md eq. 1.2: Rd = 1/pi, the BRDF of a perfectly
 /// diffuse surface with albedo 1.
 template <typename T>
 constexpr T Fd_Lambert()
@@ -77,7 +77,7 @@ SL_INLINE T Fs_BlinnPhong(T NoH, T shininess, Power power = {})
 
 /**
  * Beckmann distribution as in Cook & Torrance 1982, eq. (the lecture's
- * slide 14):  D = exp(-(tan(a)/m)^2) / (m^2 cos^4(a)),  a = acos(N.H).
+ * docs/model.md eq. 1.6):  D = exp(-(tan(a)/m)^2) / (m^2 cos^4(a)),  a = acos(N.H).
  * Without the 1/pi that Rs carries: (1/pi) D cos(a) integrates to 1 over the
  * hemisphere (tested).
  * @param NoH cos(a); <= 0 means no facet faces H: D = 0.
@@ -112,7 +112,7 @@ struct BeckmannLobe
 };
 
 /**
- * Mixture of Beckmann distributions, Cook & Torrance 1982 (slide 14):
+ * Mixture of Beckmann distributions, Cook & Torrance 1982 (docs/model.md eq. 1.7):
  *   D = sum_k w_k D(m_k).
  * The weights should sum to 1 for the mixture to stay normalized; the
  * Material validation enforces it.
@@ -130,7 +130,7 @@ SL_INLINE T D_BeckmannMixture(T NoH, const BeckmannLobe<T>* lobes, int count)
 
 /**
  * Geometric attenuation of V-groove microfacets, Torrance & Sparrow 1967 as
- * used by Cook & Torrance 1982 (slide 16):
+ * used by Cook & Torrance 1982 (docs/model.md eq. 1.10):
  *   G = min(1, 2(N.H)(N.L)/(V.H), 2(N.H)(N.V)/(V.H)).
  * V.H -> 0 sends both ratios to +infinity: G = 1 is the limit.
  */
@@ -153,7 +153,7 @@ SL_INLINE T G_CookTorrance(T NoH, T NoV, T NoL, T VoH)
 /// Which specular denominator Cook-Torrance uses.
 enum class SpecularVariant
 {
-  /// Cook & Torrance 1982 / lecture slide 12: Rs = (1/pi) F D G / ((N.L)(N.V)).
+  /// Cook & Torrance 1982 / docs/model.md eq. 1.5: Rs = (1/pi) F D G / ((N.L)(N.V)).
   CookTorrance1982,
   /// Walter et al. 2007, "Microfacet Models for Refraction through Rough
   /// Surfaces", eq. 20: f = F D_n G / (4 (N.L)(N.V)) with the normalized
@@ -164,7 +164,7 @@ enum class SpecularVariant
 };
 
 /**
- * Specular BRDF Rs of Cook & Torrance (slide 12) or of Walter et al. 2007,
+ * Specular BRDF Rs of Cook & Torrance (docs/model.md eq. 1.5) or of Walter et al. 2007,
  * from its terms. NoL, NoV <= 0 (light or viewer below the surface): 0.
  * Denominators are clamped to kMinCosTheta.
  */

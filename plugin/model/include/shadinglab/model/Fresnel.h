@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Fresnel reflectance: the F term of Cook-Torrance (lecture slide 15).
+// Fresnel reflectance: the F term of Cook-Torrance (docs/model.md eq. 1.8-1.9).
 #pragma once
 
 #include "shadinglab/model/Vec3.h"
@@ -15,7 +15,7 @@ namespace shadinglab
  * Unpolarized Fresnel reflectance of a smooth dielectric interface.
  *
  * Cook & Torrance 1982, "A Reflectance Model for Computer Graphics", eq. for F;
- * lecture slide 15:
+ * docs/model.md eq. 1.8:
  *   F = 1/2 sin^2(ti - tt)/sin^2(ti + tt) (1 + cos^2(ti + tt)/cos^2(ti - tt)),
  *   sin(tt) = sin(ti) / eta.
  *

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The illumination model of lecture slide 11, shared by every shading mode:
+// The illumination model (docs/model.md eq. 1.1), shared by every shading mode:
 //
 //   I_r = Ra Ia + sum_j I_Lj (N.Lj) dw_j (kd Rd + ks Rs)
 //
@@ -53,7 +53,7 @@ template <typename T>
 struct Material
 {
   ReflectanceModel model = ReflectanceModel::BlinnPhong;
-  /// Ambient reflectance Ra (slide 11).
+  /// Ambient reflectance Ra (eq. 1.1).
   Vec3<T> ambient{ T(0.05), T(0.05), T(0.05) };
   /// Diffuse colour rho (albedo), Rd = rho / pi; per-vertex colours replace it.
   Vec3<T> diffuseColor{ T(1), T(1), T(1) };
@@ -65,7 +65,7 @@ struct Material
   /// Exponent n of (R.V)^n and (N.H)^n.
   T shininess = T(32);
 
-  // Cook-Torrance (slides 12-16).
+  // Cook-Torrance (docs/model.md eq. 1.5-1.10).
   BeckmannLobe<T> lobes[kMaxLobes] = {};
   int lobeCount = 1;
   /// Relative index of refraction per RGB channel.
@@ -115,7 +115,7 @@ enum class LightType
   Point,
 };
 
-/// A light of slide 11: intensity I_L over a solid angle dw.
+/// A light of docs/model.md eq. 1.1 and 1.11: intensity I_L over a solid angle dw.
 template <typename T>
 struct Light
 {
@@ -272,7 +272,7 @@ SL_INLINE Vec3<T> EvaluateBrdf(
       const T VoH = std::max(Dot(V, H), T(0));
       const T D = D_BeckmannMixture(NoH, material.lobes, material.lobeCount);
       const T G = G_CookTorrance(NoH, NoV, NoL, VoH);
-      // F is evaluated at theta_i = acos(L.H) (slide 15); L.H = V.H.
+      // F is evaluated at theta_i = acos(L.H) (eq. 1.8); L.H = V.H.
       const Vec3<T> F = F_RGB(VoH, material.eta, material.k);
       const T DG = Fs_CookTorrance(T(1), D, G, NoL, NoV, material.variant);
       return diffuse + F * (material.ks * DG);
@@ -282,7 +282,7 @@ SL_INLINE Vec3<T> EvaluateBrdf(
 }
 
 /**
- * The illumination model of slide 11 at one surface point:
+ * The illumination model (docs/model.md eq. 1.1) at one surface point:
  *   I_r = Ra Ia + sum_j I_Lj (N.Lj) dw_j (kd Rd + ks Rs).
  * @param P position (for point lights), N unit normal, V unit direction to
  *   the viewer. Returns linear RGB, finite for finite input.

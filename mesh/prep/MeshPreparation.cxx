@@ -1,0 +1,140 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "MeshPreparation.h"
+
+#include "vtkMeshRepair.h"
+#include "vtkOpenSubdivRefine.h"
+#include "vtkWeightedPolyDataNormals.h"
+
+#include <vtkNew.h>
+#include <vtkPolyData.h>
+
+#include <stdexcept>
+
+namespace shadinglab::mesh
+{
+
+namespace
+{
+constexpr const char* kWeightingNames[] = { "uniform", "area", "angle", "max" };
+
+// The filters' int enums are the typed enums' values, checked here.
+static_assert(vtkWeightedPolyDataNormals::UNIFORM == static_cast<int>(NormalWeighting::Uniform) &&
+  vtkWeightedPolyDataNormals::MAX == static_cast<int>(NormalWeighting::Max));
+static_assert(vtkOpenSubdivRefine::AUTO == static_cast<int>(SubdivisionScheme::Auto) &&
+  vtkOpenSubdivRefine::CATMULL_CLARK == static_cast<int>(SubdivisionScheme::CatmullClark));
+} // namespace
+
+const char* NormalWeightingName(NormalWeighting weighting)
+{
+  return kWeightingNames[static_cast<int>(weighting)];
+}
+
+bool ParseNormalWeighting(const std::string& name, NormalWeighting& weighting)
+{
+  for (int i = 0; i < 4; ++i)
+  {
+    if (name == kWeightingNames[i])
+    {
+      weighting = static_cast<NormalWeighting>(i);
+      return true;
+    }
+  }
+  return false;
+}
+
+bool ParseSubdivisionScheme(const std::string& name, SubdivisionScheme& scheme)
+{
+  if (name == "auto" || name == "loop" || name == "catmull-clark")
+  {
+    scheme = name == "auto" ? SubdivisionScheme::Auto
+      : name == "loop"      ? SubdivisionScheme::Loop
+                            : SubdivisionScheme::CatmullClark;
+    return true;
+  }
+  return false;
+}
+
+std::string ValidatePreparationOptions(const PreparationOptions& o)
+{
+  if (!(o.featureAngle >= 0 && o.featureAngle <= 180))
+  {
+    return "feature angle must be in [0, 180] degrees";
+  }
+  if (!(o.weldTolerance >= 0 && o.weldTolerance <= 0.1))
+  {
+    return "weld tolerance must be in [0, 0.1] (relative to the bounding box)";
+  }
+  if (o.subdivisionLevels < 0 || o.subdivisionLevels > kMaxSubdivisionLevels)
+  {
+    return "subdivision must be 0.." + std::to_string(kMaxSubdivisionLevels) + " levels";
+  }
+  return {};
+}
+
+vtkSmartPointer<vtkPolyData> PrepareMesh(
+  vtkPolyData* input, const PreparationOptions& o, PreparationReport& report)
+{
+  const std::string problem = ValidatePreparationOptions(o);
+  if (!problem.empty())
+  {
+    throw std::invalid_argument(problem);
+  }
+  vtkSmartPointer<vtkPolyData> current = input;
+  if (!o.repair)
+  {
+    return current;
+  }
+  vtkNew<vtkMeshRepair> repair;
+  repair->SetInputData(current);
+  repair->SetWeld(o.weld);
+  repair->SetWeldTolerance(o.weldTolerance);
+  repair->SetFixTJunctions(o.fixTJunctions);
+  repair->Update();
+  current = repair->GetOutput();
+  report.welded = repair->GetNumberOfWeldedPoints();
+  report.tJunctionsFixed = repair->GetNumberOfTJunctionsFixed();
+  report.degenerateRemoved = repair->GetNumberOfDegenerateCellsRemoved();
+  report.nonManifoldEdges = repair->GetNumberOfNonManifoldEdges();
+  report.duplicatedPoints = repair->GetNumberOfDuplicatedPoints();
+  report.flipped = repair->GetNumberOfFlippedCells();
+  if (current->GetNumberOfPolys() == 0)
+  {
+    throw std::invalid_argument("no polygon left after removing degenerate faces");
+  }
+  if (o.subdivisionLevels > 0)
+  {
+    vtkNew<vtkOpenSubdivRefine> refine;
+    refine->SetInputData(current);
+    refine->SetLevels(o.subdivisionLevels);
+    refine->SetScheme(static_cast<int>(o.scheme));
+    refine->UseFeatureAngleOn();
+    refine->SetFeatureAngle(o.featureAngle);
+    refine->GlobalWarningDisplayOff();
+    refine->Update();
+    if (refine->GetOutput()->GetNumberOfPolys() == 0)
+    {
+      throw std::invalid_argument(
+        "subdivision failed: Loop needs triangles (use --scheme catmull-clark)");
+    }
+    current = refine->GetOutput();
+    report.creaseEdges = refine->GetNumberOfCreaseEdges();
+    report.scheme = refine->GetSchemeUsed() == vtkOpenSubdivRefine::LOOP ? "loop" : "catmull-clark";
+    report.weights = "limit";
+    return current; // limit-surface normals
+  }
+  if (o.computeNormals)
+  {
+    vtkNew<vtkWeightedPolyDataNormals> normals;
+    normals->SetInputData(current);
+    normals->SetWeighting(static_cast<int>(o.weighting));
+    normals->SetFeatureAngle(o.featureAngle);
+    normals->Update();
+    current = normals->GetOutput();
+    report.creaseEdges = normals->GetNumberOfCreaseEdges();
+    report.splitPoints = normals->GetNumberOfSplitPoints();
+    report.weights = NormalWeightingName(o.weighting);
+  }
+  return current;
+}
+
+} // namespace shadinglab::mesh

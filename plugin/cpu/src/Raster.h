@@ -1,0 +1,374 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The software rasterizer's primitives: screen vertices with their
+// interpolated attributes, the transforms, the parallel loop, and scan
+// conversion as the lecture does it (edge walk in y, span in x with
+// I_{p+1} = I_p + dI; docs/model.md eq. 2.3-2.4). Nothing here knows the
+// shading mode: the stages (ShadingStages.h) pass their pixel functions in.
+#pragma once
+
+#include "shadinglab/model/Vec3.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <thread>
+#include <vector>
+
+namespace shadinglab::cpu::raster
+{
+
+/// z, 1/w, then up to 9 interpolated values (normal, position, colour).
+constexpr int kMaxAttributes = 11;
+constexpr int kAttrZ = 0;
+constexpr int kAttrInvW = 1;
+constexpr int kAttrFirst = 2;
+
+/// Rows per band. Bands are dealt to threads round-robin: 16 rows gives ~70
+/// bands at 1080p, fine enough that two threads get even work on any image,
+/// coarse enough that a typical small triangle touches one band only.
+constexpr int kBandRows = 16;
+
+/// Screen-space polygon area (pixels^2) below which a polygon is skipped as
+/// degenerate: it cannot contain a pixel centre except on its own edges,
+/// which the half-open fill rule assigns to neighbours anyway. 1e-10 is far
+/// below any real sliver (a 1e-5 x 1e-5 pixel triangle).
+constexpr float kDegenerateArea = 1e-10f;
+
+/// Largest polygon after near-plane clipping: one more vertex than the input.
+constexpr int kMaxPolygonVertices = 64;
+
+/// ceil(x) as an int for the pixel-centre rules, without a libm call (this
+/// build targets baseline x86-64, where std::ceil is not a single
+/// instruction). x is clamped to +-1e9 pixels first: beyond any viewport, and
+/// the int conversion stays defined.
+inline int CeilToInt(float x)
+{
+  x = x < -1e9f ? -1e9f : (x > 1e9f ? 1e9f : x);
+  const int i = static_cast<int>(x);
+  return i + (x > static_cast<float>(i) ? 1 : 0);
+}
+
+struct ScreenVertex
+{
+  float x, y;
+  float a[kMaxAttributes];
+};
+
+struct Matrix4
+{
+  double m[4][4];
+  void Apply(const double p[3], double out[4]) const
+  {
+    for (int r = 0; r < 4; ++r)
+    {
+      out[r] = m[r][0] * p[0] + m[r][1] * p[1] + m[r][2] * p[2] + m[r][3];
+    }
+  }
+};
+
+inline Matrix4 Multiply(const Matrix4& a, const Matrix4& b)
+{
+  Matrix4 r{};
+  for (int i = 0; i < 4; ++i)
+  {
+    for (int j = 0; j < 4; ++j)
+    {
+      for (int k = 0; k < 4; ++k)
+      {
+        r.m[i][j] += a.m[i][k] * b.m[k][j];
+      }
+    }
+  }
+  return r;
+}
+
+template<typename Fn>
+void ParallelFor(int64_t count, int threads, Fn&& fn)
+{
+  if (threads <= 1 || count < 2)
+  {
+    fn(int64_t(0), count, 0);
+    return;
+  }
+  std::vector<std::thread> pool;
+  const int64_t per = (count + threads - 1) / threads;
+  for (int t = 0; t < threads; ++t)
+  {
+    const int64_t b = t * per, e = std::min(count, b + per);
+    if (b >= e)
+    {
+      break;
+    }
+    pool.emplace_back([&fn, b, e, t] { fn(b, e, t); });
+  }
+  for (auto& th : pool)
+  {
+    th.join();
+  }
+}
+
+/// Per-thread scratch space and counters of the raster stage.
+struct ThreadState
+{
+  std::vector<ScreenVertex> clipped; ///< vertices made by near-plane clipping
+  int64_t clippedPolygons = 0, degenerate = 0, rasterized = 0, shaded = 0, fastPhongExact = 0;
+  int64_t covered = 0; ///< covered pixels in this thread's bands (full resolution)
+};
+
+/*
+ * Triangles. The interpolation along the edges (docs/model.md eq. 2.3) and across
+ * the span give, on a triangle, the one linear function of (x, y) through
+ * the three vertex values: its gradients dI/dx and dI/dy are constant. They
+ * are computed once per triangle; each span starts from the plane value at
+ * its first pixel centre and steps I_{p+1} = I_p + dI/dx (eq. 2.4). Edge
+ * crossings are computed from each edge's canonical endpoint order, as in
+ * ScanPolygon, so shared edges stay watertight.
+ */
+template<int NA, typename PixelFn, typename SpanFn>
+void ScanTriangle(int width,
+  const ScreenVertex* const* verts,
+  int rowBegin,
+  int rowEnd,
+  SpanFn&& beginSpan,
+  PixelFn&& pixel)
+{
+  const ScreenVertex& v0 = *verts[0];
+  const ScreenVertex& v1 = *verts[1];
+  const ScreenVertex& v2 = *verts[2];
+  const double e1x = v1.x - v0.x, e1y = v1.y - v0.y;
+  const double e2x = v2.x - v0.x, e2y = v2.y - v0.y;
+  const double det = e1x * e2y - e2x * e1y;
+  if (!(std::abs(det) > 0.0))
+  {
+    return;
+  }
+  // Attribute gradients, computed on the first span with pixels: most
+  // triangles of a very fine mesh cover no pixel centre.
+  double dadx[NA] = {}, dady[NA] = {};
+  float stepX[NA] = {};
+  bool gradients = false;
+  auto computeGradients = [&]()
+  {
+    const double invDet = 1.0 / det;
+    for (int k = 0; k < NA; ++k)
+    {
+      const double d1 = static_cast<double>(v1.a[k]) - v0.a[k];
+      const double d2 = static_cast<double>(v2.a[k]) - v0.a[k];
+      dadx[k] = (d1 * e2y - d2 * e1y) * invDet;
+      dady[k] = (d2 * e1x - d1 * e2x) * invDet;
+      stepX[k] = static_cast<float>(dadx[k]);
+    }
+    gradients = true;
+  };
+  struct Edge
+  {
+    float px, py, qy, invSlope;
+  };
+  Edge edges[3];
+  float ymin = v0.y, ymax = v0.y;
+  for (int k = 0; k < 3; ++k)
+  {
+    const ScreenVertex* p = verts[k];
+    const ScreenVertex* q = verts[(k + 1) % 3];
+    if (q->y < p->y || (q->y == p->y && q->x < p->x))
+    {
+      std::swap(p, q);
+    }
+    edges[k] = { p->x, p->y, q->y, q->y > p->y ? (q->x - p->x) / (q->y - p->y) : 0.0f };
+    ymin = std::min(ymin, p->y);
+    ymax = std::max(ymax, q->y);
+  }
+  const int j0 = std::max(rowBegin, CeilToInt(ymin - 0.5f));
+  const int j1 = std::min(rowEnd, CeilToInt(ymax - 0.5f));
+  float value[kMaxAttributes] = {}; // full size: pixel functors index by slot
+  for (int j = j0; j < j1; ++j)
+  {
+    const float yc = static_cast<float>(j) + 0.5f;
+    float xs[2];
+    int nc = 0;
+    for (int k = 0; k < 3 && nc < 2; ++k)
+    {
+      const Edge& e = edges[k];
+      if (e.py <= yc && yc < e.qy)
+      {
+        xs[nc++] = e.px + (yc - e.py) * e.invSlope;
+      }
+    }
+    if (nc < 2)
+    {
+      continue;
+    }
+    const float xl = std::min(xs[0], xs[1]), xr = std::max(xs[0], xs[1]);
+    const int i0 = std::max(0, CeilToInt(xl - 0.5f));
+    const int i1 = std::min(width, CeilToInt(xr - 0.5f));
+    if (i1 <= i0)
+    {
+      continue;
+    }
+    if (!gradients)
+    {
+      computeGradients();
+    }
+    const double dx = static_cast<double>(i0) + 0.5 - v0.x, dy = static_cast<double>(yc) - v0.y;
+    for (int k = 0; k < NA; ++k)
+    {
+      value[k] = static_cast<float>(v0.a[k] + dadx[k] * dx + dady[k] * dy);
+    }
+    beginSpan(j, i0);
+    for (int i = i0; i < i1; ++i)
+    {
+      pixel(j, i, value);
+      for (int k = 0; k < NA; ++k)
+      {
+        value[k] += stepX[k];
+      }
+    }
+  }
+}
+
+/*
+ * General polygons (--polygons direct): the lecture's algorithm literally.
+ * For each scanline, every edge crossing is interpolated along its edge in y
+ * (eq. 2.3), crossings are paired left to right, and each span is
+ * interpolated in x (eq. 2.4). For a polygon of more than three vertices the
+ * result depends on the polygon's orientation on screen (docs/model.md eq. 3.2).
+ */
+template<typename PixelFn, typename SpanFn>
+void ScanPolygon(int width,
+  int numAttributes,
+  const ScreenVertex* const* verts,
+  int n,
+  int rowBegin,
+  int rowEnd,
+  SpanFn&& beginSpan,
+  PixelFn&& pixel)
+{
+  const int na = kAttrFirst + numAttributes;
+  float ymin = verts[0]->y, ymax = verts[0]->y;
+  for (int k = 1; k < n; ++k)
+  {
+    ymin = std::min(ymin, verts[k]->y);
+    ymax = std::max(ymax, verts[k]->y);
+  }
+  // Pixel centres at (i + 0.5, j + 0.5). Rows j with ymin <= j + 0.5 < ymax
+  // and, within a row, pixels with xl <= i + 0.5 < xr: half-open on both
+  // axes, so a pixel centre on an edge shared by two polygons belongs to
+  // exactly one of them.
+  const int j0 = std::max(rowBegin, CeilToInt(ymin - 0.5f));
+  const int j1 = std::min(rowEnd, CeilToInt(ymax - 0.5f));
+  struct Crossing
+  {
+    float x;
+    float a[kMaxAttributes];
+  };
+  Crossing cross[kMaxPolygonVertices];
+  float value[kMaxAttributes], delta[kMaxAttributes];
+  for (int j = j0; j < j1; ++j)
+  {
+    const float yc = static_cast<float>(j) + 0.5f;
+    int nc = 0;
+    for (int k = 0; k < n; ++k)
+    {
+      const ScreenVertex* p = verts[k];
+      const ScreenVertex* q = verts[(k + 1) % n];
+      // Canonical direction (lower y first, then lower x): the two polygons
+      // sharing this edge compute bit-identical crossings.
+      if (q->y < p->y || (q->y == p->y && q->x < p->x))
+      {
+        std::swap(p, q);
+      }
+      if (!(p->y <= yc && yc < q->y))
+      {
+        continue;
+      }
+      // docs/model.md eq. 2.3: I_4 = (y_1 - y_4)/(y_1 - y_2) I_2 + (y_4 - y_2)/(y_1 - y_2) I_1.
+      const float t = (yc - p->y) / (q->y - p->y);
+      Crossing& c = cross[nc++];
+      c.x = p->x + t * (q->x - p->x);
+      for (int i = 0; i < na; ++i)
+      {
+        c.a[i] = p->a[i] + t * (q->a[i] - p->a[i]);
+      }
+    }
+    // Sort crossings by x (n is small); pair them even-odd into spans.
+    for (int a = 1; a < nc; ++a)
+    {
+      for (int b = a; b > 0 && cross[b].x < cross[b - 1].x; --b)
+      {
+        std::swap(cross[b], cross[b - 1]);
+      }
+    }
+    for (int s = 0; s + 1 < nc; s += 2)
+    {
+      const Crossing& L = cross[s];
+      const Crossing& R = cross[s + 1];
+      const int i0 = std::max(0, CeilToInt(L.x - 0.5f));
+      const int i1 = std::min(width, CeilToInt(R.x - 0.5f));
+      if (i1 <= i0)
+      {
+        continue;
+      }
+      // docs/model.md eq. 2.4: I_p = (x_5 - x_p)/(x_5 - x_4) I_4 + (x_p - x_4)/(x_5 - x_4) I_5,
+      // then incrementally I_{p+1} = I_p + (I_5 - I_4)/(x_5 - x_4).
+      const float invSpan = 1.0f / (R.x - L.x);
+      const float start = (static_cast<float>(i0) + 0.5f - L.x);
+      for (int i = 0; i < na; ++i)
+      {
+        delta[i] = (R.a[i] - L.a[i]) * invSpan;
+        value[i] = L.a[i] + start * delta[i];
+      }
+      beginSpan(j, i0);
+      for (int i = i0; i < i1; ++i)
+      {
+        pixel(j, i, value);
+        for (int k = 0; k < na; ++k)
+        {
+          value[k] += delta[k];
+        }
+      }
+    }
+  }
+}
+
+/**
+ * Scan-converts one polygon part (a triangle, or a whole polygon with
+ * --polygons direct) into rows [rowBegin, rowEnd): beginSpan(j, i0) at the
+ * start of every span, pixel(j, i, attributes) at every pixel centre inside.
+ */
+template<typename PixelFn, typename SpanFn>
+void ScanConvert(int width,
+  int numAttributes,
+  const ScreenVertex* const* verts,
+  int n,
+  int rowBegin,
+  int rowEnd,
+  SpanFn&& beginSpan,
+  PixelFn&& pixel)
+{
+  if (n != 3)
+  {
+    ScanPolygon(width, numAttributes, verts, n, rowBegin, rowEnd, beginSpan, pixel);
+    return;
+  }
+  // The attribute count is fixed per frame; a compile-time count lets the
+  // span loop unroll.
+  switch (kAttrFirst + numAttributes)
+  {
+    case 2:
+      ScanTriangle<2>(width, verts, rowBegin, rowEnd, beginSpan, pixel);
+      return;
+    case 5:
+      ScanTriangle<5>(width, verts, rowBegin, rowEnd, beginSpan, pixel);
+      return;
+    case 8:
+      ScanTriangle<8>(width, verts, rowBegin, rowEnd, beginSpan, pixel);
+      return;
+    case 11:
+      ScanTriangle<11>(width, verts, rowBegin, rowEnd, beginSpan, pixel);
+      return;
+    default:
+      ScanPolygon(width, numAttributes, verts, n, rowBegin, rowEnd, beginSpan, pixel);
+  }
+}
+
+} // namespace shadinglab::cpu::raster

@@ -1,0 +1,436 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The software rasterizer: vertex stage, binning of polygons to row bands,
+// near-plane clipping (Sutherland-Hodgman), culling, triangulation and the
+// band loop, as a template over the shading stage (ShadingStages.h). It
+// never branches on the shading mode.
+//
+// Each thread owns an interleaved set of kBandRows-row bands and draws
+// every polygon, in input order, into its own rows; each pixel belongs to
+// one band and no arithmetic depends on the split, so the image is
+// bit-identical for any thread count.
+#pragma once
+
+#include "Frame.h"
+
+#include <limits>
+
+namespace shadinglab::cpu
+{
+
+using raster::CeilToInt;
+using raster::kBandRows;
+using raster::kDegenerateArea;
+using raster::kMaxAttributes;
+using raster::kMaxPolygonVertices;
+using raster::kAttrFirst;
+using raster::kAttrInvW;
+using raster::kAttrZ;
+using raster::ParallelFor;
+using raster::ScreenVertex;
+using raster::ThreadState;
+
+/// Buffers the rasterizer keeps across frames (no reallocation at a steady size).
+struct RasterBuffers
+{
+  std::vector<ScreenVertex> Screen;
+  std::vector<uint8_t> Behind;            ///< vertex outside the near plane
+  std::vector<std::vector<int64_t>> Bins; ///< [worker * Threads + thread]: polygon ids
+};
+
+template<typename StageT>
+class Rasterizer
+{
+public:
+  Rasterizer(const Frame& frame, const StageT& stage, RasterBuffers& buffers)
+    : F(frame)
+    , Stage(stage)
+    , Screen(buffers.Screen)
+    , Behind(buffers.Behind)
+    , Bins(buffers.Bins)
+  {
+  }
+
+  /// Vertices, then bins, then every thread's bands. Returns the polygons
+  /// found degenerate before any row was known.
+  int64_t Run(std::vector<ThreadState>& states)
+  {
+    this->ProjectVertices();
+    const int T = F.Threads;
+    this->Bins.resize(static_cast<size_t>(T) * T);
+    for (auto& list : this->Bins)
+    {
+      list.clear(); // capacity kept across frames
+    }
+    // Binning: each worker takes a contiguous range of polygons and lists,
+    // for every rasterizing thread, the polygons that reach its bands.
+    // Thread t then reads lists [0][t], [1][t], ... in order: input order is
+    // kept and the per-polygon reject work is split across threads.
+    std::vector<int64_t> zeroRowDegenerate(static_cast<size_t>(T), 0);
+    ParallelFor(F.MeshData->NumberOfPolygons(),
+      T,
+      [&](int64_t begin, int64_t end, int worker)
+      { zeroRowDegenerate[worker] = this->BinPolygons(begin, end, worker); });
+    ParallelFor(T,
+      T,
+      [&](int64_t b, int64_t e, int)
+      {
+        for (int64_t t = b; t < e; ++t)
+        {
+          this->RasterizeThread(static_cast<int>(t), T, states[t]);
+        }
+      });
+    int64_t degenerate = 0;
+    for (int t = 0; t < T; ++t)
+    {
+      degenerate += zeroRowDegenerate[t];
+    }
+    return degenerate;
+  }
+
+private:
+  /// The vertex stage: clip coordinates, screen positions and the stage's
+  /// attributes of every vertex (in parallel).
+  void ProjectVertices()
+  {
+    const auto& mesh = *F.MeshData;
+    const int64_t nv = mesh.NumberOfPoints();
+    this->Screen.resize(static_cast<size_t>(nv));
+    this->Behind.resize(static_cast<size_t>(nv));
+    ParallelFor(nv,
+      F.Threads,
+      [&](int64_t b, int64_t e, int)
+      {
+        float raw[kMaxAttributes] = {};
+        for (int64_t v = b; v < e; ++v)
+        {
+          const double p[3] = {
+            mesh.points[3 * v], mesh.points[3 * v + 1], mesh.points[3 * v + 2]
+          };
+          double clip[4];
+          F.ViewProjection.Apply(p, clip);
+          this->Behind[v] = clip[2] < -clip[3];
+          if (this->Behind[v])
+          {
+            continue; // such vertices are only used through clipping
+          }
+          this->Stage.Vertex(v, raw);
+          this->ProjectVertex(clip, raw, this->Screen[v]);
+        }
+      });
+  }
+
+  void ProjectVertex(const double clip[4], const float* raw, ScreenVertex& out) const
+  {
+    const double invW = 1.0 / clip[3];
+    out.x = static_cast<float>((clip[0] * invW * 0.5 + 0.5) * F.Width);
+    out.y = static_cast<float>((0.5 - clip[1] * invW * 0.5) * F.Height);
+    out.a[kAttrZ] = static_cast<float>(clip[2] * invW);
+    // Screen-space interpolation: attributes are interpolated as they are and
+    // 1/w is pinned to 1, so the per-pixel divide is a no-op.
+    const float scale = F.Perspective ? static_cast<float>(invW) : 1.0f;
+    out.a[kAttrInvW] = scale;
+    for (int k = 0; k < F.NumAttributes; ++k)
+    {
+      out.a[kAttrFirst + k] = raw[k] * scale;
+    }
+  }
+
+  void RasterizeThread(int thread, int threadCount, ThreadState& state)
+  {
+    const Vec3f bg = F.Opt.background;
+    const int bands = (F.Height + kBandRows - 1) / kBandRows;
+    for (int b = thread; b < bands; b += threadCount)
+    {
+      const size_t first = static_cast<size_t>(b) * kBandRows * F.Width;
+      const size_t last = static_cast<size_t>(std::min(F.Height, (b + 1) * kBandRows)) * F.Width;
+      for (size_t i = first; i < last; ++i)
+      {
+        F.Rgb[3 * i] = bg.x;
+        F.Rgb[3 * i + 1] = bg.y;
+        F.Rgb[3 * i + 2] = bg.z;
+      }
+      std::fill(F.Depth + first, F.Depth + last, std::numeric_limits<float>::infinity());
+      std::fill(F.Covered + first, F.Covered + last, uint8_t(0));
+    }
+    for (int w = 0; w < threadCount; ++w)
+    {
+      for (const int64_t p : this->Bins[static_cast<size_t>(w) * threadCount + thread])
+      {
+        this->DrawSourcePolygon(p, thread, threadCount, state);
+      }
+    }
+    // Count this thread's covered pixels here, in parallel, for the stats.
+    for (int b = thread; b < bands; b += threadCount)
+    {
+      const size_t first = static_cast<size_t>(b) * kBandRows * F.Width;
+      const size_t last = static_cast<size_t>(std::min(F.Height, (b + 1) * kBandRows)) * F.Width;
+      for (size_t i = first; i < last; ++i)
+      {
+        state.covered += F.Covered[i];
+      }
+    }
+  }
+
+  int64_t BinPolygons(int64_t begin, int64_t end, int worker)
+  {
+    const int T = F.Threads;
+    const auto& offsets = F.MeshData->offsets;
+    const auto& conn = F.MeshData->connectivity;
+    std::vector<int64_t>* lists = &this->Bins[static_cast<size_t>(worker) * T];
+    int64_t degenerate = 0;
+    for (int64_t p = begin; p < end; ++p)
+    {
+      const int64_t first = offsets[p];
+      const int n =
+        static_cast<int>(std::min<int64_t>(offsets[p + 1] - first, kMaxPolygonVertices - 1));
+      if (n < 3)
+      {
+        continue;
+      }
+      bool anyBehind = false;
+      float ymin = std::numeric_limits<float>::infinity(), ymax = -ymin;
+      for (int k = 0; k < n; ++k)
+      {
+        const int64_t v = conn[first + k];
+        anyBehind |= this->Behind[v] != 0;
+        ymin = std::min(ymin, this->Screen[v].y);
+        ymax = std::max(ymax, this->Screen[v].y);
+      }
+      if (anyBehind)
+      {
+        // Rows are known only after clipping (rare): every thread looks.
+        for (int t = 0; t < T; ++t)
+        {
+          lists[t].push_back(p);
+        }
+        continue;
+      }
+      const int j0 = std::max(0, CeilToInt(ymin - 0.5f));
+      const int j1 = std::min(F.Height, CeilToInt(ymax - 0.5f));
+      if (j1 <= j0)
+      {
+        // No pixel row: count it if it is degenerate (zero screen area).
+        double area = 0;
+        for (int k = 0; k < n; ++k)
+        {
+          const ScreenVertex& a = this->Screen[conn[first + k]];
+          const ScreenVertex& b = this->Screen[conn[first + (k + 1) % n]];
+          area += static_cast<double>(a.x) * b.y - static_cast<double>(b.x) * a.y;
+        }
+        degenerate += !(std::abs(area) * 0.5 >= kDegenerateArea);
+        continue;
+      }
+      const int b0 = j0 / kBandRows, b1 = (j1 - 1) / kBandRows;
+      if (b1 - b0 + 1 >= T)
+      {
+        for (int t = 0; t < T; ++t)
+        {
+          lists[t].push_back(p);
+        }
+      }
+      else
+      {
+        for (int b = b0; b <= b1; ++b)
+        {
+          lists[b % T].push_back(p);
+        }
+      }
+    }
+    return degenerate;
+  }
+
+  void DrawSourcePolygon(int64_t p, int thread, int threadCount, ThreadState& state)
+  {
+    const auto& offsets = F.MeshData->offsets;
+    const auto& conn = F.MeshData->connectivity;
+    const int64_t first = offsets[p];
+    const int n =
+      static_cast<int>(std::min<int64_t>(offsets[p + 1] - first, kMaxPolygonVertices - 1));
+    if (n < 3)
+    {
+      return;
+    }
+    // Counters are kept by the thread that owns the polygon's first band (or
+    // thread 0 for polygons rejected before rows are known), so they do not
+    // depend on the thread count.
+    const ScreenVertex* verts[kMaxPolygonVertices];
+    int64_t ids[kMaxPolygonVertices];
+    bool anyBehind = false;
+    for (int k = 0; k < n; ++k)
+    {
+      ids[k] = conn[first + k];
+      anyBehind |= this->Behind[ids[k]] != 0;
+    }
+    int count = 0;
+    bool wasClipped = false;
+    if (!anyBehind)
+    {
+      for (int k = 0; k < n; ++k)
+      {
+        verts[count++] = &this->Screen[ids[k]];
+      }
+    }
+    else
+    {
+      // Sutherland-Hodgman against the near plane z + w >= 0 in clip space,
+      // attributes interpolated linearly there (exact before the divide).
+      // Each crossing is computed from its inside end towards its outside
+      // end, so two polygons sharing an edge get bit-identical vertices.
+      wasClipped = true;
+      struct ClipVertex
+      {
+        double c[4];
+        float raw[kMaxAttributes];
+      };
+      ClipVertex in[kMaxPolygonVertices];
+      for (int k = 0; k < n; ++k)
+      {
+        const int64_t v = ids[k];
+        const double pt[3] = {
+          F.MeshData->points[3 * v], F.MeshData->points[3 * v + 1], F.MeshData->points[3 * v + 2]
+        };
+        F.ViewProjection.Apply(pt, in[k].c);
+        this->Stage.Vertex(v, in[k].raw);
+      }
+      state.clipped.clear();
+      int64_t clippedIds[kMaxPolygonVertices];
+      for (int k = 0; k < n; ++k)
+      {
+        const ClipVertex& a = in[k];
+        const ClipVertex& b = in[(k + 1) % n];
+        const double da = a.c[2] + a.c[3], db = b.c[2] + b.c[3];
+        const bool aIn = da >= 0, bIn = db >= 0;
+        auto emit = [&](const ClipVertex& cv, int64_t id)
+        {
+          ScreenVertex sv;
+          this->ProjectVertex(cv.c, cv.raw, sv);
+          clippedIds[state.clipped.size()] = id;
+          state.clipped.push_back(sv);
+        };
+        if (aIn)
+        {
+          emit(a, ids[k]);
+        }
+        if (aIn != bIn)
+        {
+          const ClipVertex& inside = aIn ? a : b;
+          const ClipVertex& outside = aIn ? b : a;
+          const double di = aIn ? da : db, dout = aIn ? db : da;
+          const double t = di / (di - dout);
+          ClipVertex x;
+          for (int i = 0; i < 4; ++i)
+          {
+            x.c[i] = inside.c[i] + t * (outside.c[i] - inside.c[i]);
+          }
+          // Land exactly on the plane so 1/w stays finite.
+          x.c[2] = -x.c[3];
+          for (int i = 0; i < F.NumAttributes; ++i)
+          {
+            x.raw[i] = static_cast<float>(inside.raw[i] + t * (outside.raw[i] - inside.raw[i]));
+          }
+          emit(x, aIn ? ids[k] : ids[(k + 1) % n]);
+        }
+      }
+      count = static_cast<int>(state.clipped.size());
+      if (count < 3)
+      {
+        return;
+      }
+      for (int k = 0; k < count; ++k)
+      {
+        verts[k] = &state.clipped[k];
+        ids[k] = clippedIds[k];
+      }
+    }
+    // Trivial reject outside the viewport or beyond the far plane, signed
+    // area (y down: front faces have negative area) and row range.
+    float xmin = std::numeric_limits<float>::infinity(), xmax = -xmin, ymin = xmin, ymax = -xmin;
+    float zmin = xmin;
+    double area = 0;
+    for (int k = 0; k < count; ++k)
+    {
+      const ScreenVertex& a = *verts[k];
+      const ScreenVertex& b = *verts[(k + 1) % count];
+      area += static_cast<double>(a.x) * b.y - static_cast<double>(b.x) * a.y;
+      xmin = std::min(xmin, a.x);
+      xmax = std::max(xmax, a.x);
+      ymin = std::min(ymin, a.y);
+      ymax = std::max(ymax, a.y);
+      zmin = std::min(zmin, a.a[kAttrZ]);
+    }
+    const int j0 = std::max(0, CeilToInt(ymin - 0.5f));
+    const int j1 = std::min(F.Height, CeilToInt(ymax - 0.5f));
+    if (xmax < 0 || xmin > F.Width || j1 <= j0 || zmin > 1.0f)
+    {
+      return;
+    }
+    const bool owner = (j0 / kBandRows) % threadCount == thread;
+    if (!(std::abs(area) * 0.5 >= kDegenerateArea) || !std::isfinite(area))
+    {
+      state.degenerate += owner;
+      return;
+    }
+    const bool back = area > 0;
+    if (back && F.Opt.cullBackFaces)
+    {
+      return;
+    }
+    state.clippedPolygons += owner && wasClipped;
+    state.rasterized += owner;
+
+    // The stage's per-polygon state (flat: the lazy colour; Gouraud back
+    // faces: vertices relit with flipped normals into `relit`).
+    ScreenVertex relit[kMaxPolygonVertices];
+    auto polygon = this->Stage.BeginPolygon(p, back, verts, ids, count, relit);
+    // Scan-convert each part into the bands of this thread.
+    auto drawPart = [&](const ScreenVertex* const* partVerts, const int64_t* partIds, int m)
+    {
+      float pymin = partVerts[0]->y, pymax = pymin;
+      for (int k = 1; k < m; ++k)
+      {
+        pymin = std::min(pymin, partVerts[k]->y);
+        pymax = std::max(pymax, partVerts[k]->y);
+      }
+      const int r0 = std::max(0, CeilToInt(pymin - 0.5f));
+      const int r1 = std::min(F.Height, CeilToInt(pymax - 0.5f));
+      if (r1 <= r0)
+      {
+        return;
+      }
+      const int bFirst = r0 / kBandRows, bLast = (r1 - 1) / kBandRows;
+      // First band of this thread at or after bFirst.
+      int b = bFirst + ((thread - bFirst % threadCount) + threadCount) % threadCount;
+      for (; b <= bLast; b += threadCount)
+      {
+        this->Stage.DrawPart(partVerts,
+          partIds,
+          m,
+          polygon,
+          std::max(r0, b * kBandRows),
+          std::min(r1, (b + 1) * kBandRows),
+          state);
+      }
+    };
+    if (this->Stage.Triangulates() && count > 3)
+    {
+      for (int k = 1; k + 1 < count; ++k)
+      {
+        const ScreenVertex* tri[3] = { verts[0], verts[k], verts[k + 1] };
+        const int64_t triIds[3] = { ids[0], ids[k], ids[k + 1] };
+        drawPart(tri, triIds, 3);
+      }
+    }
+    else
+    {
+      drawPart(verts, ids, count);
+    }
+  }
+
+  const Frame& F;
+  const StageT& Stage;
+  std::vector<ScreenVertex>& Screen;
+  std::vector<uint8_t>& Behind;
+  std::vector<std::vector<int64_t>>& Bins;
+};
+
+} // namespace shadinglab::cpu

@@ -367,6 +367,31 @@ struct FastPhongStage : StageBase
 
   void DrawPart(const ScreenVertex* const* verts,
     const int64_t* meshIds,
+    int n,
+    Polygon& poly,
+    int rowBegin,
+    int rowEnd,
+    ThreadState& state) const
+  {
+    // The model is fixed per frame: one pixel loop per model, so the
+    // compiler folds BrdfFromCosines' choice and the unused quadratics.
+    switch (F.Mat.model)
+    {
+      case ReflectanceModel::Phong:
+        return this->Draw<ReflectanceModel::Phong>(
+          verts, meshIds, n, poly, rowBegin, rowEnd, state);
+      case ReflectanceModel::BlinnPhong:
+        return this->Draw<ReflectanceModel::BlinnPhong>(
+          verts, meshIds, n, poly, rowBegin, rowEnd, state);
+      default:
+        return this->Draw<ReflectanceModel::Lambert>(
+          verts, meshIds, n, poly, rowBegin, rowEnd, state);
+    }
+  }
+
+  template<ReflectanceModel Model>
+  void Draw(const ScreenVertex* const* verts,
+    const int64_t* meshIds,
     int,
     Polygon& poly,
     int rowBegin,
@@ -396,14 +421,14 @@ struct FastPhongStage : StageBase
     const int nl = F.Lights.lightCount;
     // The quadratics each model needs: N.L always; N.H for Blinn-Phong; N.V
     // for Phong, whose R.V = 2 (N.L)(N.V) - L.V (docs/model.md eq. 2.8).
-    const bool specular = F.Mat.ks > 0.0f &&
-      (F.Mat.model == ReflectanceModel::BlinnPhong || F.Mat.model == ReflectanceModel::Phong);
-    const bool halfVector = specular && F.Mat.model == ReflectanceModel::BlinnPhong;
-    const bool viewCosine = specular && F.Mat.model == ReflectanceModel::Phong;
+    const bool specular = F.Mat.ks > 0.0f && Model != ReflectanceModel::Lambert;
+    const bool halfVector = specular && Model == ReflectanceModel::BlinnPhong;
+    const bool viewCosine = specular && Model == ReflectanceModel::Phong;
     FastPhongQuadratic<float> diffuseQ[kMaxLights], specularQ[kMaxLights], viewQ;
     Vec3f irradiance[kMaxLights];
     bool active[kMaxLights];
     bool ready = false;
+    bool perPixelRule = true;
     auto setup = [&]()
     {
       ready = true;
@@ -419,6 +444,15 @@ struct FastPhongStage : StageBase
       // per-pixel rule as the GPU (FastPhongTriangle::WithinSpread).
       N0 = F.Opt.expansion == ExpansionPoint::Vertex ? tri.Normal(tri.vertexX, tri.vertexY)
                                                      : tri.Normal(tri.centroidX, tri.centroidY);
+      // Inside a cone of half-angle under 90 degrees about N0, every convex
+      // combination of the vertex normals (every interpolated normal) stays
+      // in the cone: when all three vertices are within the limit, so is
+      // every pixel, and the per-pixel test is skipped (same result).
+      perPixelRule = !(F.FastPhongMinCos > 0.0f);
+      for (int k = 0; k < 3 && !perPixelRule; ++k)
+      {
+        perPixelRule = !tri.WithinSpread(N0, sx[k], sy[k], F.FastPhongMinCos);
+      }
       const Vec3f unit2 = NormalizeOr(normals[2], F.ToEye);
       if (viewCosine)
       {
@@ -447,6 +481,10 @@ struct FastPhongStage : StageBase
     const Vec3f ambient = F.Mat.ambient * F.Lights.ambientIntensity;
     // The cosine power by table, as Bishop & Weimer (their section 4).
     const auto tablePower = [this](float x, float) { return F.PowerTable.Lookup(x); };
+    // A local copy: the frame buffer writes below cannot alias it, so the
+    // compiler keeps its terms in registers across pixels.
+    Material<float> material = F.Mat;
+    material.model = Model;
     int64_t shaded = 0, exactPixels = 0;
     const int W = F.Width;
     float* rgb = F.Rgb;
@@ -482,9 +520,11 @@ struct FastPhongStage : StageBase
       {
         // Forward differences advance for every pixel of the span, drawn or not.
         float NoL[kMaxLights], NoH[kMaxLights], NoV = 0.0f;
-        const float xc = static_cast<float>(i) + 0.5f, yc = static_cast<float>(j) + 0.5f;
-        if (!tri.WithinSpread(N0, xc, yc, F.FastPhongMinCos))
+        if (perPixelRule &&
+          !tri.WithinSpread(N0, static_cast<float>(i) + 0.5f, static_cast<float>(j) + 0.5f,
+            F.FastPhongMinCos))
         {
+          const float xc = static_cast<float>(i) + 0.5f, yc = static_cast<float>(j) + 0.5f;
           ++exactPixels;
           // The forward differences still advance by one pixel.
           if (viewCosine)
@@ -539,7 +579,7 @@ struct FastPhongStage : StageBase
             continue;
           }
           const float RoV = 2.0f * cl * NoV - LoV[l];
-          I += irradiance[l] * BrdfFromCosines(F.Mat, color, NoH[l], RoV, tablePower) * cl;
+          I += irradiance[l] * BrdfFromCosines(material, color, NoH[l], RoV, tablePower) * cl;
         }
         const size_t pix = static_cast<size_t>(j) * W + i;
         covered[pix] = 1;

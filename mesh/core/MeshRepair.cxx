@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "MeshRepair.h"
 
+#include "Geometry.h"
+
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 
 #include <algorithm>
@@ -69,17 +71,10 @@ double Diagonal(const double* points, int64_t n, double lo[3])
 
 std::array<double, 3> Newell(const OwnedMesh& m, int64_t p)
 {
-  std::array<double, 3> n{ 0, 0, 0 };
   const int64_t b = m.offsets[p], e = m.offsets[p + 1];
-  for (int64_t k = b; k < e; ++k)
-  {
-    const double* a = &m.points[3 * m.connectivity[k]];
-    const double* c = &m.points[3 * m.connectivity[k + 1 < e ? k + 1 : b]];
-    n[0] += (a[1] - c[1]) * (a[2] + c[2]);
-    n[1] += (a[2] - c[2]) * (a[0] + c[0]);
-    n[2] += (a[0] - c[0]) * (a[1] + c[1]);
-  }
-  return n;
+  const Vec3<double> n = NewellAreaVector<double>(
+    e - b, [&](int64_t k) { return PointOf(m.points.data(), m.connectivity[b + k]); });
+  return { n.x, n.y, n.z };
 }
 
 } // namespace

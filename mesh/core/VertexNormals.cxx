@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "VertexNormals.h"
 
+#include "Geometry.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -35,11 +37,10 @@ inline double DotV(const V3& a, const V3& b)
   return a.x * b.x + a.y * b.y + a.z * b.z;
 }
 
-/// Newell normal of polygon p: twice its area times the unit normal.
+/// Area vector of polygon p: twice its area times the unit normal (Geometry.h).
 V3 AreaVector(const PolygonMesh& m, int64_t p)
 {
   const int64_t b = m.offsets[p], e = m.offsets[p + 1];
-  V3 n{ 0, 0, 0 };
   if (e - b == 3)
   {
     const double* p0 = m.points + 3 * m.connectivity[b];
@@ -47,15 +48,9 @@ V3 AreaVector(const PolygonMesh& m, int64_t p)
     const double* p2 = m.points + 3 * m.connectivity[b + 2];
     return CrossV(Sub(p1, p0), Sub(p2, p0));
   }
-  for (int64_t k = b; k < e; ++k)
-  {
-    const double* a = m.points + 3 * m.connectivity[k];
-    const double* c = m.points + 3 * m.connectivity[k + 1 < e ? k + 1 : b];
-    n.x += (a[1] - c[1]) * (a[2] + c[2]);
-    n.y += (a[2] - c[2]) * (a[0] + c[0]);
-    n.z += (a[0] - c[0]) * (a[1] + c[1]);
-  }
-  return n;
+  const Vec3<double> n = NewellAreaVector<double>(
+    e - b, [&](int64_t k) { return PointOf(m.points, m.connectivity[b + k]); });
+  return { n.x, n.y, n.z };
 }
 
 /// The contribution of polygon p's corner k (vertex connectivity[b + k]).

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkOpenSubdivRefine.h"
 
+#include "Geometry.h"
 #include "MeshArrays.h"
 
 #include <opensubdiv/far/primvarRefiner.h>
@@ -124,18 +125,15 @@ int vtkOpenSubdivRefine::RequestData(
     std::vector<std::array<double, 3>> normals(static_cast<size_t>(flat.numberOfPolygons));
     for (int64_t f = 0; f < flat.numberOfPolygons; ++f)
     {
-      std::array<double, 3> n{ 0, 0, 0 };
       const int64_t b = flat.offsets[f], e = flat.offsets[f + 1];
       for (int64_t k = b; k < e; ++k)
       {
         const int64_t u = flat.connectivity[k], v = flat.connectivity[k + 1 < e ? k + 1 : b];
-        const double* a = flat.points + 3 * u;
-        const double* c = flat.points + 3 * v;
-        n[0] += (a[1] - c[1]) * (a[2] + c[2]);
-        n[1] += (a[2] - c[2]) * (a[0] + c[0]);
-        n[2] += (a[0] - c[0]) * (a[1] + c[1]);
         edgeFaces[{ std::min(u, v), std::max(u, v) }].push_back(f);
       }
+      const shadinglab::Vec3d area = shadinglab::mesh::NewellAreaVector<double>(
+        e - b, [&](int64_t k) { return shadinglab::mesh::PointOf(flat.points, flat.connectivity[b + k]); });
+      std::array<double, 3> n{ area.x, area.y, area.z };
       const double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
       for (double& x : n)
       {

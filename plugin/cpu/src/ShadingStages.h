@@ -12,6 +12,7 @@
 #pragma once
 
 #include "Frame.h"
+#include "Geometry.h"
 
 namespace shadinglab::cpu
 {
@@ -116,12 +117,7 @@ struct FlatStage : StageBase
     const auto& conn = F.MeshData->connectivity;
     const int64_t first = F.MeshData->offsets[p];
     const int n = static_cast<int>(F.MeshData->offsets[p + 1] - first);
-    Vec3f N;
-    for (int k = 0; k < n; ++k)
-    {
-      const Vec3f a = F.PointOf(conn[first + k]), b = F.PointOf(conn[first + (k + 1) % n]);
-      N += Vec3f((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
-    }
+    Vec3f N = mesh::NewellAreaVector<float>(n, [&](int64_t k) { return F.PointOf(conn[first + k]); });
     if (!F.MeshData->faceNormals.empty())
     {
       const float* fn = &F.MeshData->faceNormals[3 * p];

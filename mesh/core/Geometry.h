@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The small geometry kernel every mesh algorithm shares (normals, repair,
+// subdivision, the renderers' flat shading): the polygon area vector and the
+// vector type. Header-only, no VTK; the vector is the model's Vec3, the
+// project's one vector type.
+#pragma once
+
+#include "shadinglab/model/Vec3.h"
+
+#include <cstdint>
+
+namespace shadinglab::mesh
+{
+
+/**
+ * Newell's method (Newell 1972, as given by Sutherland, Sproull & Schumacker
+ * 1974): the area vector of a polygon of n vertices, twice its area times
+ * its unit normal for a planar polygon and a least-squares normal otherwise.
+ * `point(k)` returns vertex k as a Vec3<T>; the sum runs over the edges
+ * (k, k + 1 mod n) in order, so results are reproducible bit for bit.
+ */
+template <typename T, typename PointAt>
+Vec3<T> NewellAreaVector(int64_t n, PointAt&& point)
+{
+  Vec3<T> N(T(0), T(0), T(0));
+  for (int64_t k = 0; k < n; ++k)
+  {
+    const Vec3<T> a = point(k), b = point(k + 1 < n ? k + 1 : 0);
+    N += Vec3<T>((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
+  }
+  return N;
+}
+
+/// The area vector of a triangle: (p1 - p0) x (p2 - p0), twice its area
+/// times its unit normal (equal to NewellAreaVector up to rounding).
+template <typename T>
+Vec3<T> TriangleAreaVector(const Vec3<T>& p0, const Vec3<T>& p1, const Vec3<T>& p2)
+{
+  return Cross(p1 - p0, p2 - p0);
+}
+
+/// Vertex i of a flat xyz array as a Vec3.
+template <typename T>
+Vec3<T> PointOf(const T* points, int64_t i)
+{
+  return Vec3<T>(points[3 * i], points[3 * i + 1], points[3 * i + 2]);
+}
+
+} // namespace shadinglab::mesh

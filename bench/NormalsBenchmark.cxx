@@ -62,8 +62,7 @@ void BM_OursCore(benchmark::State& state)
   vtkPolyData* input = Mesh(static_cast<int>(state.range(0)));
   shadinglab::mesh::FlatPolygons flat;
   shadinglab::mesh::FlatPolygonsFromPolyData(input, flat);
-  shadinglab::mesh::PolygonMesh mesh{ flat.points, flat.numberOfPoints, flat.offsets,
-    flat.connectivity, flat.numberOfPolygons };
+  const shadinglab::mesh::MeshView& mesh = flat;
   std::vector<double> normals;
   const auto w = static_cast<shadinglab::mesh::NormalWeighting>(state.range(1));
   for (auto _ : state)

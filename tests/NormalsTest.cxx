@@ -261,7 +261,7 @@ TEST(NormalsTest, AngleAndMaxTrianglePathsMatchTheGeneralCornerFormula)
     conn.insert(conn.end(), { t, t + 1, t + 2 });
     offsets.push_back(static_cast<int64_t>(conn.size()));
   }
-  shadinglab::mesh::PolygonMesh mesh{ pts.data(), 100, offsets.data(), conn.data(),
+  shadinglab::mesh::MeshView mesh{ pts.data(), 100, offsets.data(), conn.data(),
     static_cast<int64_t>(offsets.size() - 1) };
   for (auto w : { shadinglab::mesh::NormalWeighting::Angle, shadinglab::mesh::NormalWeighting::Max })
   {

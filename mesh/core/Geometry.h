@@ -12,6 +12,17 @@
 namespace shadinglab::mesh
 {
 
+/// The one view of a polygon mesh the algorithms in mesh/ take: borrowed
+/// flat arrays, polygon p using connectivity[offsets[p] .. offsets[p+1]).
+struct MeshView
+{
+  const double* points = nullptr; ///< 3 per point
+  int64_t numberOfPoints = 0;
+  const int64_t* offsets = nullptr; ///< numberOfPolygons + 1 entries
+  const int64_t* connectivity = nullptr;
+  int64_t numberOfPolygons = 0;
+};
+
 /**
  * Newell's method (Newell 1972, as given by Sutherland, Sproull & Schumacker
  * 1974): the area vector of a polygon of n vertices, twice its area times

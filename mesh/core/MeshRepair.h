@@ -3,6 +3,8 @@
 // orientation, non-manifold configurations (via OpenMesh), T-junctions.
 #pragma once
 
+#include "Geometry.h"
+
 #include <cstdint>
 #include <vector>
 
@@ -21,6 +23,11 @@ struct OwnedMesh
   std::vector<int64_t> cellIds;
   int64_t NumberOfPoints() const { return static_cast<int64_t>(points.size() / 3); }
   int64_t NumberOfPolygons() const { return static_cast<int64_t>(offsets.size()) - 1; }
+  MeshView View() const
+  {
+    return { points.data(), NumberOfPoints(), offsets.data(), connectivity.data(),
+      NumberOfPolygons() };
+  }
 };
 
 struct RepairOptions

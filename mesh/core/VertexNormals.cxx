@@ -38,7 +38,7 @@ inline double DotV(const V3& a, const V3& b)
 }
 
 /// Area vector of polygon p: twice its area times the unit normal (Geometry.h).
-V3 AreaVector(const PolygonMesh& m, int64_t p)
+V3 AreaVector(const MeshView& m, int64_t p)
 {
   const int64_t b = m.offsets[p], e = m.offsets[p + 1];
   if (e - b == 3)
@@ -54,7 +54,7 @@ V3 AreaVector(const PolygonMesh& m, int64_t p)
 }
 
 /// The contribution of polygon p's corner k (vertex connectivity[b + k]).
-inline V3 CornerContribution(const PolygonMesh& m, int64_t b, int64_t n, int64_t k,
+inline V3 CornerContribution(const MeshView& m, int64_t b, int64_t n, int64_t k,
   const V3& areaVector, double areaLength, NormalWeighting w)
 {
   switch (w)
@@ -119,7 +119,7 @@ void Normalize(double* n)
 } // namespace
 
 void ComputeVertexNormalsNoSplit(
-  const PolygonMesh& m, NormalWeighting weighting, std::vector<double>& normals)
+  const MeshView& m, NormalWeighting weighting, std::vector<double>& normals)
 {
   normals.assign(static_cast<size_t>(3 * m.numberOfPoints), 0.0);
   double* out = normals.data();
@@ -203,7 +203,7 @@ void ComputeVertexNormalsNoSplit(
   }
 }
 
-NormalResult ComputeVertexNormals(const PolygonMesh& m, const NormalOptions& opt)
+NormalResult ComputeVertexNormals(const MeshView& m, const NormalOptions& opt)
 {
   NormalResult r;
   const int64_t nv = m.numberOfPoints, np = m.numberOfPolygons;

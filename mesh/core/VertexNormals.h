@@ -5,6 +5,8 @@
 // needed for this, and none is built (see README "Where OpenMesh is used").
 #pragma once
 
+#include "Geometry.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -19,15 +21,6 @@ enum class NormalWeighting
   Area,    ///< sum of face area vectors (area-weighted)
   Angle,   ///< corner angle times unit face normal (Thurmer & Wuthrich 1998)
   Max      ///< corner cross product / (|e1|^2 |e2|^2) (Max 1999), exact on spheres
-};
-
-struct PolygonMesh
-{
-  const double* points = nullptr; ///< 3 per point
-  int64_t numberOfPoints = 0;
-  const int64_t* offsets = nullptr; ///< numberOfPolygons + 1 entries
-  const int64_t* connectivity = nullptr;
-  int64_t numberOfPolygons = 0;
 };
 
 struct NormalOptions
@@ -80,10 +73,10 @@ inline double AcosAbramowitzStegun(double x)
 
 /// Computes the normals. Zero-area polygons contribute nothing; a point with
 /// no usable face gets (0, 0, 1) rather than NaN.
-NormalResult ComputeVertexNormals(const PolygonMesh& mesh, const NormalOptions& options);
+NormalResult ComputeVertexNormals(const MeshView& mesh, const NormalOptions& options);
 
 /// The crease-free normals only (one per input point), the fast path.
 void ComputeVertexNormalsNoSplit(
-  const PolygonMesh& mesh, NormalWeighting weighting, std::vector<double>& normals);
+  const MeshView& mesh, NormalWeighting weighting, std::vector<double>& normals);
 
 } // namespace shadinglab::mesh

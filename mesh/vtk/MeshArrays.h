@@ -4,6 +4,8 @@
 // cell array storage).
 #pragma once
 
+#include "Geometry.h"
+
 #include <cstdint>
 #include <vector>
 
@@ -14,14 +16,9 @@ class vtkPolyData;
 namespace shadinglab::mesh
 {
 
-struct FlatPolygons
+/// A MeshView of a vtkPolyData, viewing its arrays in place where it can.
+struct FlatPolygons : MeshView
 {
-  const double* points = nullptr;
-  const int64_t* offsets = nullptr;
-  const int64_t* connectivity = nullptr;
-  int64_t numberOfPoints = 0;
-  int64_t numberOfPolygons = 0;
-
   // Storage, used only when the input could not be viewed in place.
   std::vector<double> pointStorage;
   std::vector<int64_t> offsetStorage;

@@ -38,7 +38,7 @@ int vtkWeightedPolyDataNormals::RequestData(
   namespace slm = shadinglab::mesh;
   slm::FlatPolygons flat;
   slm::FlatPolygonsFromPolyData(source, flat);
-  slm::PolygonMesh mesh;
+  slm::MeshView mesh;
   mesh.points = flat.points;
   mesh.numberOfPoints = flat.numberOfPoints;
   mesh.offsets = flat.offsets;

@@ -164,8 +164,7 @@ void vtkShadingLabPolyDataMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* a
         // Area-weighted vertex normals, the CPU renderer's (mesh/core).
         sl::mesh::FlatPolygons polygons;
         sl::mesh::FlatPolygonsFromPolyData(input, polygons);
-        const sl::mesh::PolygonMesh mesh{ polygons.points, polygons.numberOfPoints,
-          polygons.offsets, polygons.connectivity, polygons.numberOfPolygons };
+        const sl::mesh::MeshView& mesh = polygons;
         std::vector<double> normals;
         sl::mesh::ComputeVertexNormalsNoSplit(mesh, sl::mesh::NormalWeighting::Area, normals);
         vtkNew<vtkFloatArray> array;

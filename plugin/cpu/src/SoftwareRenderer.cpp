@@ -241,7 +241,7 @@ std::vector<float> AreaWeightedNormals(const Mesh& mesh)
 {
   // The project's one implementation (mesh/core), on double coordinates.
   const std::vector<double> points(mesh.points.begin(), mesh.points.end());
-  const shadinglab::mesh::PolygonMesh polygons{ points.data(),
+  const shadinglab::mesh::MeshView polygons{ points.data(),
     mesh.NumberOfPoints(),
     mesh.offsets.data(),
     mesh.connectivity.data(),

@@ -18,6 +18,7 @@ vtkPolyDataMapper* vtkShadingLabCompositePolyDataMapper::MakeAMapper()
   auto* mapper = vtkShadingLabPolyDataMapper::New();
   mapper->SetShadingMode(this->ShadingMode);
   mapper->SetPerspectiveCorrect(this->PerspectiveCorrect);
+  mapper->SetFastPhongMaxSpread(this->FastPhongMaxSpread);
   mapper->SetMaterial(this->Material);
   this->BlockMappers.emplace_back(mapper);
   return mapper;
@@ -32,6 +33,7 @@ void vtkShadingLabCompositePolyDataMapper::Render(vtkRenderer* ren, vtkActor* ac
     {
       sm->SetShadingMode(this->ShadingMode);
       sm->SetPerspectiveCorrect(this->PerspectiveCorrect);
+      sm->SetFastPhongMaxSpread(this->FastPhongMaxSpread);
       sm->SetMaterial(this->Material);
     }
   }

@@ -35,6 +35,9 @@ public:
   vtkGetMacro(ShadingMode, int);
   vtkSetMacro(PerspectiveCorrect, bool);
   vtkGetMacro(PerspectiveCorrect, bool);
+  /// vtkShadingLabPolyDataMapper::SetFastPhongMaxSpread (default 30 degrees).
+  vtkSetClampMacro(FastPhongMaxSpread, double, 0.0, 180.0);
+  vtkGetMacro(FastPhongMaxSpread, double);
   void SetMaterial(const shadinglab::Material<double>& material);
 
   /// Sum of the block mappers' shader builds.
@@ -48,6 +51,7 @@ protected:
 
   int ShadingMode = vtkShadingLabPolyDataMapper::PHONG;
   bool PerspectiveCorrect = true;
+  double FastPhongMaxSpread = 30.0;
   shadinglab::Material<double> Material;
   /// The block mappers made so far (the superclass owns them; weak here).
   std::vector<vtkWeakPointer<vtkShadingLabPolyDataMapper>> BlockMappers;

@@ -224,6 +224,14 @@ void vtkShadingLabPolyDataMapper::ReplaceShaderValues(
 
   this->Superclass::ReplaceShaderValues(shaders, ren, act);
 
+  // Gouraud: colours per vertex (point scalars mapped to colours, VTK's
+  // scalarColor attribute) are shaded at the vertex; otherwise rho is
+  // applied per fragment (sl_mapper_vs_impl.glsl).
+  const bool vertexColors =
+    std::string(vs->GetSource()).find("vertexColorVSOutput = scalarColor") != std::string::npos;
+  this->Substitute(vs, "//SL::VertexRho::Dec",
+    vertexColors ? "#define SL_VERTEX_RHO scalarColor.rgb" : "// no per-vertex colours");
+
   if (!this->PerspectiveCorrect)
   {
     // Screen-space interpolation of VTK's own varyings (the lecture's

@@ -13,7 +13,8 @@
     slColor = Shade(slRho, slP, normalize(normalVCVSOutput), slV);
   }
 #elif SL_MODE == SL_MODE_GOURAUD
-  slColor = gl_FrontFacing ? slGouraudFrontVSOut : slGouraudBackVSOut;
+  slColor = gl_FrontFacing ? slGouraudFrontVSOut + slRho * slGouraudFrontRhoVSOut
+                           : slGouraudBackVSOut + slRho * slGouraudBackRhoVSOut;
 #elif SL_MODE == SL_MODE_FAST_PHONG
   {
     // Bishop & Weimer 1986 about the provoking vertex (L, H fixed there).

@@ -1,0 +1,260 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// One layer of ghost faces across partition boundaries, for filters whose
+// result at a vertex depends on all faces around it (vertex normals).
+//
+// VTK 9.2's vtkGhostCellsGenerator produced no ghost faces for the
+// vtkPolyData pieces that RedistributeDataSet + Extract Surface hand us
+// (tried inline and as an upstream proxy), so this is done directly: every
+// rank sends the faces touching its partition boundary (edges used by one
+// local face) to every other rank (MPI all-gather of coordinates), and each
+// rank appends the received faces that share a vertex with its own
+// boundary, matched by exact coordinates, after its own polygons (their new
+// points after its own points, their attributes zero). DropBorrowedFaces
+// removes them again after the filter ran (vtkRemoveGhosts zeroed the
+// point data of polydata in VTK 9.2). Collective: every rank must call it.
+#pragma once
+
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDataSetAttributes.h>
+#include <vtkIdList.h>
+#include <vtkMultiProcessController.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+#include <vtkDataArray.h>
+#include <vtkFieldData.h>
+
+#include <array>
+#include <cstdint>
+#include <map>
+#include <vector>
+
+namespace shadinglab::paraview
+{
+
+using Coordinates = std::array<double, 3>;
+
+/// A copy of `input` with the neighbouring ranks' faces that touch its
+/// partition boundary appended as ghosts; `added` is their count.
+inline vtkSmartPointer<vtkPolyData> WithNeighbourFaces(
+  vtkPolyData* input, vtkMultiProcessController* controller, vtkIdType& added)
+{
+  // Every rank takes part in the exchange below, even with nothing to send.
+  added = 0;
+  vtkCellArray* polys = input->GetPolys();
+  // Local boundary: edges used by exactly one local face.
+  std::map<std::pair<vtkIdType, vtkIdType>, int> edgeUse;
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < polys->GetNumberOfCells(); ++c)
+  {
+    polys->GetCellAtId(c, ids);
+    const vtkIdType n = ids->GetNumberOfIds();
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      const vtkIdType a = ids->GetId(k), b = ids->GetId((k + 1) % n);
+      ++edgeUse[{ std::min(a, b), std::max(a, b) }];
+    }
+  }
+  std::vector<char> onBoundary(static_cast<size_t>(input->GetNumberOfPoints()), 0);
+  for (const auto& [edge, uses] : edgeUse)
+  {
+    if (uses == 1)
+    {
+      onBoundary[edge.first] = onBoundary[edge.second] = 1;
+    }
+  }
+  std::map<Coordinates, vtkIdType> boundaryIds;
+  for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
+  {
+    if (onBoundary[i])
+    {
+      Coordinates p;
+      input->GetPoint(i, p.data());
+      boundaryIds.emplace(p, i);
+    }
+  }
+  // Send the faces touching the boundary: [n, x0, y0, z0, ...] each.
+  std::vector<double> send;
+  for (vtkIdType c = 0; c < polys->GetNumberOfCells(); ++c)
+  {
+    polys->GetCellAtId(c, ids);
+    bool touches = false;
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds() && !touches; ++k)
+    {
+      touches = onBoundary[ids->GetId(k)] != 0;
+    }
+    if (!touches)
+    {
+      continue;
+    }
+    send.push_back(static_cast<double>(ids->GetNumberOfIds()));
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+    {
+      double p[3];
+      input->GetPoint(ids->GetId(k), p);
+      send.insert(send.end(), p, p + 3);
+    }
+  }
+  const int ranks = controller->GetNumberOfProcesses();
+  const int me = controller->GetLocalProcessId();
+  vtkIdType length = static_cast<vtkIdType>(send.size());
+  std::vector<vtkIdType> lengths(static_cast<size_t>(ranks)), offsets(static_cast<size_t>(ranks));
+  controller->AllGather(&length, lengths.data(), 1);
+  vtkIdType total = 0;
+  for (int r = 0; r < ranks; ++r)
+  {
+    offsets[r] = total;
+    total += lengths[r];
+  }
+  std::vector<double> received(static_cast<size_t>(std::max<vtkIdType>(total, 1)));
+  controller->AllGatherV(send.data(), received.data(), length, lengths.data(), offsets.data());
+
+  auto output = vtkSmartPointer<vtkPolyData>::New();
+  output->DeepCopy(input);
+  vtkPoints* points = output->GetPoints();
+  vtkCellArray* outPolys = output->GetPolys();
+  vtkPointData* pd = output->GetPointData();
+  vtkCellData* cd = output->GetCellData();
+  const vtkIdType localPoints = output->GetNumberOfPoints();
+  const vtkIdType localCells = output->GetNumberOfCells();
+  std::map<Coordinates, vtkIdType> newIds; // ghost points, shared by ghost faces
+  std::vector<vtkIdType> face;
+  for (int r = 0; r < ranks; ++r)
+  {
+    if (r == me)
+    {
+      continue;
+    }
+    for (vtkIdType at = offsets[r]; at < offsets[r] + lengths[r];)
+    {
+      const auto n = static_cast<vtkIdType>(received[at++]);
+      std::vector<Coordinates> corners(static_cast<size_t>(n));
+      bool shared = false;
+      for (vtkIdType k = 0; k < n; ++k, at += 3)
+      {
+        corners[k] = { received[at], received[at + 1], received[at + 2] };
+        shared |= boundaryIds.count(corners[k]) > 0;
+      }
+      if (!shared)
+      {
+        continue;
+      }
+      face.clear();
+      for (const Coordinates& p : corners)
+      {
+        auto local = boundaryIds.find(p);
+        if (local != boundaryIds.end())
+        {
+          face.push_back(local->second);
+          continue;
+        }
+        auto ghost = newIds.find(p);
+        if (ghost == newIds.end())
+        {
+          ghost = newIds.emplace(p, points->InsertNextPoint(p.data())).first;
+        }
+        face.push_back(ghost->second);
+      }
+      outPolys->InsertNextCell(static_cast<vtkIdType>(face.size()), face.data());
+      ++added;
+    }
+  }
+  // Attributes of the new points and faces: zero (grown tuple by tuple:
+  // vtkFieldData::SetNumberOfTuples lost the existing values here).
+  auto grow = [](vtkFieldData* data, vtkIdType from, vtkIdType to) {
+    for (int a = 0; a < data->GetNumberOfArrays(); ++a)
+    {
+      vtkAbstractArray* array = data->GetAbstractArray(a);
+      auto* numeric = vtkDataArray::SafeDownCast(array);
+      if (!numeric)
+      {
+        array->Resize(to);
+        array->SetNumberOfTuples(to);
+        continue;
+      }
+      const std::vector<double> zeros(static_cast<size_t>(numeric->GetNumberOfComponents()), 0.0);
+      for (vtkIdType i = from; i < to; ++i)
+      {
+        numeric->InsertTuple(i, zeros.data());
+      }
+    }
+  };
+  grow(pd, localPoints, output->GetNumberOfPoints());
+  grow(cd, localCells, output->GetNumberOfCells());
+  return output;
+}
+
+/**
+ * Removes the last `borrowed` polygons (the faces WithNeighbourFaces
+ * appended; a filter that keeps polygon order keeps them last) and the
+ * points no remaining cell uses, keeping the order of everything else.
+ */
+inline void DropBorrowedFaces(vtkPolyData* mesh, vtkIdType borrowed, vtkPolyData* output)
+{
+  vtkCellArray* polys = mesh->GetPolys();
+  const vtkIdType keepPolys = polys->GetNumberOfCells() - borrowed;
+  const vtkIdType firstPoly = mesh->GetNumberOfVerts() + mesh->GetNumberOfLines();
+  std::vector<vtkIdType> newId(static_cast<size_t>(mesh->GetNumberOfPoints()), -1);
+  vtkNew<vtkIdList> ids;
+  auto markCells = [&](vtkCellArray* cells, vtkIdType count) {
+    for (vtkIdType c = 0; c < count; ++c)
+    {
+      cells->GetCellAtId(c, ids);
+      for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+      {
+        newId[ids->GetId(k)] = 0;
+      }
+    }
+  };
+  markCells(mesh->GetVerts(), mesh->GetNumberOfVerts());
+  markCells(mesh->GetLines(), mesh->GetNumberOfLines());
+  markCells(polys, keepPolys);
+  vtkIdType kept = 0;
+  for (auto& id : newId)
+  {
+    id = id == 0 ? kept++ : -1;
+  }
+  vtkNew<vtkPoints> points;
+  points->SetDataType(mesh->GetPoints()->GetDataType());
+  points->SetNumberOfPoints(kept);
+  vtkPointData* outPD = output->GetPointData();
+  outPD->CopyAllocate(mesh->GetPointData(), kept);
+  for (vtkIdType i = 0; i < mesh->GetNumberOfPoints(); ++i)
+  {
+    if (newId[i] >= 0)
+    {
+      points->SetPoint(newId[i], mesh->GetPoint(i));
+      outPD->CopyData(mesh->GetPointData(), i, newId[i]);
+    }
+  }
+  output->SetPoints(points);
+  auto remap = [&](vtkCellArray* cells, vtkIdType count) {
+    vtkNew<vtkCellArray> out;
+    for (vtkIdType c = 0; c < count; ++c)
+    {
+      cells->GetCellAtId(c, ids);
+      for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+      {
+        ids->SetId(k, newId[ids->GetId(k)]);
+      }
+      out->InsertNextCell(ids);
+    }
+    return out;
+  };
+  output->SetVerts(remap(mesh->GetVerts(), mesh->GetNumberOfVerts()));
+  output->SetLines(remap(mesh->GetLines(), mesh->GetNumberOfLines()));
+  output->SetPolys(remap(polys, keepPolys));
+  vtkCellData* outCD = output->GetCellData();
+  const vtkIdType keepCells = firstPoly + keepPolys;
+  outCD->CopyAllocate(mesh->GetCellData(), keepCells);
+  for (vtkIdType c = 0; c < keepCells; ++c)
+  {
+    outCD->CopyData(mesh->GetCellData(), c, c);
+  }
+  output->GetFieldData()->ShallowCopy(mesh->GetFieldData());
+}
+
+} // namespace shadinglab::paraview

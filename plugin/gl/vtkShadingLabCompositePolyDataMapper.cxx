@@ -19,6 +19,9 @@ vtkPolyDataMapper* vtkShadingLabCompositePolyDataMapper::MakeAMapper()
   mapper->SetShadingMode(this->ShadingMode);
   mapper->SetPerspectiveCorrect(this->PerspectiveCorrect);
   mapper->SetFastPhongMaxSpread(this->FastPhongMaxSpread);
+  mapper->SetNormalWeighting(this->NormalWeighting);
+  mapper->SetFeatureAngle(this->FeatureAngle);
+  mapper->SetRecomputeNormals(this->RecomputeNormals);
   mapper->SetMaterial(this->Material);
   this->BlockMappers.emplace_back(mapper);
   return mapper;
@@ -34,6 +37,9 @@ void vtkShadingLabCompositePolyDataMapper::Render(vtkRenderer* ren, vtkActor* ac
       sm->SetShadingMode(this->ShadingMode);
       sm->SetPerspectiveCorrect(this->PerspectiveCorrect);
       sm->SetFastPhongMaxSpread(this->FastPhongMaxSpread);
+      sm->SetNormalWeighting(this->NormalWeighting);
+      sm->SetFeatureAngle(this->FeatureAngle);
+      sm->SetRecomputeNormals(this->RecomputeNormals);
       sm->SetMaterial(this->Material);
     }
   }

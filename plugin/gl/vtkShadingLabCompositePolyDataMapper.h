@@ -35,6 +35,13 @@ public:
   vtkGetMacro(ShadingMode, int);
   vtkSetMacro(PerspectiveCorrect, bool);
   vtkGetMacro(PerspectiveCorrect, bool);
+  /// vtkShadingLabPolyDataMapper's normal settings (see there).
+  vtkSetClampMacro(NormalWeighting, int, 0, 3);
+  vtkGetMacro(NormalWeighting, int);
+  vtkSetClampMacro(FeatureAngle, double, 0.0, 180.0);
+  vtkGetMacro(FeatureAngle, double);
+  vtkSetMacro(RecomputeNormals, bool);
+  vtkGetMacro(RecomputeNormals, bool);
   /// vtkShadingLabPolyDataMapper::SetFastPhongMaxSpread (default 30 degrees).
   vtkSetClampMacro(FastPhongMaxSpread, double, 0.0, 180.0);
   vtkGetMacro(FastPhongMaxSpread, double);
@@ -52,6 +59,9 @@ protected:
   int ShadingMode = vtkShadingLabPolyDataMapper::PHONG;
   bool PerspectiveCorrect = true;
   double FastPhongMaxSpread = 30.0;
+  int NormalWeighting = 1;
+  double FeatureAngle = 180.0;
+  bool RecomputeNormals = false;
   shadinglab::Material<double> Material;
   /// The block mappers made so far (the superclass owns them; weak here).
   std::vector<vtkWeakPointer<vtkShadingLabPolyDataMapper>> BlockMappers;

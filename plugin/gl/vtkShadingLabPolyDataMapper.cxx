@@ -3,6 +3,7 @@
 
 #include "MeshArrays.h"
 #include "VertexNormals.h"
+#include "vtkWeightedPolyDataNormals.h"
 #include "shadinglab/model/Materials.h"
 #include "shadinglab/render/Renderer.h"
 #include "shadinglab_glsl.h"
@@ -27,6 +28,7 @@
 #include <vtkTypeInt64Array.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -46,6 +48,7 @@ struct vtkShadingLabPolyDataMapper::Internals
   vtkMTimeType PreparedFrom = 0;
   vtkPolyData* PreparedInput = nullptr;
   int PreparedKind = -1;
+  std::array<double, 2> PreparedSettings{ -1.0, -1.0 }; ///< weighting, feature angle
   std::map<const vtkOpenGLHelper*, std::string> BuiltVariant;
   std::map<const vtkShaderProgram*, std::vector<float>> LastUniforms;
 };
@@ -145,12 +148,17 @@ void vtkShadingLabPolyDataMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* a
   vtkPolyData* input = this->CurrentInput;
   const bool flat = this->ShadingMode == FLAT;
   const bool hasNormals = input && input->GetPointData()->GetNormals();
-  // Flat mode uploads no point normals; the other modes need them.
-  const int kind = flat ? (hasNormals ? 1 : 0) : (hasNormals ? 0 : 2);
+  // Flat mode uploads no point normals; the other modes need them, made
+  // here when the input has none or on request.
+  const bool useInputNormals = hasNormals && !this->RecomputeNormals;
+  const int kind = flat ? (hasNormals ? 1 : 0) : (useInputNormals ? 0 : 2);
+  const std::array<double, 2> settings{ static_cast<double>(this->NormalWeighting),
+    this->FeatureAngle };
   if (kind != 0)
   {
     if (this->Internal->PreparedKind != kind || this->Internal->PreparedInput != input ||
-      this->Internal->PreparedFrom != input->GetMTime())
+      this->Internal->PreparedFrom != input->GetMTime() ||
+      (kind == 2 && this->Internal->PreparedSettings != settings))
     {
       // A shallow copy has its own point-data object: the input keeps its arrays.
       auto prepared = vtkSmartPointer<vtkPolyData>::New();
@@ -159,14 +167,28 @@ void vtkShadingLabPolyDataMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* a
       {
         prepared->GetPointData()->SetNormals(nullptr);
       }
+      else if (this->FeatureAngle < 180.0)
+      {
+        // Creases: normals split where faces meet at more than FeatureAngle
+        // (new points; the copy is what is drawn).
+        vtkNew<vtkWeightedPolyDataNormals> normals;
+        normals->SetInputData(prepared);
+        normals->SetWeighting(this->NormalWeighting);
+        normals->SetFeatureAngle(this->FeatureAngle);
+        normals->SplittingOn();
+        normals->Update();
+        prepared = normals->GetOutput();
+      }
       else
       {
-        // Area-weighted vertex normals, the CPU renderer's (mesh/core).
+        // Weighted vertex normals without creases, the CPU renderer's
+        // (mesh/core; area weighting by default).
         sl::mesh::FlatPolygons polygons;
         sl::mesh::FlatPolygonsFromPolyData(input, polygons);
         const sl::mesh::MeshView& mesh = polygons;
         std::vector<double> normals;
-        sl::mesh::ComputeVertexNormalsNoSplit(mesh, sl::mesh::NormalWeighting::Area, normals);
+        sl::mesh::ComputeVertexNormalsNoSplit(
+          mesh, static_cast<sl::mesh::NormalWeighting>(this->NormalWeighting), normals);
         vtkNew<vtkFloatArray> array;
         array->SetName("Normals");
         array->SetNumberOfComponents(3);
@@ -178,6 +200,7 @@ void vtkShadingLabPolyDataMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* a
       this->Internal->PreparedFrom = input->GetMTime();
       this->Internal->PreparedInput = input;
       this->Internal->PreparedKind = kind;
+      this->Internal->PreparedSettings = settings;
     }
     this->CurrentInput = this->Internal->Prepared;
   }

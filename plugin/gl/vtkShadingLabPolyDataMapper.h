@@ -85,6 +85,19 @@ public:
   vtkGetMacro(FastPhongMaxSpread, double);
   ///@}
 
+  ///@{
+  /// Vertex normals made for inputs without point normals (or for every
+  /// input with RecomputeNormals on): weighting 0 uniform, 1 area (default),
+  /// 2 angle, 3 Max; creases split where faces meet at more than
+  /// FeatureAngle degrees (default 180: no creases, smooth everywhere).
+  vtkSetClampMacro(NormalWeighting, int, 0, 3);
+  vtkGetMacro(NormalWeighting, int);
+  vtkSetClampMacro(FeatureAngle, double, 0.0, 180.0);
+  vtkGetMacro(FeatureAngle, double);
+  vtkSetMacro(RecomputeNormals, bool);
+  vtkGetMacro(RecomputeNormals, bool);
+  ///@}
+
   /// The material. Rebuilds shaders only when the variant changes (model,
   /// specular on/off, mixture size, conductor or not).
   void SetMaterial(const shadinglab::Material<double>& material);
@@ -112,6 +125,9 @@ protected:
   int ShadingMode = PHONG;
   bool PerspectiveCorrect = true;
   double FastPhongMaxSpread = 30.0;
+  int NormalWeighting = 1;
+  double FeatureAngle = 180.0;
+  bool RecomputeNormals = false;
   int ShaderBuildCount = 0;
   int FailedSubstitutions = 0;
   int UniformUploads = 0;

@@ -81,7 +81,8 @@ settings = {'ShadingMode': 'Gouraud', 'ReflectanceModel': 'Cook-Torrance', 'Mate
             'Kd': 0.25, 'Ks': 0.5, 'Shininess': 77.0, 'AmbientReflectance': 0.1,
             'BeckmannRoughness': [0.2, 0.5, 0.0, 0.0], 'BeckmannWeights': [0.3, 0.7, 0.0, 0.0],
             'Eta': [0.2, 0.9, 1.1], 'Extinction': [3.0, 2.5, 2.2], 'SpecularVariant': 'Walter 2007',
-            'InterpolationSpace': 'Screen-space', 'FastPhongMaxSpread': 12.5}
+            'InterpolationSpace': 'Screen-space', 'FastPhongMaxSpread': 12.5,
+            'NormalWeighting': 'Angle', 'FeatureAngle': 40.0, 'RecomputeNormals': 1}
 for name, value in settings.items():
     setattr(rep, name, value)
 Render(view)

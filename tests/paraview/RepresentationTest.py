@@ -164,5 +164,24 @@ for mode, cli_mode, model in cases:
           '%s/%s matches the standalone GL renderer: mean %.3f, p90 %.1f, p99 %.1f over %d pixels'
           % (mode, model, mean, p90, p99, mask.sum()))
 
+# 3. Normals made for data without normals: with a feature angle below the
+#    facets' dihedral angles every edge is a crease and Phong shading looks
+#    faceted; at 180 (the default) it is smooth.
+coarse_rep.Visibility = 1
+rep.Visibility = 0
+coarse_rep.ShadingMode = 'Phong'
+coarse_rep.ReflectanceModel = 'Blinn-Phong'
+coarse_rep.FeatureAngle = 180
+smooth = shot('normals_smooth')
+coarse_rep.FeatureAngle = 5
+creased = shot('normals_creased')
+coarse_rep.ShadingMode = 'Flat'
+faceted = shot('normals_flat')
+check(difference(smooth, creased) > 2.0,
+      'feature angle 5 creases every edge: differs from smooth by %.2f' % difference(smooth, creased))
+check(difference(creased, faceted) < difference(smooth, faceted),
+      'creased Phong is closer to flat than smooth Phong is (%.2f < %.2f)'
+      % (difference(creased, faceted), difference(smooth, faceted)))
+
 print('%d failure(s)' % len(failures))
 sys.exit(1 if failures else 0)

@@ -85,6 +85,27 @@ void vtkShadingLabSurfaceRepresentation::SetFastPhongMaxSpread(double degrees)
   this->Modified();
 }
 
+void vtkShadingLabSurfaceRepresentation::SetNormalWeighting(int weighting)
+{
+  ForBothMappers(this->Mapper, this->LODMapper,
+    [&](vtkShadingLabCompositePolyDataMapper* m) { m->SetNormalWeighting(weighting); });
+  this->Modified();
+}
+
+void vtkShadingLabSurfaceRepresentation::SetFeatureAngle(double degrees)
+{
+  ForBothMappers(this->Mapper, this->LODMapper,
+    [&](vtkShadingLabCompositePolyDataMapper* m) { m->SetFeatureAngle(degrees); });
+  this->Modified();
+}
+
+void vtkShadingLabSurfaceRepresentation::SetRecomputeNormals(int recompute)
+{
+  ForBothMappers(this->Mapper, this->LODMapper,
+    [&](vtkShadingLabCompositePolyDataMapper* m) { m->SetRecomputeNormals(recompute != 0); });
+  this->Modified();
+}
+
 void vtkShadingLabSurfaceRepresentation::SetKd(double kd)
 {
   this->Internal->Parameters.kd = kd;

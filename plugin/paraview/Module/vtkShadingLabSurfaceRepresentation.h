@@ -43,6 +43,15 @@ public:
   void SetFastPhongMaxSpread(double degrees);
 
   ///@{
+  /// Vertex normals made when the data has none (or always, with
+  /// RecomputeNormals): weighting 0 uniform, 1 area (default), 2 angle,
+  /// 3 Max; creases split above FeatureAngle degrees (default 180: none).
+  void SetNormalWeighting(int weighting);
+  void SetFeatureAngle(double degrees);
+  void SetRecomputeNormals(int recompute);
+  ///@}
+
+  ///@{
   /// The material (docs/model.md): kd, ks (kd + ks <= 1), shininess n,
   /// ambient reflectance Ra, specular colour, Beckmann roughnesses m_k and
   /// weights w_k (up to 4 lobes), eta and k per RGB channel, and the

@@ -477,10 +477,7 @@ struct FastPhongStage : StageBase
     const Vec3f ambient = F.Mat.ambient * F.Lights.ambientIntensity;
     // The cosine power by table, as Bishop & Weimer (their section 4).
     const auto tablePower = [this](float x, float) { return F.PowerTable.Lookup(x); };
-    // A local copy: the frame buffer writes below cannot alias it, so the
-    // compiler keeps its terms in registers across pixels.
-    Material<float> material = F.Mat;
-    material.model = Model;
+    // The model is the template parameter: BrdfFromCosines<Model> has no switch.
     int64_t shaded = 0, exactPixels = 0;
     const int W = F.Width;
     float* rgb = F.Rgb;
@@ -575,7 +572,7 @@ struct FastPhongStage : StageBase
             continue;
           }
           const float RoV = 2.0f * cl * NoV - LoV[l];
-          I += irradiance[l] * BrdfFromCosines(material, color, NoH[l], RoV, tablePower) * cl;
+          I += irradiance[l] * BrdfFromCosines<Model>(F.Mat, color, NoH[l], RoV, tablePower) * cl;
         }
         const size_t pix = static_cast<size_t>(j) * W + i;
         covered[pix] = 1;

@@ -159,9 +159,14 @@ struct FastPhongTriangle
    */
   bool WithinSpread(const Vec3<T>& N0, T x, T y, T minCos) const
   {
+    // cos = d / sqrt(q) >= minCos, compared squared: no square root or
+    // division per pixel (the GLSL twin divides; the two agree but for
+    // rounding exactly at the limit).
     const Vec3<T> N = Normal(x, y);
-    const T lengths = std::max(Dot(N0, N0) * Dot(N, N), kMinNormalLengthSq<T> * kMinNormalLengthSq<T>);
-    return !(Dot(N0, N) / std::sqrt(lengths) < minCos);
+    const T d = Dot(N0, N);
+    const T q = std::max(Dot(N0, N0) * Dot(N, N), kMinNormalLengthSq<T> * kMinNormalLengthSq<T>);
+    const T bound = minCos * minCos * q;
+    return minCos >= T(0) ? (d >= T(0) && d * d >= bound) : (d >= T(0) || d * d <= bound);
   }
 
   /// Exact (L.N)/|N| at (x, y): what Phong shading computes. A normal with

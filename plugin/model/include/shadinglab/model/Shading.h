@@ -220,24 +220,43 @@ SL_INLINE bool LightIncidence(const Light<T>& light, const Vec3<T>& P, Vec3<T>& 
  * GLSL twin (sl_shading.glsl) has the same function. Cook-Torrance is not a
  * function of these cosines: it returns the diffuse term only for it.
  */
-template <typename T, typename Power = StdPow>
+template <ReflectanceModel Model, typename T, typename Power = StdPow>
 SL_INLINE Vec3<T> BrdfFromCosines(const Material<T>& material, const Vec3<T>& diffuseColor, T NoH,
   T RoV, Power power = {})
 {
   const Vec3<T> diffuse = diffuseColor * (material.kd * Fd_Lambert<T>());
+  if constexpr (Model == ReflectanceModel::Phong)
+  {
+    return diffuse +
+      material.specularColor * (material.ks * Fs_Phong(RoV, material.shininess, power));
+  }
+  else if constexpr (Model == ReflectanceModel::BlinnPhong)
+  {
+    return diffuse +
+      material.specularColor * (material.ks * Fs_BlinnPhong(NoH, material.shininess, power));
+  }
+  else
+  {
+    return diffuse;
+  }
+}
+
+/// The same with the material's model chosen at run time.
+template <typename T, typename Power = StdPow>
+SL_INLINE Vec3<T> BrdfFromCosines(const Material<T>& material, const Vec3<T>& diffuseColor, T NoH,
+  T RoV, Power power = {})
+{
   switch (material.model)
   {
     case ReflectanceModel::Phong:
-      return diffuse +
-        material.specularColor * (material.ks * Fs_Phong(RoV, material.shininess, power));
+      return BrdfFromCosines<ReflectanceModel::Phong>(material, diffuseColor, NoH, RoV, power);
     case ReflectanceModel::BlinnPhong:
-      return diffuse +
-        material.specularColor * (material.ks * Fs_BlinnPhong(NoH, material.shininess, power));
+      return BrdfFromCosines<ReflectanceModel::BlinnPhong>(material, diffuseColor, NoH, RoV, power);
     case ReflectanceModel::Lambert:
     case ReflectanceModel::CookTorrance:
       break;
   }
-  return diffuse;
+  return BrdfFromCosines<ReflectanceModel::Lambert>(material, diffuseColor, NoH, RoV, power);
 }
 
 /**

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <vector>
 
@@ -277,6 +278,8 @@ TEST(CliTest, RenderBadInputExitsTwoWithOneLine)
     "compare " + good + " --modes fast-phong/cook-torrance" + out,
     "render " + good + " --kd 2" + out,
     "render " + good + " --interp curved" + out,
+    "render " + good + " --view-up 0,0,0" + out,
+    "render " + good + " --camera-position 0,0,5 --focal-point 0,0,0 --view-up 0,0,2" + out,
     "render " + good + " --backend cpu --out /nonexistent-dir/x.png", // unwritable
   };
   for (const auto& args : bad)
@@ -345,6 +348,25 @@ TEST(CliTest, NormalsBadInputExitsTwoWithOneLine)
     EXPECT_EQ(r.status, 2) << args;
     EXPECT_EQ(CountLines(r.err), 1) << args << ": " << r.err.substr(0, 300);
   }
+}
+
+TEST(CliTest, NormalsRefusesToOverwriteItsInput)
+{
+  // A copy of a dataset as the input, and --out naming that same file.
+  const std::string copy = ::testing::TempDir() + "/shadinglab_self.vtp";
+  {
+    std::ifstream src(kData + "icosphere_1.vtp", std::ios::binary);
+    std::ofstream dst(copy, std::ios::binary);
+    dst << src.rdbuf();
+  }
+  std::ifstream before(copy, std::ios::binary);
+  const std::string original((std::istreambuf_iterator<char>(before)), std::istreambuf_iterator<char>());
+  const auto r = RunCli("normals " + copy + " --out " + copy);
+  EXPECT_EQ(r.status, 2) << r.err;
+  EXPECT_EQ(CountLines(r.err), 1) << r.err;
+  std::ifstream after(copy, std::ios::binary);
+  const std::string now((std::istreambuf_iterator<char>(after)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(now, original);
 }
 
 TEST(CliTest, RenderUsesTheMeshFilters)

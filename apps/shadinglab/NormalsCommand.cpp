@@ -11,6 +11,7 @@
 
 #include <cstdio>
 #include <stdexcept>
+#include <sys/stat.h>
 #include <iostream>
 
 namespace shadinglab::cli
@@ -47,6 +48,15 @@ int RunNormals(int argc, char** argv)
   if (!args.Has("out"))
   {
     throw UsageError("--out OUT is required");
+  }
+  // Never overwrite the input (the same file under another name included).
+  {
+    struct stat in{}, out{};
+    if (stat(args.Positionals()[0].c_str(), &in) == 0 && stat(args.Get("out").c_str(), &out) == 0 &&
+      in.st_dev == out.st_dev && in.st_ino == out.st_ino)
+    {
+      throw UsageError("--out '" + args.Get("out") + "' is the input file: refusing to overwrite it");
+    }
   }
   mesh::PreparationOptions options = MeshPipelineFromArguments(args, true);
   vtkSmartPointer<vtkPolyData> input;

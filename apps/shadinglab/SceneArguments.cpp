@@ -294,6 +294,12 @@ std::unique_ptr<SceneArguments> SceneFromArguments(int argc, char** argv, const 
   if (args.Has("view-up"))
   {
     camera.viewUp = ParseVector(args.Get("view-up"), "--view-up");
+    // The up vector must have a direction, and one not along the view.
+    const Vec3<double> forward = camera.focalPoint - camera.position;
+    if (!(Length(Cross(camera.viewUp, forward)) > 1e-9 * Length(camera.viewUp) * Length(forward)))
+    {
+      throw UsageError("--view-up must be non-zero and not parallel to the view direction");
+    }
   }
   if (args.Has("view-angle"))
   {

@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "MeshIO.h"
 
+#include "MeshPrecheck.h"
+
 #include <vtkCellArray.h>
 #include <vtkDataSetSurfaceFilter.h>
 #include <vtkIdList.h>
+#include <vtkLogger.h>
 #include <vtkNew.h>
 #include <vtkOBJReader.h>
 #include <vtkOBJWriter.h>
@@ -234,6 +237,31 @@ void ValidateMesh(vtkPolyData* mesh, const std::string& what)
   {
     throw MeshError("empty mesh: '" + what + "' has no polygons");
   }
+  // Every cell's point ids in range and every polygon with >= 3 of them:
+  // no algorithm downstream checks indices again.
+  const vtkIdType np = mesh->GetNumberOfPoints();
+  vtkNew<vtkIdList> ids;
+  for (vtkCellArray* cells : { mesh->GetVerts(), mesh->GetLines(), mesh->GetPolys(), mesh->GetStrips() })
+  {
+    const bool polys = cells == mesh->GetPolys();
+    for (vtkIdType c = 0; c < cells->GetNumberOfCells(); ++c)
+    {
+      cells->GetCellAtId(c, ids);
+      if (polys && ids->GetNumberOfIds() < 3)
+      {
+        throw MeshError("polygon " + std::to_string(c) + " of '" + what + "' has " +
+          std::to_string(ids->GetNumberOfIds()) + " vertices (at least 3 needed)");
+      }
+      for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+      {
+        if (ids->GetId(k) < 0 || ids->GetId(k) >= np)
+        {
+          throw MeshError("cell " + std::to_string(c) + " of '" + what + "' refers to point " +
+            std::to_string(ids->GetId(k)) + ", outside 0.." + std::to_string(np - 1));
+        }
+      }
+    }
+  }
   vtkPoints* pts = mesh->GetPoints();
   for (vtkIdType i = 0; i < pts->GetNumberOfPoints(); ++i)
   {
@@ -264,83 +292,89 @@ vtkPolyData* ReadMesh(const std::string& path)
   }
   const std::string ext = Extension(path);
   vtkSmartPointer<vtkPolyData> mesh;
-  // VTK readers report problems through vtkErrorMacro to stderr; silence
-  // them so the user sees our one-line message only.
+  // VTK readers report problems through vtkErrorMacro and vtkLogger to
+  // stderr; silence both so the user sees our one-line message only.
   const int warnings = vtkObject::GetGlobalWarningDisplay();
   vtkObject::GlobalWarningDisplayOff();
-  try
+  const vtkLogger::Verbosity verbosity = vtkLogger::GetCurrentVerbosityCutoff();
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  struct RestoreLogging
   {
-    if (ext == "vtp")
+    int warnings;
+    vtkLogger::Verbosity verbosity;
+    ~RestoreLogging()
     {
-      mesh = ReadWith<vtkXMLPolyDataReader>(path);
+      vtkObject::SetGlobalWarningDisplay(this->warnings);
+      vtkLogger::SetStderrVerbosity(this->verbosity);
     }
-    else if (ext == "ply")
+  } restore{ warnings, verbosity };
+  if (ext == "vtp")
+  {
+    mesh = ReadWith<vtkXMLPolyDataReader>(path);
+  }
+  else if (ext == "ply")
+  {
+    PrecheckPly(path);
+    mesh = ReadWith<vtkPLYReader>(path);
+  }
+  else if (ext == "obj")
+  {
+    PrecheckObj(path);
+    mesh = ReadWith<vtkOBJReader>(path);
+  }
+  else if (ext == "stl")
+  {
+    PrecheckStl(path);
+    mesh = ReadWith<vtkSTLReader>(path);
+  }
+  else if (ext == "off")
+  {
+    mesh = ReadOff(path);
+  }
+  else if (ext == "vtk" || ext == "vtu")
+  {
+    vtkSmartPointer<vtkDataSet> data;
+    if (ext == "vtk")
     {
-      mesh = ReadWith<vtkPLYReader>(path);
-    }
-    else if (ext == "obj")
-    {
-      mesh = ReadWith<vtkOBJReader>(path);
-    }
-    else if (ext == "stl")
-    {
-      mesh = ReadWith<vtkSTLReader>(path);
-    }
-    else if (ext == "off")
-    {
-      mesh = ReadOff(path);
-    }
-    else if (ext == "vtk" || ext == "vtu")
-    {
-      vtkSmartPointer<vtkDataSet> data;
-      if (ext == "vtk")
+      auto reader = vtkSmartPointer<vtkDataSetReader>::New();
+      reader->SetFileName(path.c_str());
+      reader->Update();
+      if (reader->GetErrorCode() != 0 || !reader->GetOutput())
       {
-        auto reader = vtkSmartPointer<vtkDataSetReader>::New();
-        reader->SetFileName(path.c_str());
-        reader->Update();
-        if (reader->GetErrorCode() != 0 || !reader->GetOutput())
-        {
-          throw MeshError("cannot read '" + path + "': malformed or unsupported legacy VTK file");
-        }
-        data = reader->GetOutput();
+        throw MeshError("cannot read '" + path + "': malformed or unsupported legacy VTK file");
       }
-      else
-      {
-        auto reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
-        reader->SetFileName(path.c_str());
-        reader->Update();
-        if (reader->GetErrorCode() != 0)
-        {
-          throw MeshError("cannot read '" + path + "': malformed .vtu file");
-        }
-        data = reader->GetOutput();
-      }
-      if (auto* poly = vtkPolyData::SafeDownCast(data))
-      {
-        mesh = vtkSmartPointer<vtkPolyData>::New();
-        mesh->ShallowCopy(poly);
-      }
-      else
-      {
-        auto surface = vtkSmartPointer<vtkDataSetSurfaceFilter>::New();
-        surface->SetInputData(data);
-        surface->Update();
-        mesh = vtkSmartPointer<vtkPolyData>::New();
-        mesh->ShallowCopy(surface->GetOutput());
-      }
+      data = reader->GetOutput();
     }
     else
     {
-      throw MeshError("cannot read '" + path +
-        "': unknown extension (expected .vtp .vtk .vtu .ply .obj .stl .off)");
+      auto reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
+      reader->SetFileName(path.c_str());
+      reader->Update();
+      if (reader->GetErrorCode() != 0)
+      {
+        throw MeshError("cannot read '" + path + "': malformed .vtu file");
+      }
+      data = reader->GetOutput();
+    }
+    if (auto* poly = vtkPolyData::SafeDownCast(data))
+    {
+      mesh = vtkSmartPointer<vtkPolyData>::New();
+      mesh->ShallowCopy(poly);
+    }
+    else
+    {
+      auto surface = vtkSmartPointer<vtkDataSetSurfaceFilter>::New();
+      surface->SetInputData(data);
+      surface->Update();
+      mesh = vtkSmartPointer<vtkPolyData>::New();
+      mesh->ShallowCopy(surface->GetOutput());
     }
   }
-  catch (...)
+  else
   {
-    vtkObject::SetGlobalWarningDisplay(warnings);
-    throw;
+    throw MeshError("cannot read '" + path +
+      "': unknown extension (expected .vtp .vtk .vtu .ply .obj .stl .off)");
   }
-  vtkObject::SetGlobalWarningDisplay(warnings);
   if (!mesh)
   {
     throw MeshError("cannot read '" + path + "'");

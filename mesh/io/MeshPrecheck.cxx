@@ -1,0 +1,511 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "MeshPrecheck.h"
+
+#include "MeshIO.h"
+
+#include <cerrno>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+namespace shadinglab
+{
+
+namespace
+{
+
+/// Largest element count accepted in a header: 2^31 - 1 elements is the
+/// largest that vtkIdType-indexed VTK arrays of ints address, and beyond any
+/// mesh this tool renders in its 24 GiB budget; a larger count is a corrupt
+/// header.
+constexpr long long kMaxElements = (1LL << 31) - 1;
+
+/// Largest polygon accepted in a PLY face list: 1e6 vertices per face is
+/// far beyond any real polygon and keeps a corrupt count from allocating.
+constexpr long long kMaxListLength = 1000000;
+
+std::string Where(const std::string& path, long long line)
+{
+  return "'" + path + "' line " + std::to_string(line);
+}
+
+bool ParseInteger(const std::string& token, long long& value)
+{
+  if (token.empty())
+  {
+    return false;
+  }
+  errno = 0;
+  char* end = nullptr;
+  value = std::strtoll(token.c_str(), &end, 10);
+  return errno == 0 && end && *end == '\0';
+}
+
+bool ParseReal(const std::string& token, double& value)
+{
+  if (token.empty())
+  {
+    return false;
+  }
+  char* end = nullptr;
+  value = std::strtod(token.c_str(), &end);
+  return end && *end == '\0';
+}
+
+std::ifstream Open(const std::string& path, std::ios::openmode mode = std::ios::in)
+{
+  std::ifstream in(path, mode);
+  if (!in)
+  {
+    throw MeshError("cannot open '" + path + "' (no permission?)");
+  }
+  return in;
+}
+
+} // namespace
+
+void PrecheckObj(const std::string& path)
+{
+  std::ifstream in = Open(path);
+  std::string line;
+  long long number = 0, vertices = 0;
+  long long largestIndex = 0, largestIndexLine = 0;
+  while (std::getline(in, line))
+  {
+    ++number;
+    if (number == 1 && line.size() >= 3 && static_cast<unsigned char>(line[0]) == 0xEF &&
+      static_cast<unsigned char>(line[1]) == 0xBB && static_cast<unsigned char>(line[2]) == 0xBF)
+    {
+      throw MeshError("'" + path + "' starts with a UTF-8 byte-order mark, which VTK's OBJ reader "
+                                   "mistakes for data: remove it");
+    }
+    std::istringstream tokens(line);
+    std::string keyword;
+    tokens >> keyword;
+    if (keyword == "v")
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        std::string token;
+        double value = 0;
+        if (!(tokens >> token) || !ParseReal(token, value))
+        {
+          throw MeshError(Where(path, number) + ": a vertex needs three numbers");
+        }
+        if (!std::isfinite(value))
+        {
+          throw MeshError(Where(path, number) + ": non-finite (NaN or Inf) vertex coordinate");
+        }
+      }
+      ++vertices;
+    }
+    else if (keyword == "f" || keyword == "l" || keyword == "p")
+    {
+      int count = 0;
+      std::string token;
+      while (tokens >> token)
+      {
+        long long index = 0;
+        if (!ParseInteger(token.substr(0, token.find('/')), index))
+        {
+          throw MeshError(Where(path, number) + ": '" + token + "' is not a vertex index");
+        }
+        if (index == 0)
+        {
+          throw MeshError(Where(path, number) + ": vertex index 0 (OBJ indices start at 1)");
+        }
+        if (index < 0 && -index > vertices)
+        {
+          throw MeshError(Where(path, number) + ": relative index " + std::to_string(index) +
+            " points before the first vertex");
+        }
+        if (index > largestIndex)
+        {
+          largestIndex = index;
+          largestIndexLine = number;
+        }
+        ++count;
+      }
+      const int needed = keyword == "f" ? 3 : (keyword == "l" ? 2 : 1);
+      if (count < needed)
+      {
+        throw MeshError(Where(path, number) + ": a '" + keyword + "' element needs at least " +
+          std::to_string(needed) + " vertices (has " + std::to_string(count) + ")");
+      }
+    }
+  }
+  if (largestIndex > vertices)
+  {
+    throw MeshError(Where(path, largestIndexLine) + ": vertex index " +
+      std::to_string(largestIndex) + " beyond the file's " + std::to_string(vertices) +
+      " vertices");
+  }
+}
+
+namespace
+{
+
+/// One PLY property: a scalar of `size` bytes, or a list (count, items).
+struct PlyProperty
+{
+  std::string name;
+  bool list = false;
+  int size = 0;      ///< scalar or item size in bytes
+  int countSize = 0; ///< list count size in bytes
+  bool integer = true;
+  bool isSigned = true;
+};
+
+struct PlyElement
+{
+  std::string name;
+  long long count = 0;
+  std::vector<PlyProperty> properties;
+};
+
+bool PlyType(const std::string& type, int& size, bool& integer, bool& isSigned)
+{
+  static const struct
+  {
+    const char* name;
+    int size;
+    bool integer, isSigned;
+  } types[] = { { "char", 1, true, true }, { "int8", 1, true, true }, { "uchar", 1, true, false },
+    { "uint8", 1, true, false }, { "short", 2, true, true }, { "int16", 2, true, true },
+    { "ushort", 2, true, false }, { "uint16", 2, true, false }, { "int", 4, true, true },
+    { "int32", 4, true, true }, { "uint", 4, true, false }, { "uint32", 4, true, false },
+    { "float", 4, false, true }, { "float32", 4, false, true }, { "double", 8, false, true },
+    { "float64", 8, false, true } };
+  for (const auto& t : types)
+  {
+    if (type == t.name)
+    {
+      size = t.size;
+      integer = t.integer;
+      isSigned = t.isSigned;
+      return true;
+    }
+  }
+  return false;
+}
+
+/// Reads an integer of `size` bytes at `p` (little- or big-endian).
+long long ReadInteger(const unsigned char* p, int size, bool isSigned, bool bigEndian)
+{
+  uint64_t v = 0;
+  for (int i = 0; i < size; ++i)
+  {
+    const int shift = 8 * (bigEndian ? size - 1 - i : i);
+    v |= static_cast<uint64_t>(p[i]) << shift;
+  }
+  if (isSigned && size < 8 && (v >> (8 * size - 1)) & 1)
+  {
+    v |= ~uint64_t(0) << (8 * size); // sign extension
+  }
+  return static_cast<long long>(v);
+}
+
+} // namespace
+
+void PrecheckPly(const std::string& path)
+{
+  std::ifstream in = Open(path, std::ios::in | std::ios::binary);
+  const std::string bad = "malformed PLY '" + path + "': ";
+  std::string line;
+  if (!std::getline(in, line) || line.rfind("ply", 0) != 0)
+  {
+    throw MeshError(bad + "does not start with 'ply'");
+  }
+  std::string format;
+  std::vector<PlyElement> elements;
+  bool ended = false;
+  for (int lines = 0; lines < 10000 && std::getline(in, line); ++lines)
+  {
+    if (!line.empty() && line.back() == '\r')
+    {
+      line.pop_back();
+    }
+    std::istringstream tokens(line);
+    std::string keyword;
+    tokens >> keyword;
+    if (keyword == "end_header")
+    {
+      ended = true;
+      break;
+    }
+    if (keyword == "format")
+    {
+      tokens >> format;
+    }
+    else if (keyword == "element")
+    {
+      PlyElement e;
+      std::string count;
+      tokens >> e.name >> count;
+      if (!ParseInteger(count, e.count) || e.count < 0 || e.count > kMaxElements)
+      {
+        throw MeshError(bad + "element '" + e.name + "' has count '" + count +
+          "' (expected 0 to 2^31-1)");
+      }
+      elements.push_back(e);
+    }
+    else if (keyword == "property")
+    {
+      if (elements.empty())
+      {
+        throw MeshError(bad + "a property before any element");
+      }
+      PlyProperty p;
+      std::string type;
+      tokens >> type;
+      if (type == "list")
+      {
+        std::string countType, itemType;
+        tokens >> countType >> itemType >> p.name;
+        bool countInteger = true, countSigned = true;
+        p.list = true;
+        if (!PlyType(countType, p.countSize, countInteger, countSigned) || !countInteger ||
+          !PlyType(itemType, p.size, p.integer, p.isSigned))
+        {
+          throw MeshError(bad + "unknown list types '" + countType + " " + itemType + "'");
+        }
+      }
+      else
+      {
+        tokens >> p.name;
+        if (!PlyType(type, p.size, p.integer, p.isSigned))
+        {
+          throw MeshError(bad + "unknown property type '" + type + "'");
+        }
+      }
+      elements.back().properties.push_back(p);
+    }
+  }
+  if (!ended)
+  {
+    throw MeshError(bad + "the header has no 'end_header' (truncated?)");
+  }
+  long long vertexCount = -1;
+  for (const PlyElement& e : elements)
+  {
+    if (e.name == "vertex")
+    {
+      int xyz = 0;
+      for (const PlyProperty& p : e.properties)
+      {
+        xyz += !p.list && (p.name == "x" || p.name == "y" || p.name == "z");
+      }
+      if (xyz != 3)
+      {
+        throw MeshError(bad + "the vertex element has no x, y and z properties");
+      }
+      vertexCount = e.count;
+    }
+  }
+  if (vertexCount < 0)
+  {
+    throw MeshError(bad + "no vertex element");
+  }
+  auto checkIndex = [&](long long index, long long row) {
+    if (index < 0 || index >= vertexCount)
+    {
+      throw MeshError(bad + "face " + std::to_string(row) + " has vertex index " +
+        std::to_string(index) + " outside 0.." + std::to_string(vertexCount - 1));
+    }
+  };
+  auto isFaceList = [](const PlyElement& e, const PlyProperty& p) {
+    return e.name == "face" && p.list && (p.name == "vertex_indices" || p.name == "vertex_index");
+  };
+  if (format == "ascii")
+  {
+    for (const PlyElement& e : elements)
+    {
+      for (long long row = 0; row < e.count; ++row)
+      {
+        if (!std::getline(in, line))
+        {
+          throw MeshError(bad + "data ends in element '" + e.name + "' at row " +
+            std::to_string(row) + " of " + std::to_string(e.count) + " (truncated?)");
+        }
+        std::istringstream tokens(line);
+        for (const PlyProperty& p : e.properties)
+        {
+          std::string token;
+          double value = 0;
+          if (!(tokens >> token) || !ParseReal(token, value))
+          {
+            throw MeshError(bad + "element '" + e.name + "' row " + std::to_string(row) +
+              ": missing or non-numeric '" + p.name + "'");
+          }
+          if (!p.list)
+          {
+            if (!std::isfinite(value))
+            {
+              throw MeshError(bad + "non-finite (NaN or Inf) '" + p.name + "' in element '" +
+                e.name + "' row " + std::to_string(row));
+            }
+            continue;
+          }
+          const long long n = static_cast<long long>(value);
+          if (n != value || n < 0 || n > kMaxListLength)
+          {
+            throw MeshError(bad + "element '" + e.name + "' row " + std::to_string(row) +
+              ": list length '" + token + "'");
+          }
+          for (long long k = 0; k < n; ++k)
+          {
+            long long index = 0;
+            if (!(tokens >> token) || !ParseInteger(token, index))
+            {
+              throw MeshError(bad + "element '" + e.name + "' row " + std::to_string(row) +
+                ": the list is shorter than its length " + std::to_string(n));
+            }
+            if (isFaceList(e, p))
+            {
+              checkIndex(index, row);
+            }
+          }
+        }
+      }
+    }
+    return;
+  }
+  if (format != "binary_little_endian" && format != "binary_big_endian")
+  {
+    throw MeshError(bad + "unknown format '" + format + "'");
+  }
+  const bool bigEndian = format == "binary_big_endian";
+  // Scalar-only rows have a fixed size: check the bytes they need before
+  // reading anything (a 244-byte file must not claim 2e9 vertices).
+  const std::streamoff start = in.tellg();
+  in.seekg(0, std::ios::end);
+  const long long available = static_cast<long long>(in.tellg() - start);
+  in.seekg(start);
+  long long needed = 0;
+  for (const PlyElement& e : elements)
+  {
+    long long row = 0;
+    for (const PlyProperty& p : e.properties)
+    {
+      row += p.list ? p.countSize : p.size;
+    }
+    needed += e.count * row;
+    if (needed > available)
+    {
+      throw MeshError(bad + "the header declares " + std::to_string(e.count) + " '" + e.name +
+        "' rows but the file has only " + std::to_string(available) + " bytes of data");
+    }
+  }
+  std::vector<unsigned char> buffer(8 * 1024 * 1024);
+  long long buffered = 0, position = 0;
+  auto take = [&](long long bytes, const PlyElement& e, long long row) -> const unsigned char* {
+    if (position + bytes > buffered)
+    {
+      const long long keep = buffered - position;
+      std::memmove(buffer.data(), buffer.data() + position, static_cast<size_t>(keep));
+      in.read(reinterpret_cast<char*>(buffer.data() + keep),
+        static_cast<std::streamsize>(buffer.size() - keep));
+      buffered = keep + in.gcount();
+      position = 0;
+      if (bytes > buffered)
+      {
+        throw MeshError(bad + "data ends in element '" + e.name + "' at row " +
+          std::to_string(row) + " of " + std::to_string(e.count) + " (truncated?)");
+      }
+    }
+    const unsigned char* p = buffer.data() + position;
+    position += bytes;
+    return p;
+  };
+  for (const PlyElement& e : elements)
+  {
+    for (long long row = 0; row < e.count; ++row)
+    {
+      for (const PlyProperty& p : e.properties)
+      {
+        if (!p.list)
+        {
+          take(p.size, e, row);
+          continue;
+        }
+        const long long n = ReadInteger(take(p.countSize, e, row), p.countSize, true, bigEndian);
+        if (n < 0 || n > kMaxListLength)
+        {
+          throw MeshError(bad + "element '" + e.name + "' row " + std::to_string(row) +
+            ": list length " + std::to_string(n));
+        }
+        if (isFaceList(e, p) && !p.integer)
+        {
+          throw MeshError(bad + "face indices are not integers");
+        }
+        for (long long k = 0; k < n; ++k)
+        {
+          const unsigned char* item = take(p.size, e, row);
+          if (isFaceList(e, p))
+          {
+            checkIndex(ReadInteger(item, p.size, p.isSigned, bigEndian), row);
+          }
+        }
+      }
+    }
+  }
+}
+
+void PrecheckStl(const std::string& path)
+{
+  std::ifstream in = Open(path, std::ios::in | std::ios::binary);
+  in.seekg(0, std::ios::end);
+  const long long size = static_cast<long long>(in.tellg());
+  in.seekg(0);
+  if (size >= 84)
+  {
+    unsigned char header[84];
+    in.read(reinterpret_cast<char*>(header), 84);
+    const long long count = ReadInteger(header + 80, 4, false, false);
+    if (84 + 50 * count == size)
+    {
+      return; // a consistent binary STL
+    }
+  }
+  in.seekg(0);
+  std::string first;
+  in >> first;
+  if (first != "solid")
+  {
+    throw MeshError("malformed STL '" + path + "': a binary STL of " + std::to_string(size) +
+      " bytes whose triangle count does not match its size (truncated or miscounted?)");
+  }
+  // ASCII: complete facets of three vertices, and the closing keyword.
+  std::string token;
+  long long vertices = 0, facets = 0, ends = 0;
+  bool closed = false;
+  while (in >> token)
+  {
+    if (token == "vertex")
+    {
+      ++vertices;
+      for (int c = 0; c < 3; ++c)
+      {
+        double value = 0;
+        if (!(in >> token) || !ParseReal(token, value) || !std::isfinite(value))
+        {
+          throw MeshError("malformed STL '" + path + "': vertex " + std::to_string(vertices) +
+            " lacks three finite coordinates");
+        }
+      }
+    }
+    facets += token == "facet";
+    ends += token == "endfacet";
+    closed |= token == "endsolid";
+  }
+  if (vertices != 3 * ends || facets != ends || !closed)
+  {
+    throw MeshError("malformed STL '" + path + "': incomplete facets or no 'endsolid' (truncated?)");
+  }
+}
+
+} // namespace shadinglab

@@ -1,0 +1,76 @@
+#!/usr/bin/env python3
+"""Writes a corpus of malformed mesh files, one per class of defect, into
+DIR (generated, never checked in). Every file must make every command exit
+with status 2 and a one-line error naming the problem.
+
+    python3 tests/badinput/make_corpus.py DIR
+"""
+import os
+import struct
+import sys
+
+out = sys.argv[1]
+os.makedirs(out, exist_ok=True)
+
+
+def write(name, data):
+    mode = 'wb' if isinstance(data, bytes) else 'w'
+    with open(os.path.join(out, name), mode) as f:
+        f.write(data)
+
+
+TRI = 'v 0 0 0\nv 1 0 0\nv 0 1 0\n'
+# OBJ: indices out of range, zero, negative past the start, a byte-order
+# mark, non-finite coordinates, degenerate faces.
+write('obj_index_too_large.obj', TRI + 'f 1 2 7\n')
+write('obj_index_zero.obj', TRI + 'f 0 1 2\n')
+write('obj_negative_before_start.obj', TRI + 'f -1 -2 -9\n')
+write('obj_huge_index.obj', TRI + 'f 1 2 4000000000\n')
+write('obj_bom.obj', '\ufeff' + TRI + 'f 1 2 3\n')
+write('obj_nan.obj', 'v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n')
+write('obj_inf.obj', 'v 0 0 0\nv 1 inf 0\nv 0 1 0\nf 1 2 3\n')
+write('obj_empty_face.obj', TRI + 'f\n')
+write('obj_two_vertex_face.obj', TRI + 'f 1 2\n')
+write('obj_no_faces.obj', TRI)
+write('obj_garbage_index.obj', TRI + 'f 1 2 x\n')
+# OFF (our own parser).
+write('off_index_too_large.off', 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 5\n')
+write('off_negative_index.off', 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n')
+write('off_huge_counts.off', 'OFF\n2000000000 2000000000 0\n0 0 0\n')
+write('off_truncated.off', 'OFF\n3 1 0\n0 0 0\n1 0 0\n')
+write('off_huge_face_size.off', 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2000000000 0 1 2\n')
+# PLY: indices, counts, truncation, missing coordinates.
+PLY_HEAD = 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n'
+write('ply_index_too_large.ply', PLY_HEAD + '0 0 0\n1 0 0\n0 1 0\n3 0 1 9\n')
+write('ply_negative_index.ply', PLY_HEAD + '0 0 0\n1 0 0\n0 1 0\n3 0 -5 2\n')
+write('ply_truncated_data.ply', PLY_HEAD + '0 0 0\n1 0\n')
+write('ply_truncated_header.ply', 'ply\nformat ascii 1.0\nelement vertex 3\nprop')
+write('ply_no_xyz.ply', PLY_HEAD.replace('property float x\nproperty float y\nproperty float z\n', 'property float u\n') + '0\n1\n2\n3 0 1 2\n')
+write('ply_negative_count.ply', PLY_HEAD.replace('element vertex 3', 'element vertex -3') + '3 0 1 2\n')
+write('ply_nan.ply', PLY_HEAD + '0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n')
+binary = ('ply\nformat binary_little_endian 1.0\nelement vertex 2000000000\nproperty float x\n'
+          'property float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n')
+write('ply_binary_huge_count.ply', binary.encode() + struct.pack('<9f', 0, 0, 0, 1, 0, 0, 0, 1, 0))
+write('ply_random_after_header.ply', PLY_HEAD.encode() + bytes((i * 37 + 11) % 256 for i in range(200)))
+# Legacy VTK.
+VTK_HEAD = '# vtk DataFile Version 3.0\nbad\nASCII\nDATASET POLYDATA\n'
+write('vtk_index_too_large.vtk', VTK_HEAD + 'POINTS 3 float\n0 0 0 1 0 0 0 1 0\nPOLYGONS 1 4\n3 0 1 9\n')
+write('vtk_negative_index.vtk', VTK_HEAD + 'POINTS 3 float\n0 0 0 1 0 0 0 1 0\nPOLYGONS 1 4\n3 0 -1 2\n')
+write('vtk_truncated_points.vtk', VTK_HEAD + 'POINTS 3 float\n0 0 0 1 0\n')
+write('vtk_huge_counts.vtk', VTK_HEAD + 'POINTS 2000000000 float\n0 0 0\n')
+write('vtk_truncated_polygons.vtk', VTK_HEAD + 'POINTS 3 float\n0 0 0 1 0 0 0 1 0\nPOLYGONS 1 4\n3 0\n')
+write('vtk_garbage.vtk', '# vtk DataFile Version 3.0\n' + 'x' * 100)
+# STL.
+write('stl_ascii_truncated.stl', 'solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n')
+tri = struct.pack('<12fH', 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0)
+write('stl_binary_count_too_large.stl', b'\0' * 80 + struct.pack('<I', 1000) + tri)
+write('stl_binary_count_too_small.stl', b'\0' * 80 + struct.pack('<I', 1) + tri * 3)
+write('stl_nan.stl', 'solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex nan 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid t\n')
+# XML.
+write('vtp_garbage.vtp', '<VTKFile type="PolyData"><PolyData><Piece NumberOfPoints="3"')
+write('vtu_garbage.vtu', 'not xml at all')
+# Random bytes with every extension.
+noise = bytes((i * 131 + 7) % 256 for i in range(512))
+for ext in ['obj', 'off', 'ply', 'vtk', 'stl', 'vtp', 'vtu']:
+    write('random.' + ext, noise)
+print(len(os.listdir(out)), 'files in', out)

@@ -7,7 +7,9 @@
 #include "vtkSoftwareShadingRenderer.h"
 #include "shadinglab/cpu/SoftwareRenderer.h"
 
+#include <vtkCellArray.h>
 #include <vtkImageData.h>
+#include <vtkPoints.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
@@ -572,6 +574,81 @@ TEST(CpuRendererTest, FastPhongStaysCloseToPhong)
     ASSERT_GT(specularSum / n, 0.05); // something lit to compare
     // The target: mean error under 1/255 at this tessellation.
     EXPECT_LT(mean, 1.0 / 255.0);
+  }
+}
+
+namespace
+{
+/// One polygon in the z = 0 plane through the given (x, y) corners.
+vtkPolyData* PolygonOf(const std::vector<std::pair<double, double>>& corners)
+{
+  vtkPolyData* pd = vtkPolyData::New();
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> polys;
+  polys->InsertNextCell(static_cast<vtkIdType>(corners.size()));
+  for (const auto& [x, y] : corners)
+  {
+    polys->InsertCellPoint(points->InsertNextPoint(x, y, 0.0));
+  }
+  pd->SetPoints(points);
+  pd->SetPolys(polys);
+  return pd;
+}
+
+/// Covered pixels of a flat, parallel-projected render of `mesh` seen from +z.
+int64_t CoveredPixels(const render::Mesh& mesh, render::PolygonHandling handling, bool& centre)
+{
+  render::Camera cam;
+  cam.position = { 0, 0, 5 };
+  cam.parallel = true;
+  cam.parallelScale = 1.25;
+  render::RenderOptions opt;
+  opt.width = opt.height = 200;
+  opt.mode = render::ShadingMode::Flat;
+  opt.polygons = handling;
+  const auto image = test::RenderCpu(mesh, cam, OneLight(Vec3f(0, 0, 1)), BlinnPhong(), opt);
+  int64_t covered = 0;
+  for (uint8_t c : image.covered)
+  {
+    covered += c;
+  }
+  centre = image.covered[100 * 200 + 100] != 0;
+  return covered;
+}
+} // namespace
+
+TEST(CpuRendererTest, LargeAndConcavePolygonsAreDrawnWhole)
+{
+  // A 1000-gon disk of radius 1: 200 px over 2.5 units, so pi (80 px)^2.
+  std::vector<std::pair<double, double>> disk;
+  for (int k = 0; k < 1000; ++k)
+  {
+    const double a = 2 * M_PI * k / 1000;
+    disk.emplace_back(std::cos(a), std::sin(a));
+  }
+  const double diskPixels = M_PI * 80.0 * 80.0;
+  // A ring (radii 1 and 0.5) with a keyhole slit: concave, hole in the middle.
+  std::vector<std::pair<double, double>> ring;
+  for (int k = 0; k <= 64; ++k)
+  {
+    const double a = 2 * M_PI * k / 64 * 0.999;
+    ring.emplace_back(std::cos(a), std::sin(a));
+  }
+  for (int k = 64; k >= 0; --k)
+  {
+    const double a = 2 * M_PI * k / 64 * 0.999;
+    ring.emplace_back(0.5 * std::cos(a), 0.5 * std::sin(a));
+  }
+  const double ringPixels = M_PI * (80.0 * 80.0 - 40.0 * 40.0);
+  for (auto handling : { render::PolygonHandling::Triangulate, render::PolygonHandling::Direct })
+  {
+    bool centre = false;
+    const int64_t d = CoveredPixels(MeshOf(PolygonOf(disk)), handling, centre);
+    EXPECT_NEAR(d, diskPixels, 0.01 * diskPixels) << "disk";
+    EXPECT_TRUE(centre);
+    const int64_t r = CoveredPixels(MeshOf(PolygonOf(ring)), handling, centre);
+    EXPECT_NEAR(r, ringPixels, 0.02 * ringPixels) << "ring";
+    EXPECT_FALSE(centre) << "the ring's hole is empty";
   }
 }
 

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "PolyDataMesh.h"
 
+#include "Geometry.h"
+
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
@@ -11,12 +13,45 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkPolygon.h>
 #include <vtkSmartPointer.h>
 #include <vtkTriangleFilter.h>
 #include <vtkUnsignedCharArray.h>
 
 namespace shadinglab::render
 {
+
+namespace
+{
+
+/// Largest polygon handed to the renderers whole: the CPU renderer clips a
+/// polygon at the near plane into at most one more vertex than it has, in a
+/// fixed buffer of 64 (Raster.h kMaxPolygonVertices).
+constexpr vtkIdType kMaxWholePolygon = 63;
+
+/// True when the polygon turns the same way at every corner (collinear
+/// corners allowed), measured against its Newell normal.
+bool IsConvex(vtkPoints* points, vtkIdList* ids)
+{
+  const vtkIdType n = ids->GetNumberOfIds();
+  auto at = [&](vtkIdType k) {
+    double p[3];
+    points->GetPoint(ids->GetId(k % n), p);
+    return Vec3<double>(p[0], p[1], p[2]);
+  };
+  const Vec3<double> normal = mesh::NewellAreaVector<double>(n, at);
+  for (vtkIdType k = 0; k < n; ++k)
+  {
+    const Vec3<double> a = at(k), b = at(k + 1), c = at(k + 2);
+    if (Dot(Cross(b - a, c - b), normal) < 0)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+} // namespace
 
 Mesh MeshFromPolyData(vtkPolyData* input)
 {
@@ -74,15 +109,43 @@ Mesh MeshFromPolyData(vtkPolyData* input)
   mesh.offsets.reserve(static_cast<size_t>(polys->GetNumberOfCells() + 1));
   mesh.offsets.push_back(0);
   mesh.connectivity.reserve(static_cast<size_t>(polys->GetNumberOfConnectivityIds()));
+  // Polygons the renderers cannot take whole (concave ones, which a fan or
+  // a scanline pairing of one span would fill wrongly, and ones with more
+  // than kMaxWholePolygon vertices) are triangulated by ear cutting; the
+  // triangles keep their polygon's cell normal. `polygonOf` maps back.
+  std::vector<vtkIdType> polygonOf;
+  polygonOf.reserve(static_cast<size_t>(polys->GetNumberOfCells()));
   vtkNew<vtkIdList> ids;
+  vtkNew<vtkPolygon> polygon;
+  vtkNew<vtkIdList> triangles;
   for (vtkIdType c = 0; c < polys->GetNumberOfCells(); ++c)
   {
     polys->GetCellAtId(c, ids);
-    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+    const vtkIdType n = ids->GetNumberOfIds();
+    if (n > 3 && (n > kMaxWholePolygon || !IsConvex(pd->GetPoints(), ids)))
+    {
+      polygon->Initialize(static_cast<int>(n), ids->GetPointer(0), pd->GetPoints());
+      triangles->Reset();
+      if (polygon->Triangulate(triangles) && triangles->GetNumberOfIds() >= 3)
+      {
+        for (vtkIdType t = 0; t + 2 < triangles->GetNumberOfIds(); t += 3)
+        {
+          for (int k = 0; k < 3; ++k)
+          {
+            mesh.connectivity.push_back(ids->GetId(triangles->GetId(t + k)));
+          }
+          mesh.offsets.push_back(static_cast<int64_t>(mesh.connectivity.size()));
+          polygonOf.push_back(c);
+        }
+        continue;
+      }
+    }
+    for (vtkIdType k = 0; k < n; ++k)
     {
       mesh.connectivity.push_back(ids->GetId(k));
     }
     mesh.offsets.push_back(static_cast<int64_t>(mesh.connectivity.size()));
+    polygonOf.push_back(c);
   }
   // Cell normals apply to polygons only when the polydata has no verts or
   // lines before them in cell order.
@@ -90,10 +153,10 @@ Mesh MeshFromPolyData(vtkPolyData* input)
   if (cn && cn->GetNumberOfComponents() == 3 && pd->GetNumberOfVerts() == 0 &&
     pd->GetNumberOfLines() == 0 && cn->GetNumberOfTuples() == polys->GetNumberOfCells())
   {
-    mesh.faceNormals.resize(static_cast<size_t>(3 * cn->GetNumberOfTuples()));
-    for (vtkIdType i = 0; i < cn->GetNumberOfTuples(); ++i)
+    mesh.faceNormals.resize(3 * polygonOf.size());
+    for (size_t i = 0; i < polygonOf.size(); ++i)
     {
-      const double* v = cn->GetTuple3(i);
+      const double* v = cn->GetTuple3(polygonOf[i]);
       for (int c = 0; c < 3; ++c)
       {
         mesh.faceNormals[3 * i + c] = static_cast<float>(v[c]);

@@ -340,6 +340,7 @@ TEST(CliTest, NormalsBadInputExitsTwoWithOneLine)
     "normals " + good + " --feature-angle 200" + out,     // angle out of range
     "normals " + good + " --weld 5" + out,                // absurd tolerance
     "normals " + good + " --out /tmp/x.xyz",              // unknown output format
+    "normals " + kData + "torus_96x48.vtp --subdivide 6" + out, // 37.7M faces: over budget
     "normals " + good + " --out /nonexistent-dir/x.vtp",  // unwritable
   };
   for (const auto& args : bad)

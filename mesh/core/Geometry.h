@@ -23,6 +23,12 @@ struct MeshView
   int64_t numberOfPolygons = 0;
 };
 
+/// Faces whose Newell area is below this fraction of the squared bounding
+/// diagonal are degenerate. 1e-20 is ~100x double's epsilon squared (the
+/// relative rounding of an area computed from coordinates of that scale),
+/// so only faces that are zero up to rounding count as degenerate.
+constexpr double kDegenerateRelativeArea = 1e-20;
+
 /**
  * Newell's method (Newell 1972, as given by Sutherland, Sproull & Schumacker
  * 1974): the area vector of a polygon of n vertices, twice its area times

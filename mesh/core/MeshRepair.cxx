@@ -19,12 +19,6 @@ namespace shadinglab::mesh
 namespace
 {
 
-/// Faces whose Newell area is below this fraction of the squared bounding
-/// diagonal are degenerate. 1e-20 is ~100x double's epsilon squared (the
-/// relative rounding of an area computed from coordinates of that scale),
-/// so only faces that are zero up to rounding are removed.
-constexpr double kDegenerateRelativeArea = 1e-20;
-
 /// Spatial-hash cells visited per T-junction edge query before falling back
 /// to scanning every point: bounds the cost of one very long edge.
 constexpr int64_t kMaxCellsPerQuery = 100000;

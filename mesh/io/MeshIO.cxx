@@ -3,6 +3,8 @@
 
 #include "MeshPrecheck.h"
 
+#include "Geometry.h"
+
 #include <vtkCellArray.h>
 #include <vtkDataSetSurfaceFilter.h>
 #include <vtkIdList.h>
@@ -272,6 +274,29 @@ void ValidateMesh(vtkPolyData* mesh, const std::string& what)
       throw MeshError("non-finite (NaN or Inf) coordinates at point " + std::to_string(i) +
         " of '" + what + "'");
     }
+  }
+  // At least one polygon with an area: a mesh of degenerate faces only
+  // (collinear or repeated points) has nothing to draw or to give normals
+  // to, and every command says so alike.
+  double bounds[6];
+  mesh->GetBounds(bounds);
+  const double diagonal2 = (bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
+    (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) + (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]);
+  bool anyArea = false;
+  vtkCellArray* polys = mesh->GetPolys();
+  for (vtkIdType c = 0; c < polys->GetNumberOfCells() && !anyArea; ++c)
+  {
+    polys->GetCellAtId(c, ids);
+    const Vec3<double> area = mesh::NewellAreaVector<double>(ids->GetNumberOfIds(), [&](int64_t k) {
+      double p[3];
+      pts->GetPoint(ids->GetId(k), p);
+      return Vec3<double>(p[0], p[1], p[2]);
+    });
+    anyArea = Length(area) > mesh::kDegenerateRelativeArea * diagonal2;
+  }
+  if (!anyArea)
+  {
+    throw MeshError("every polygon of '" + what + "' is degenerate (zero area): nothing to draw");
   }
 }
 

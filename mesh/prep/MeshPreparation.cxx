@@ -103,6 +103,14 @@ vtkSmartPointer<vtkPolyData> PrepareMesh(
   }
   if (o.subdivisionLevels > 0)
   {
+    const long long faces = current->GetNumberOfPolys() * (1LL << (2 * o.subdivisionLevels));
+    if (faces > kMaxSubdividedFaces)
+    {
+      throw std::invalid_argument("subdividing " + std::to_string(current->GetNumberOfPolys()) +
+        " faces " + std::to_string(o.subdivisionLevels) + " times would make " +
+        std::to_string(faces) + " faces (about " + std::to_string(faces * 160 / 1000000000) +
+        " GB); the limit is " + std::to_string(kMaxSubdividedFaces) + ": use fewer levels");
+    }
     vtkNew<vtkOpenSubdivRefine> refine;
     refine->SetInputData(current);
     refine->SetLevels(o.subdivisionLevels);

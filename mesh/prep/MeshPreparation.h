@@ -27,6 +27,14 @@ enum class SubdivisionScheme
 /// so 6 levels are 4096 faces per input face.
 constexpr int kMaxSubdivisionLevels = 6;
 
+/// Largest face count a subdivision may produce: OpenSubdiv's refiner keeps
+/// every level's topology (~100 bytes per face at the last level) and the
+/// output holds points, limit normals and connectivity (~60 bytes per
+/// face), so 2^25 (33.5M) faces is about 5.4 GB, a quarter of the 24 GiB
+/// machines this runs on. Asking for more is an error that says how many
+/// faces it would make, before any work starts.
+constexpr long long kMaxSubdividedFaces = 1LL << 25;
+
 struct PreparationOptions
 {
   bool repair = true;          ///< weld, degenerate removal, orientation, non-manifold (vtkMeshRepair)

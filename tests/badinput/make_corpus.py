@@ -38,6 +38,7 @@ write('off_index_too_large.off', 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 5\n')
 write('off_negative_index.off', 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n')
 write('off_huge_counts.off', 'OFF\n2000000000 2000000000 0\n0 0 0\n')
 write('off_truncated.off', 'OFF\n3 1 0\n0 0 0\n1 0 0\n')
+write('off_all_degenerate.off', 'OFF\n3 2 0\n0 0 0\n1 0 0\n2 0 0\n3 0 1 2\n3 0 0 1\n')
 write('off_huge_face_size.off', 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n2000000000 0 1 2\n')
 # PLY: indices, counts, truncation, missing coordinates.
 PLY_HEAD = 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n'

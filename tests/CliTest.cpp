@@ -9,6 +9,7 @@
 #include <fstream>
 #include <iterator>
 #include <sstream>
+#include <tuple>
 #include <vector>
 
 using shadinglab::testing::CountLines;
@@ -348,6 +349,47 @@ TEST(CliTest, NormalsBadInputExitsTwoWithOneLine)
     const auto r = RunCli(args);
     EXPECT_EQ(r.status, 2) << args;
     EXPECT_EQ(CountLines(r.err), 1) << args << ": " << r.err.substr(0, 300);
+  }
+}
+
+TEST(CliTest, RenderIsTheSameAtAnyScaleAndDistance)
+{
+  // One icosahedron at unit scale, 1e7 from the origin, and scaled by 1e-30
+  // and 1e30: meshes are converted in a local frame (in double) before the
+  // renderers' float, so all four pictures are the same, pixel for pixel.
+  const double t = (1 + std::sqrt(5.0)) / 2;
+  const double v[12][3] = { { -1, t, 0 }, { 1, t, 0 }, { -1, -t, 0 }, { 1, -t, 0 }, { 0, -1, t },
+    { 0, 1, t }, { 0, -1, -t }, { 0, 1, -t }, { t, 0, -1 }, { t, 0, 1 }, { -t, 0, -1 }, { -t, 0, 1 } };
+  const int f[20][3] = { { 0, 11, 5 }, { 0, 5, 1 }, { 0, 1, 7 }, { 0, 7, 10 }, { 0, 10, 11 },
+    { 1, 5, 9 }, { 5, 11, 4 }, { 11, 10, 2 }, { 10, 7, 6 }, { 7, 1, 8 }, { 3, 9, 4 }, { 3, 4, 2 },
+    { 3, 2, 6 }, { 3, 6, 8 }, { 3, 8, 9 }, { 4, 9, 5 }, { 2, 4, 11 }, { 6, 2, 10 }, { 8, 6, 7 },
+    { 9, 8, 1 } };
+  std::string reference;
+  for (const auto& [name, scale, offset] : { std::tuple<const char*, double, double>{ "unit", 1.0, 0.0 },
+         { "far", 1.0, 1e7 }, { "tiny", 1e-30, 0.0 }, { "huge", 1e30, 0.0 } })
+  {
+    std::ostringstream off;
+    off.precision(17);
+    off << "OFF\n12 20 0\n";
+    for (const auto& p : v)
+    {
+      off << offset + scale * p[0] << " " << offset + scale * p[1] << " " << offset + scale * p[2] << "\n";
+    }
+    for (const auto& q : f)
+    {
+      off << "3 " << q[0] << " " << q[1] << " " << q[2] << "\n";
+    }
+    const std::string in = WriteTemp(std::string("scale_") + name + ".off", off.str());
+    const std::string out = ::testing::TempDir() + "/shadinglab_scale_" + name + ".png";
+    const auto r = RunCli("render " + in + " --backend cpu --mode gouraud --size 160x120 --out " + out);
+    ASSERT_EQ(r.status, 0) << name << ": " << r.err;
+    std::ifstream png(out, std::ios::binary);
+    const std::string bytes((std::istreambuf_iterator<char>(png)), std::istreambuf_iterator<char>());
+    if (reference.empty())
+    {
+      reference = bytes;
+    }
+    EXPECT_EQ(bytes, reference) << name << " renders differently from the unit mesh";
   }
 }
 

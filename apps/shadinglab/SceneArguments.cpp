@@ -253,7 +253,10 @@ std::unique_ptr<SceneArguments> SceneFromArguments(int argc, char** argv, const 
       throw UsageError(e.what());
     }
   }
-  scene.mesh = render::MeshFromPolyData(polydata);
+  // The mesh in a local frame (centred, unit size, converted from double):
+  // camera and light positions given in world coordinates are mapped into
+  // it below, so far-off or tiny meshes render like unit ones.
+  scene.mesh = render::MeshFromPolyData(polydata, scene.frame);
   scene.scene.mesh = &scene.mesh;
   const render::Mesh& mesh = scene.mesh;
 
@@ -272,11 +275,13 @@ std::unique_ptr<SceneArguments> SceneFromArguments(int argc, char** argv, const 
   {
     if (args.Has("camera-position"))
     {
-      camera.position = ParseVector(args.Get("camera-position"), "--camera-position");
+      camera.position =
+        scene.frame.ToLocal(ParseVector(args.Get("camera-position"), "--camera-position"));
     }
     if (args.Has("focal-point"))
     {
-      camera.focalPoint = ParseVector(args.Get("focal-point"), "--focal-point");
+      camera.focalPoint =
+        scene.frame.ToLocal(ParseVector(args.Get("focal-point"), "--focal-point"));
     }
     if (Length(camera.position - camera.focalPoint) <= 0)
     {
@@ -372,6 +377,10 @@ std::unique_ptr<SceneArguments> SceneFromArguments(int argc, char** argv, const 
   {
     lighting.lights[0] = render::KeyLight(camera, lightIntensity);
     lighting.lightCount = 1;
+  }
+  else
+  {
+    render::ToLocal(scene.frame, lighting); // the given lights are in world coordinates
   }
   lighting.ambientIntensity = Vec3<double>(1, 1, 1);
 

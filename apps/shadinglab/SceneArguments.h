@@ -25,7 +25,8 @@ struct SceneArguments
   bool helpShown = false;
   std::string input;
   std::string backend; ///< "cpu", "gpu" or "auto"
-  render::Mesh mesh;
+  render::Mesh mesh;    ///< in `frame`'s local coordinates
+  render::WorldFrame frame;
   render::Scene scene; ///< scene.mesh points at `mesh`
   render::RenderOptions options;
   render::DisplayTransform display = render::DisplayTransform::Clamp;

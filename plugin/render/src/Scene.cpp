@@ -59,6 +59,30 @@ Camera FitCamera(const double bounds[6], double azimuthDeg, double elevationDeg,
   return cam;
 }
 
+void ToLocal(const WorldFrame& frame, Camera& camera)
+{
+  camera.position = frame.ToLocal(camera.position);
+  camera.focalPoint = frame.ToLocal(camera.focalPoint);
+  camera.nearClip = frame.LengthToLocal(camera.nearClip);
+  camera.farClip = frame.LengthToLocal(camera.farClip);
+  camera.parallelScale = frame.LengthToLocal(camera.parallelScale);
+}
+
+void ToLocal(const WorldFrame& frame, Lighting<double>& lighting)
+{
+  for (int j = 0; j < lighting.lightCount; ++j)
+  {
+    Light<double>& light = lighting.lights[j];
+    if (light.type == LightType::Point)
+    {
+      light.vector = frame.ToLocal(light.vector);
+      // c0 + c1 d + c2 d^2 with d = scale * d_local.
+      light.attenuation.y *= frame.scale;
+      light.attenuation.z *= frame.scale * frame.scale;
+    }
+  }
+}
+
 Light<double> KeyLight(const Camera& camera, double intensity)
 {
   const Vec3<double> toEye =

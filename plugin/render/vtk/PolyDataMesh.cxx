@@ -4,6 +4,8 @@
 #include "Geometry.h"
 
 #include <vtkCellArray.h>
+
+#include <cmath>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkFloatArray.h>
@@ -23,6 +25,8 @@ namespace shadinglab::render
 
 namespace
 {
+
+Mesh Convert(vtkPolyData* input, WorldFrame& frame, bool normalize);
 
 /// Largest polygon handed to the renderers whole: the CPU renderer clips a
 /// polygon at the near plane into at most one more vertex than it has, in a
@@ -55,6 +59,20 @@ bool IsConvex(vtkPoints* points, vtkIdList* ids)
 
 Mesh MeshFromPolyData(vtkPolyData* input)
 {
+  WorldFrame identity;
+  return Convert(input, identity, false);
+}
+
+Mesh MeshFromPolyData(vtkPolyData* input, WorldFrame& frame)
+{
+  return Convert(input, frame, true);
+}
+
+namespace
+{
+
+Mesh Convert(vtkPolyData* input, WorldFrame& frame, bool normalize)
+{
   vtkSmartPointer<vtkPolyData> pd = input;
   if (input->GetNumberOfStrips() > 0)
   {
@@ -67,15 +85,26 @@ Mesh MeshFromPolyData(vtkPolyData* input)
   }
   Mesh mesh;
   const vtkIdType np = pd->GetNumberOfPoints();
+  frame = WorldFrame();
+  if (normalize && np > 0)
+  {
+    double b[6];
+    pd->GetBounds(b);
+    const Vec3<double> lo(b[0], b[2], b[4]), hi(b[1], b[3], b[5]);
+    const double radius = 0.5 * Length(hi - lo);
+    frame.center = (lo + hi) * 0.5;
+    // A mesh of one point has no extent: keep its scale.
+    frame.scale = radius > 0 && std::isfinite(radius) ? radius : 1.0;
+  }
   mesh.points.resize(static_cast<size_t>(3 * np));
   for (vtkIdType i = 0; i < np; ++i)
   {
     double p[3];
     pd->GetPoint(i, p);
-    for (int c = 0; c < 3; ++c)
-    {
-      mesh.points[3 * i + c] = static_cast<float>(p[c]);
-    }
+    const Vec3<double> local = frame.ToLocal(Vec3<double>(p[0], p[1], p[2]));
+    mesh.points[3 * i] = static_cast<float>(local.x);
+    mesh.points[3 * i + 1] = static_cast<float>(local.y);
+    mesh.points[3 * i + 2] = static_cast<float>(local.z);
   }
   if (vtkDataArray* n = pd->GetPointData()->GetNormals())
   {
@@ -165,6 +194,8 @@ Mesh MeshFromPolyData(vtkPolyData* input)
   }
   return mesh;
 }
+
+} // namespace
 
 namespace
 {

@@ -18,6 +18,13 @@ namespace shadinglab::render
 Mesh MeshFromPolyData(vtkPolyData* polydata);
 
 /**
+ * The same in a local frame (see WorldFrame): points centred on their
+ * bounds and scaled to a unit bounding sphere in double before the
+ * conversion to float; `frame` says how to map world coordinates.
+ */
+Mesh MeshFromPolyData(vtkPolyData* polydata, WorldFrame& frame);
+
+/**
  * The inverse: points, point normals (active), colours as a float RGB
  * array in [0, 1] (active scalars, to be mapped as direct scalars), polygons
  * and cell normals (active). The caller owns the result (refcount 1).

@@ -29,6 +29,23 @@ struct Mesh
   void Bounds(double bounds[6]) const;
 };
 
+/**
+ * Where a mesh's local coordinates sit in the world: world = center +
+ * scale * local. Front ends convert meshes into a local frame centred on
+ * their bounds and scaled to a unit bounding sphere (in double, before the
+ * renderers' float), so a mesh far from the origin or at a scale near
+ * float's limits renders like the same mesh at unit scale; the camera and
+ * the lights, given in world coordinates, are mapped by ToLocal().
+ */
+struct WorldFrame
+{
+  Vec3<double> center{ 0, 0, 0 };
+  double scale = 1.0;
+
+  Vec3<double> ToLocal(const Vec3<double>& world) const { return (world - center) / scale; }
+  double LengthToLocal(double length) const { return length / scale; }
+};
+
 /// A vtkCamera-compatible description.
 struct Camera
 {
@@ -54,6 +71,13 @@ Camera FitCamera(const double bounds[6], double azimuthDeg, double elevationDeg,
 /// One key light above-left of the camera, in world coordinates: the default
 /// light of every front end (CLI, explorer, VTK classes).
 Light<double> KeyLight(const Camera& camera, double intensity = 1.0);
+
+/// A camera of `frame`'s world in its local coordinates (position, focal
+/// point, clipping range, parallel scale; directions unchanged).
+void ToLocal(const WorldFrame& frame, Camera& camera);
+/// Lights of `frame`'s world in its local coordinates (point lights'
+/// positions and distance attenuation; directions unchanged).
+void ToLocal(const WorldFrame& frame, Lighting<double>& lighting);
 
 /// Everything a renderer draws. The mesh is borrowed: it must outlive the
 /// Render call. With lighting.lightCount == 0 a headlight (a directional

@@ -3,6 +3,8 @@
 // non-manifold resolution through OpenMesh, T-junction repair.
 #include "AnalyticMeshes.h"
 #include "MeshIO.h"
+#include "MeshArrays.h"
+#include "RepairCheck.h"
 #include "vtkMeshRepair.h"
 
 #include <vtkCellArray.h>
@@ -217,4 +219,51 @@ TEST(RepairTest, TJunctionsAreSplit)
   repair->SetInputData(Icosphere(2));
   repair->Update();
   EXPECT_EQ(repair->GetNumberOfTJunctionsFixed(), 0);
+}
+
+TEST(RepairCheckTest, FindsWhatTheRepairWouldChangeAndNothingOnCleanMeshes)
+{
+  namespace slm = shadinglab::mesh;
+  // An octahedron: closed, outward, manifold.
+  std::vector<double> points = { 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1, 0, 0, 0, 1, 0, 0, -1 };
+  std::vector<int64_t> faces = { 0, 2, 4, 2, 1, 4, 1, 3, 4, 3, 0, 4, 2, 0, 5, 1, 2, 5, 3, 1, 5, 0,
+    3, 5 };
+  auto check = [&](const std::vector<int64_t>& conn) {
+    std::vector<int64_t> offsets;
+    for (size_t k = 0; k <= conn.size(); k += 3)
+    {
+      offsets.push_back(static_cast<int64_t>(k));
+    }
+    const slm::MeshView view{ points.data(), static_cast<int64_t>(points.size() / 3),
+      offsets.data(), conn.data(), static_cast<int64_t>(offsets.size() - 1) };
+    return slm::CheckRepairNeeds(view);
+  };
+  EXPECT_FALSE(check(faces).Any());
+  auto oneFlipped = faces;
+  std::swap(oneFlipped[1], oneFlipped[2]);
+  EXPECT_EQ(check(oneFlipped).inconsistentEdges, 3);
+  auto allFlipped = faces;
+  for (size_t k = 0; k < allFlipped.size(); k += 3)
+  {
+    std::swap(allFlipped[k + 1], allFlipped[k + 2]);
+  }
+  const auto inward = check(allFlipped);
+  EXPECT_EQ(inward.inconsistentEdges, 0);
+  EXPECT_EQ(inward.inwardComponents, 1);
+  auto degenerate = faces;
+  degenerate.insert(degenerate.end(), { 0, 0, 1 });
+  EXPECT_EQ(check(degenerate).degenerate, 1);
+  auto fin = faces; // a third face on edge 0-2: non-manifold (and the octahedron open no more)
+  points.insert(points.end(), { 2, 2, 0 });
+  fin.insert(fin.end(), { 0, 6, 2 });
+  EXPECT_EQ(check(fin).nonManifoldEdges, 1);
+  // The shipped datasets that the repair leaves alone pass the check.
+  for (const char* name : { "icosphere_3.vtp", "torus_48x24.vtp" })
+  {
+    vtkSmartPointer<vtkPolyData> pd;
+    pd.TakeReference(shadinglab::ReadMesh(std::string(SHADINGLAB_SOURCE_DIR) + "/datasets/" + name));
+    shadinglab::mesh::FlatPolygons flat;
+    shadinglab::mesh::FlatPolygonsFromPolyData(pd, flat);
+    EXPECT_FALSE(slm::CheckRepairNeeds(flat).Any()) << name;
+  }
 }

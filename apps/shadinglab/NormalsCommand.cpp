@@ -92,7 +92,7 @@ int RunNormals(int argc, char** argv)
                 "\"welded\":%lld,\"t_junctions_fixed\":%lld,\"degenerate_removed\":%lld,"
                 "\"nonmanifold_edges\":%lld,\"duplicated_points\":%lld,\"flipped\":%lld,"
                 "\"crease_edges\":%lld,\"split_points\":%lld,\"subdivision_levels\":%d,"
-                "\"scheme\":\"%s\",\"weights\":\"%s\"}\n",
+                "\"scheme\":\"%s\",\"weights\":\"%s\",\"repair_skipped\":%s}\n",
       static_cast<long long>(input->GetNumberOfPoints()),
       static_cast<long long>(input->GetNumberOfCells()),
       static_cast<long long>(output->GetNumberOfPoints()),
@@ -102,7 +102,8 @@ int RunNormals(int argc, char** argv)
       static_cast<long long>(report.nonManifoldEdges),
       static_cast<long long>(report.duplicatedPoints), static_cast<long long>(report.flipped),
       static_cast<long long>(report.creaseEdges), static_cast<long long>(report.splitPoints),
-      options.subdivisionLevels, report.scheme.c_str(), report.weights.c_str());
+      options.subdivisionLevels, report.scheme.c_str(), report.weights.c_str(),
+      report.repairSkipped ? "true" : "false");
   }
   return 0;
 }

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "MeshPreparation.h"
 
+#include "MeshArrays.h"
+#include "RepairCheck.h"
 #include "vtkMeshRepair.h"
 #include "vtkOpenSubdivRefine.h"
 #include "vtkWeightedPolyDataNormals.h"
@@ -71,19 +73,14 @@ std::string ValidatePreparationOptions(const PreparationOptions& o)
   return {};
 }
 
-vtkSmartPointer<vtkPolyData> PrepareMesh(
+namespace
+{
+
+/// The repair filter with the options' settings; fills the report's counts.
+vtkSmartPointer<vtkPolyData> Repair(
   vtkPolyData* input, const PreparationOptions& o, PreparationReport& report)
 {
-  const std::string problem = ValidatePreparationOptions(o);
-  if (!problem.empty())
-  {
-    throw std::invalid_argument(problem);
-  }
   vtkSmartPointer<vtkPolyData> current = input;
-  if (!o.repair)
-  {
-    return current;
-  }
   vtkNew<vtkMeshRepair> repair;
   repair->SetInputData(current);
   repair->SetWeld(o.weld);
@@ -97,6 +94,39 @@ vtkSmartPointer<vtkPolyData> PrepareMesh(
   report.nonManifoldEdges = repair->GetNumberOfNonManifoldEdges();
   report.duplicatedPoints = repair->GetNumberOfDuplicatedPoints();
   report.flipped = repair->GetNumberOfFlippedCells();
+  return current;
+}
+
+} // namespace
+
+vtkSmartPointer<vtkPolyData> PrepareMesh(
+  vtkPolyData* input, const PreparationOptions& o, PreparationReport& report)
+{
+  const std::string problem = ValidatePreparationOptions(o);
+  if (!problem.empty())
+  {
+    throw std::invalid_argument(problem);
+  }
+  vtkSmartPointer<vtkPolyData> current = input;
+  if (!o.repair)
+  {
+    return current;
+  }
+  // Repair only when asked for a weld or T-junctions, or when the cheap
+  // check finds something to repair: a clean 5M-triangle mesh does not pay
+  // for the OpenMesh halfedge build.
+  bool needed = o.weld || o.fixTJunctions || input->GetNumberOfStrips() > 0;
+  if (!needed)
+  {
+    FlatPolygons flat;
+    FlatPolygonsFromPolyData(input, flat);
+    needed = CheckRepairNeeds(flat).Any();
+    report.repairSkipped = !needed;
+  }
+  if (needed)
+  {
+    current = Repair(input, o, report);
+  }
   if (current->GetNumberOfPolys() == 0)
   {
     throw std::invalid_argument("no polygon left after removing degenerate faces");

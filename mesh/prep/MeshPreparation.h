@@ -55,6 +55,7 @@ struct PreparationReport
             duplicatedPoints = 0, flipped = 0, creaseEdges = 0, splitPoints = 0;
   std::string scheme = "none";
   std::string weights = "area";
+  bool repairSkipped = false; ///< the cheap check found nothing to repair
 };
 
 const char* NormalWeightingName(NormalWeighting weighting);
@@ -65,7 +66,9 @@ bool ParseSubdivisionScheme(const std::string& name, SubdivisionScheme& scheme);
 std::string ValidatePreparationOptions(const PreparationOptions& options);
 
 /**
- * Runs the step. Without options.repair the input is returned as is.
+ * Runs the step. Without options.repair the input is returned as is; with
+ * it, the repair filter runs when a weld or T-junctions are asked for or
+ * when CheckRepairNeeds finds something (else the report says it skipped).
  * Throws std::invalid_argument with one line for invalid options, a mesh
  * left without polygons, or a failed subdivision.
  */

@@ -393,6 +393,29 @@ TEST(CliTest, RenderIsTheSameAtAnyScaleAndDistance)
   }
 }
 
+TEST(CliTest, RenderMakesInconsistentOrientationConsistent)
+{
+  // Two triangles of a square, the second wound the other way: their shared
+  // edge runs the same way in both. Render says so and repairs it, and the
+  // picture equals the consistently wound square's.
+  const std::string good = WriteTemp("square_good.off",
+    "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 2 3\n");
+  const std::string bad = WriteTemp("square_bad.off",
+    "OFF\n4 2 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 0 3 2\n");
+  std::string pictures[2];
+  int k = 0;
+  for (const std::string& in : { good, bad })
+  {
+    const std::string out = ::testing::TempDir() + "/shadinglab_orient_" + std::to_string(k) + ".png";
+    const auto r = RunCli("render " + in + " --backend cpu --mode gouraud --size 64x64 --out " + out);
+    ASSERT_EQ(r.status, 0) << r.err;
+    EXPECT_EQ(r.err.find("oriented inconsistently") != std::string::npos, k == 1) << r.err;
+    std::ifstream png(out, std::ios::binary);
+    pictures[k++].assign(std::istreambuf_iterator<char>(png), std::istreambuf_iterator<char>());
+  }
+  EXPECT_EQ(pictures[0], pictures[1]);
+}
+
 TEST(CliTest, NormalsRefusesToOverwriteItsInput)
 {
   // A copy of a dataset as the input, and --out naming that same file.

@@ -152,6 +152,10 @@ int RunCompare(int argc, char** argv)
   }
   WritePng(canvasW, canvasH, canvas, request->args.Get("out", "compare.png"));
   std::cerr << autoNotice;
+  if (!request->notices.empty())
+  {
+    std::cerr << "shadinglab compare: notice: '" << request->input << "': " << request->notices << "\n";
+  }
   return 0;
 }
 

@@ -49,6 +49,10 @@ int RunRender(int argc, char** argv)
               << "' has no point normals; using area-weighted vertex normals\n";
   }
   std::cerr << autoNotice;
+  if (!request->notices.empty())
+  {
+    std::cerr << "shadinglab render: notice: '" << request->input << "': " << request->notices << "\n";
+  }
 
   if (args.Has("stats"))
   {

@@ -4,7 +4,9 @@
 #include "Commands.h"
 #include "GpuRenderer.h"
 #include "MeshIO.h"
+#include "MeshArrays.h"
 #include "MeshPipeline.h"
+#include "RepairCheck.h"
 #include "PolyDataMesh.h"
 #include "shadinglab/cpu/SoftwareRenderer.h"
 
@@ -240,13 +242,28 @@ std::unique_ptr<SceneArguments> SceneFromArguments(int argc, char** argv, const 
     throw UsageError(e.what());
   }
   scene.input = input;
-  if (WantsMeshPipeline(args))
+  mesh::PreparationOptions preparation = MeshPipelineFromArguments(args, false);
+  if (!WantsMeshPipeline(args))
+  {
+    // Faces whose neighbours run their shared edges the same way average
+    // opposite normals into speckles: make the orientation consistent
+    // (only the repair; the renderers make their own normals).
+    mesh::FlatPolygons flat;
+    mesh::FlatPolygonsFromPolyData(polydata, flat);
+    if (polydata->GetNumberOfStrips() == 0 && mesh::CheckRepairNeeds(flat).inconsistentEdges > 0)
+    {
+      preparation.repair = true;
+      preparation.computeNormals = false;
+      scene.notices += "faces oriented inconsistently: made consistent (as 'normals' does)";
+    }
+  }
+  if (preparation.repair)
   {
     // The same filters as 'shadinglab normals'.
     mesh::PreparationReport report;
     try
     {
-      polydata = mesh::PrepareMesh(polydata, MeshPipelineFromArguments(args, false), report);
+      polydata = mesh::PrepareMesh(polydata, preparation, report);
     }
     catch (const std::invalid_argument& e)
     {

@@ -30,6 +30,7 @@ struct SceneArguments
   render::Scene scene; ///< scene.mesh points at `mesh`
   render::RenderOptions options;
   render::DisplayTransform display = render::DisplayTransform::Clamp;
+  std::string notices; ///< said after success (errors stay one line)
 };
 
 /// The options 'render' and 'compare' accept, in their --help.

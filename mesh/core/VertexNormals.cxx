@@ -20,21 +20,12 @@ namespace
 /// real mesh's scale yet above double's smallest normal (2.2e-308).
 constexpr double kTinyWeight = 1e-300;
 
-struct V3
-{
-  double x, y, z;
-};
+/// The project's one vector type (the model's Vec3, in double).
+using V3 = Vec3<double>;
+
 inline V3 Sub(const double* a, const double* b)
 {
   return { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
-}
-inline V3 CrossV(const V3& a, const V3& b)
-{
-  return { a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x };
-}
-inline double DotV(const V3& a, const V3& b)
-{
-  return a.x * b.x + a.y * b.y + a.z * b.z;
 }
 
 /// Area vector of polygon p: twice its area times the unit normal (Geometry.h).
@@ -46,11 +37,10 @@ V3 AreaVector(const MeshView& m, int64_t p)
     const double* p0 = m.points + 3 * m.connectivity[b];
     const double* p1 = m.points + 3 * m.connectivity[b + 1];
     const double* p2 = m.points + 3 * m.connectivity[b + 2];
-    return CrossV(Sub(p1, p0), Sub(p2, p0));
+    return Cross(Sub(p1, p0), Sub(p2, p0));
   }
-  const Vec3<double> n = NewellAreaVector<double>(
+  return NewellAreaVector<double>(
     e - b, [&](int64_t k) { return PointOf(m.points, m.connectivity[b + k]); });
-  return { n.x, n.y, n.z };
 }
 
 /// The contribution of polygon p's corner k (vertex connectivity[b + k]).
@@ -77,7 +67,7 @@ inline V3 CornerContribution(const MeshView& m, int64_t b, int64_t n, int64_t k,
       const double* prev = m.points + 3 * m.connectivity[b + (k + n - 1) % n];
       const double* next = m.points + 3 * m.connectivity[b + (k + 1) % n];
       const V3 e1 = Sub(next, v), e2 = Sub(prev, v);
-      const double l1 = DotV(e1, e1), l2 = DotV(e2, e2);
+      const double l1 = Dot(e1, e1), l2 = Dot(e2, e2);
       if (l1 < kTinyWeight || l2 < kTinyWeight || areaLength < kTinyWeight)
       {
         return { 0, 0, 0 };
@@ -86,12 +76,12 @@ inline V3 CornerContribution(const MeshView& m, int64_t b, int64_t n, int64_t k,
       {
         // Max 1999, "Weights for Computing Vertex Normals from Facet
         // Normals", eq. 5: (e1 x e2) / (|e1|^2 |e2|^2).
-        const V3 c = CrossV(e1, e2);
+        const V3 c = Cross(e1, e2);
         const double s = 1.0 / (l1 * l2);
         return { c.x * s, c.y * s, c.z * s };
       }
       // Thurmer & Wuthrich 1998: angle at the corner times the unit normal.
-      const double cosA = std::clamp(DotV(e1, e2) / std::sqrt(l1 * l2), -1.0, 1.0);
+      const double cosA = std::clamp(Dot(e1, e2) / std::sqrt(l1 * l2), -1.0, 1.0);
       const double s = AcosAbramowitzStegun(cosA) / areaLength;
       return { areaVector.x * s, areaVector.y * s, areaVector.z * s };
     }
@@ -142,7 +132,7 @@ void ComputeVertexNormalsNoSplit(
       }
       continue;
     }
-    const double len = std::sqrt(DotV(a, a));
+    const double len = std::sqrt(Dot(a, a));
     if (n == 3 && (weighting == NormalWeighting::Max || weighting == NormalWeighting::Angle) &&
       len >= kTinyWeight)
     {
@@ -153,7 +143,7 @@ void ComputeVertexNormalsNoSplit(
       const double* p1 = m.points + 3 * i1;
       const double* p2 = m.points + 3 * i2;
       const V3 e01 = Sub(p1, p0), e12 = Sub(p2, p1), e20 = Sub(p0, p2);
-      const double l01 = DotV(e01, e01), l12 = DotV(e12, e12), l20 = DotV(e20, e20);
+      const double l01 = Dot(e01, e01), l12 = Dot(e12, e12), l20 = Dot(e20, e20);
       if (l01 < kTinyWeight || l12 < kTinyWeight || l20 < kTinyWeight)
       {
         continue;
@@ -221,7 +211,7 @@ NormalResult ComputeVertexNormals(const MeshView& m, const NormalOptions& opt)
   for (int64_t p = 0; p < np; ++p)
   {
     area[p] = AreaVector(m, p);
-    areaLength[p] = std::sqrt(DotV(area[p], area[p]));
+    areaLength[p] = std::sqrt(Dot(area[p], area[p]));
   }
 
   // Vertex -> corners (CSR by counting sort): corner index c = offset + k.
@@ -349,7 +339,7 @@ NormalResult ComputeVertexNormals(const MeshView& m, const NormalOptions& opt)
           const int32_t a = ends[i].local, b = ends[i + 1].local;
           const int64_t pa = cornerPolygon[corners[cb + a]], pb = cornerPolygon[corners[cb + b]];
           // cos(dihedral) < cosFeature, without dividing: a.b < cos |a||b|.
-          const bool crease = DotV(area[pa], area[pb]) < cosFeature * areaLength[pa] * areaLength[pb] ||
+          const bool crease = Dot(area[pa], area[pb]) < cosFeature * areaLength[pa] * areaLength[pb] ||
             isFeature(v, w);
           if (crease)
           {

@@ -648,3 +648,53 @@ TEST(GpuParityGLTest, ShadersRebuildOnlyForVariantChanges)
   std::printf("shader builds over the sequence: %d (variants: %s)\n", settled,
     mapper->GetLastVariant().c_str());
 }
+
+TEST(GpuParityGLTest, TranslucentActorsAreDrawn)
+{
+  if (!HaveGpu())
+  {
+    GTEST_SKIP() << "no X display with OpenGL";
+  }
+  // An actor with opacity 0.4 goes through VTK's translucent pass: it must
+  // be drawn (plain and composite mapper), blended with the background.
+  auto torus = WithExactNormals(sl::datasets::MakeTorus(1.0, 0.4, 48, 24));
+  for (bool composite : { false, true })
+  {
+    vtkSmartPointer<vtkMapper> mapper;
+    if (composite)
+    {
+      auto m = vtkSmartPointer<vtkShadingLabCompositePolyDataMapper>::New();
+      m->SetInputDataObject(torus);
+      m->SetMaterial(BlinnPhong());
+      mapper = m;
+    }
+    else
+    {
+      auto m = vtkSmartPointer<vtkShadingLabPolyDataMapper>::New();
+      m->SetInputData(torus);
+      m->SetMaterial(BlinnPhong());
+      mapper = m;
+    }
+    double means[2];
+    for (int pass = 0; pass < 2; ++pass)
+    {
+      vtkNew<vtkActor> actor;
+      actor->SetMapper(mapper);
+      actor->GetProperty()->SetOpacity(pass == 0 ? 1.0 : 0.4);
+      vtkNew<vtkRenderer> ren;
+      ren->AddActor(actor);
+      ren->SetBackground(0.0, 0.0, 0.0);
+      SetCamera(ren, Camera());
+      auto window = RenderOffscreen(ren, 160, 120);
+      const auto image = Grab(window);
+      double sum = 0;
+      for (float v : image.rgb)
+      {
+        sum += v;
+      }
+      means[pass] = sum / image.rgb.size();
+    }
+    EXPECT_GT(means[1], 0.05 * means[0]) << (composite ? "composite" : "plain") << " translucent not drawn";
+    EXPECT_LT(means[1], 0.9 * means[0]) << (composite ? "composite" : "plain") << " not blended";
+  }
+}

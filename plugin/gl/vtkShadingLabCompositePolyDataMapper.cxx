@@ -3,7 +3,9 @@
 
 #include "vtkShadingLabPolyDataMapper.h"
 
+#include <vtkActor.h>
 #include <vtkObjectFactory.h>
+#include <vtkProperty.h>
 
 vtkStandardNewMacro(vtkShadingLabCompositePolyDataMapper);
 
@@ -44,6 +46,45 @@ void vtkShadingLabCompositePolyDataMapper::Render(vtkRenderer* ren, vtkActor* ac
     }
   }
   this->Superclass::Render(ren, act);
+  // VTK 9.2's vtkCompositePolyDataMapper draws a block in the translucent
+  // pass only when the block's own colours are translucent, so an actor made
+  // translucent by its opacity drew nothing: draw those blocks here, with
+  // the colouring the superclass would have handed them.
+  if (act->IsRenderingTranslucentPolygonalGeometry() && act->GetProperty()->GetOpacity() < 1.0)
+  {
+    for (auto& m : this->BlockMappers)
+    {
+      vtkShadingLabPolyDataMapper* sm = m;
+      if (!sm || !sm->GetInput() || !sm->HasOpaqueGeometry())
+      {
+        continue; // gone, empty, or already drawn by the superclass
+      }
+      if (sm->GetClippingPlanes() != this->ClippingPlanes)
+      {
+        sm->SetClippingPlanes(this->ClippingPlanes);
+      }
+      sm->SetLookupTable(this->GetLookupTable());
+      sm->SetScalarVisibility(this->GetScalarVisibility());
+      sm->SetUseLookupTableScalarRange(this->GetUseLookupTableScalarRange());
+      sm->SetScalarRange(this->GetScalarRange());
+      sm->SetColorMode(this->GetColorMode());
+      sm->SetInterpolateScalarsBeforeMapping(this->GetInterpolateScalarsBeforeMapping());
+      sm->SetScalarMode(this->GetScalarMode());
+      if (this->ScalarMode == VTK_SCALAR_MODE_USE_POINT_FIELD_DATA ||
+        this->ScalarMode == VTK_SCALAR_MODE_USE_CELL_FIELD_DATA)
+      {
+        if (this->ArrayAccessMode == VTK_GET_ARRAY_BY_ID)
+        {
+          sm->ColorByArrayComponent(this->ArrayId, this->ArrayComponent);
+        }
+        else
+        {
+          sm->ColorByArrayComponent(this->ArrayName, this->ArrayComponent);
+        }
+      }
+      sm->Render(ren, act);
+    }
+  }
 }
 
 int vtkShadingLabCompositePolyDataMapper::GetShaderBuildCount()

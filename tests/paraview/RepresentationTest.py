@@ -183,5 +183,33 @@ check(difference(creased, faceted) < difference(smooth, faceted),
       'creased Phong is closer to flat than smooth Phong is (%.2f < %.2f)'
       % (difference(creased, faceted), difference(smooth, faceted)))
 
+# 4. Opacity and multiblock data.
+coarse_rep.Visibility = 0
+rep.Visibility = 1
+rep.ShadingMode = 'Phong'
+rep.Opacity = 1.0
+opaque = shot('opacity_1')
+rep.Opacity = 0.4
+translucent = shot('opacity_04')
+mask = covered(opaque) & covered(translucent)
+check(mask.sum() > 5000 and numpy.abs(opaque[mask] - translucent[mask]).mean() > 10,
+      'opacity 0.4 lets the background through (mean change %.1f)'
+      % numpy.abs(opaque[mask] - translucent[mask]).mean())
+rep.Opacity = 1.0
+rep.Visibility = 0
+group = GroupDatasets(Input=[elevation, OpenDataFile(coarse)])
+group_rep = Show(group, view)
+group_rep.Representation = 'ShadingLab Surface'
+group_rep.ShadingMode = 'Gouraud'
+ColorBy(group_rep, ('POINTS', 'Elevation'))
+ResetCamera(view)
+blocks = shot('multiblock')
+check(covered(blocks).sum() > 5000, 'multiblock data draws (%d pixels)' % covered(blocks).sum())
+group_rep.ShadingMode = 'Flat'
+flat_blocks = shot('multiblock_flat')
+check(difference(blocks, flat_blocks) > 1.0,
+      'multiblock: the shading mode reaches every block (flat vs gouraud %.2f)'
+      % difference(blocks, flat_blocks))
+
 print('%d failure(s)' % len(failures))
 sys.exit(1 if failures else 0)

@@ -3,8 +3,11 @@
 #include "AnalyticMeshes.h"
 #include "MeshIO.h"
 
+#include <vtkDataArray.h>
+#include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
+#include <vtkUnsignedCharArray.h>
 
 #include <gtest/gtest.h>
 
@@ -131,4 +134,26 @@ TEST(MeshIOTest, UnwritablePathIsAnError)
       EXPECT_NE(std::string(e.what()).find("cannot write"), std::string::npos) << e.what();
     }
   }
+}
+
+TEST(MeshIOTest, ColouredAndNormalOffVariants)
+{
+  // COFF: colours as 0..255 integers; NOFF: normals after the coordinates.
+  vtkSmartPointer<vtkPolyData> coff;
+  coff.TakeReference(shadinglab::ReadMesh(TempFile("c.off",
+    "COFF\n3 1 0\n0 0 0 255 0 0\n1 0 0 0 255 0\n0 1 0 0 0 255\n3 0 1 2\n")));
+  auto* colours = vtkUnsignedCharArray::SafeDownCast(coff->GetPointData()->GetScalars());
+  ASSERT_NE(colours, nullptr);
+  EXPECT_EQ(colours->GetValue(0), 255);
+  EXPECT_EQ(colours->GetValue(4), 255);
+  EXPECT_EQ(colours->GetValue(8), 255);
+  EXPECT_EQ(colours->GetValue(1), 0);
+  vtkSmartPointer<vtkPolyData> noff;
+  noff.TakeReference(shadinglab::ReadMesh(TempFile("n.off",
+    "NOFF\n3 1 0\n0 0 0 0 0 1\n1 0 0 0 0 1\n0 1 0 0 0 1\n3 0 1 2\n")));
+  ASSERT_NE(noff->GetPointData()->GetNormals(), nullptr);
+  EXPECT_EQ(noff->GetPointData()->GetNormals()->GetComponent(2, 2), 1.0);
+  // A .vtp that is not XML says what it is not.
+  EXPECT_NE(ErrorOf(TempFile("g.vtp", "solid this is an STL")).find("not a VTK XML"),
+    std::string::npos);
 }

@@ -8,6 +8,9 @@
 #include <vtkCellArray.h>
 #include <vtkDataSetSurfaceFilter.h>
 #include <vtkIdList.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkPointData.h>
+#include <vtkDoubleArray.h>
 #include <vtkLogger.h>
 #include <vtkNew.h>
 #include <vtkOBJReader.h>
@@ -105,6 +108,16 @@ vtkSmartPointer<vtkPolyData> ReadOff(const std::string& path)
   }
   size_t row = 0;
   std::vector<std::string> counts = lines[0];
+  // Geomview's header prefixes: C (vertex colours) and N (vertex normals),
+  // read as point scalars and normals; in each vertex line the normal comes
+  // before the colour. Other prefixes (ST, 4, n) are refused below.
+  bool colours = false, normals = false;
+  if (counts[0] == "COFF" || counts[0] == "NOFF" || counts[0] == "CNOFF")
+  {
+    colours = counts[0][0] == 'C';
+    normals = counts[0].find('N') != std::string::npos;
+    counts[0] = "OFF";
+  }
   if (counts[0] == "OFF")
   {
     counts.erase(counts.begin());
@@ -141,12 +154,18 @@ vtkSmartPointer<vtkPolyData> ReadOff(const std::string& path)
   auto points = vtkSmartPointer<vtkPoints>::New();
   points->SetDataTypeToDouble();
   points->SetNumberOfPoints(static_cast<vtkIdType>(nv));
+  vtkNew<vtkDoubleArray> normalArray;
+  normalArray->SetName("Normals");
+  normalArray->SetNumberOfComponents(3);
+  std::vector<double> colourValues;
+  const size_t needed = 3 + (normals ? 3 : 0) + (colours ? 3 : 0);
   for (vtkIdType i = 0; i < static_cast<vtkIdType>(nv); ++i, ++row)
   {
     const auto& tokens = lines[row];
-    if (tokens.size() < 3)
+    if (tokens.size() < needed)
     {
-      throw MeshError(bad + "vertex " + std::to_string(i) + " has fewer than 3 coordinates");
+      throw MeshError(bad + "vertex " + std::to_string(i) + " has fewer than " +
+        std::to_string(needed) + " numbers");
     }
     double p[3];
     for (int c = 0; c < 3; ++c)
@@ -154,6 +173,23 @@ vtkSmartPointer<vtkPolyData> ReadOff(const std::string& path)
       p[c] = number(tokens[c], "vertex coordinate");
     }
     points->SetPoint(i, p);
+    size_t at = 3;
+    if (normals)
+    {
+      double n[3];
+      for (int c = 0; c < 3; ++c)
+      {
+        n[c] = number(tokens[at++], "vertex normal");
+      }
+      normalArray->InsertNextTuple(n);
+    }
+    if (colours)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        colourValues.push_back(number(tokens[at++], "vertex colour"));
+      }
+    }
   }
   auto polys = vtkSmartPointer<vtkCellArray>::New();
   std::vector<vtkIdType> ids;
@@ -180,6 +216,26 @@ vtkSmartPointer<vtkPolyData> ReadOff(const std::string& path)
   auto mesh = vtkSmartPointer<vtkPolyData>::New();
   mesh->SetPoints(points);
   mesh->SetPolys(polys);
+  if (normals)
+  {
+    mesh->GetPointData()->SetNormals(normalArray);
+  }
+  if (colours)
+  {
+    // Colours are 0..255 integers or 0..1 reals: the largest value tells.
+    const double largest = *std::max_element(colourValues.begin(), colourValues.end());
+    const double scale = largest > 1.0 ? 1.0 : 255.0;
+    vtkNew<vtkUnsignedCharArray> rgb;
+    rgb->SetName("Colors");
+    rgb->SetNumberOfComponents(3);
+    rgb->SetNumberOfTuples(static_cast<vtkIdType>(nv));
+    for (size_t k = 0; k < colourValues.size(); ++k)
+    {
+      const double v = std::clamp(colourValues[k] * scale, 0.0, 255.0);
+      rgb->SetValue(static_cast<vtkIdType>(k), static_cast<unsigned char>(std::lround(v)));
+    }
+    mesh->GetPointData()->SetScalars(rgb);
+  }
   return mesh;
 }
 
@@ -335,6 +391,12 @@ vtkPolyData* ReadMesh(const std::string& path)
   } restore{ warnings, verbosity };
   if (ext == "vtp")
   {
+    vtkNew<vtkXMLPolyDataReader> probe;
+    if (!probe->CanReadFile(path.c_str()))
+    {
+      throw MeshError("cannot read '" + path + "': not a VTK XML PolyData file (malformed, "
+                                               "truncated or another type)");
+    }
     mesh = ReadWith<vtkXMLPolyDataReader>(path);
   }
   else if (ext == "ply")
@@ -373,6 +435,11 @@ vtkPolyData* ReadMesh(const std::string& path)
     else
     {
       auto reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
+      if (!reader->CanReadFile(path.c_str()))
+      {
+        throw MeshError("cannot read '" + path + "': not a VTK XML UnstructuredGrid file "
+                                                 "(malformed, truncated or another type)");
+      }
       reader->SetFileName(path.c_str());
       reader->Update();
       if (reader->GetErrorCode() != 0)

@@ -1,7 +1,8 @@
 # ShadingLab on several MPI ranks: the same pipeline (RedistributeDataSet,
 # Extract Surface, ShadingLab Normals, ShadingLab Surface) in pvbatch on 1
 # and on 2 ranks must give the same normals at every point (partition
-# boundaries included) and the same image (mean <= 1/255).
+# boundaries included) and the same image (mean <= 1/255); ShadingLab
+# Subdivision must put every point where the serial run puts it (no seam).
 #
 #   pvpython MpiTest.py PLUGIN MESH OUTDIR      (the driver; runs mpiexec)
 #   pvbatch MpiTest.py --worker PLUGIN MESH OUT (one run, on rank 0)
@@ -45,6 +46,10 @@ def worker(plugin, mesh, out):
     numpy.save(out + '.npy', numpy.hstack([points, vectors]))
     with open(out + '.txt', 'w') as f:
         f.write('%.3f\n' % elapsed)
+    refine = ShadingLabSubdivision(Input=surface)  # noqa: F821 (from the plugin)
+    refine.Levels = 2
+    refined = servermanager.Fetch(refine)
+    numpy.save(out + '_sub.npy', vtk_to_numpy(refined.GetPoints().GetData()).astype(numpy.float64))
 
 
 def read_png(path):
@@ -89,6 +94,23 @@ def driver(plugin, mesh, outdir):
     # order on 2 ranks (float rounding, ~1e-6 degrees measured).
     if missing or worst > 1e-4:
         failures.append('normals differ at partition boundaries')
+    # Subdivision: every point of the 2-rank result is a point of the serial
+    # one (partition-boundary points appear once per rank).
+    serial_sub = numpy.load(runs[1] + '_sub.npy')
+    parallel_sub = numpy.load(runs[2] + '_sub.npy')
+    buckets = {}
+    for p in serial_sub:
+        buckets.setdefault(tuple(numpy.round(p, 5)), []).append(p)
+    farthest = 0.0
+    for p in parallel_sub:
+        near = buckets.get(tuple(numpy.round(p, 5)), [])
+        d = min((numpy.linalg.norm(p - q) for q in near), default=numpy.inf)
+        farthest = max(farthest, d)
+    print('subdivision: %d points on 2 ranks (%d serial), farthest from a serial point %.2e'
+          % (len(parallel_sub), len(serial_sub), farthest))
+    # 1e-9 of a unit-sized mesh: the same stencils summed in another order.
+    if not farthest <= 1e-9:
+        failures.append('subdivision opens a seam at the partition boundary')
     a, b = read_png(runs[1] + '.png'), read_png(runs[2] + '.png')
     mean = numpy.abs(a - b).mean()
     print('image: mean |1 rank - 2 ranks| = %.4f/255' % mean)

@@ -25,6 +25,7 @@
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 #include <vtkDataArray.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkFieldData.h>
 
 #include <array>
@@ -37,10 +38,17 @@ namespace shadinglab::paraview
 
 using Coordinates = std::array<double, 3>;
 
-/// A copy of `input` with the neighbouring ranks' faces that touch its
-/// partition boundary appended as ghosts; `added` is their count.
+/// Cell array flagging the borrowed faces (1) in WithNeighbourFaces' output.
+constexpr const char* kBorrowedArray = "ShadingLabBorrowed";
+
+/// A copy of `input` with the neighbouring ranks' faces within `rings`
+/// rings of its partition boundary appended (flagged in kBorrowedArray);
+/// `added` is their count. One ring gives every boundary vertex all of its
+/// faces (normals); two rings make subdivision's limit stencils, whose
+/// reach shrinks by half each level (1 + 1/2 + ... < 2 base rings), see
+/// only true neighbours.
 inline vtkSmartPointer<vtkPolyData> WithNeighbourFaces(
-  vtkPolyData* input, vtkMultiProcessController* controller, vtkIdType& added)
+  vtkPolyData* input, vtkMultiProcessController* controller, vtkIdType& added, int rings = 1)
 {
   // Every rank takes part in the exchange below, even with nothing to send.
   added = 0;
@@ -76,20 +84,39 @@ inline vtkSmartPointer<vtkPolyData> WithNeighbourFaces(
       boundaryIds.emplace(p, i);
     }
   }
-  // Send the faces touching the boundary: [n, x0, y0, z0, ...] each.
+  // Send the faces within `rings` rings of the boundary: [n, x0, y0, z0, ...].
+  std::vector<char> near(onBoundary);
+  std::vector<char> sendFace(static_cast<size_t>(polys->GetNumberOfCells()), 0);
+  for (int ring = 0; ring < rings; ++ring)
+  {
+    std::vector<char> next(near);
+    for (vtkIdType c = 0; c < polys->GetNumberOfCells(); ++c)
+    {
+      polys->GetCellAtId(c, ids);
+      bool touches = false;
+      for (vtkIdType k = 0; k < ids->GetNumberOfIds() && !touches; ++k)
+      {
+        touches = near[ids->GetId(k)] != 0;
+      }
+      if (touches)
+      {
+        sendFace[c] = 1;
+        for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+        {
+          next[ids->GetId(k)] = 1;
+        }
+      }
+    }
+    near.swap(next);
+  }
   std::vector<double> send;
   for (vtkIdType c = 0; c < polys->GetNumberOfCells(); ++c)
   {
-    polys->GetCellAtId(c, ids);
-    bool touches = false;
-    for (vtkIdType k = 0; k < ids->GetNumberOfIds() && !touches; ++k)
-    {
-      touches = onBoundary[ids->GetId(k)] != 0;
-    }
-    if (!touches)
+    if (!sendFace[c])
     {
       continue;
     }
+    polys->GetCellAtId(c, ids);
     send.push_back(static_cast<double>(ids->GetNumberOfIds()));
     for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
     {
@@ -121,46 +148,82 @@ inline vtkSmartPointer<vtkPolyData> WithNeighbourFaces(
   const vtkIdType localPoints = output->GetNumberOfPoints();
   const vtkIdType localCells = output->GetNumberOfCells();
   std::map<Coordinates, vtkIdType> newIds; // ghost points, shared by ghost faces
-  std::vector<vtkIdType> face;
+  // The received faces, then those within `rings` rings of this rank's
+  // boundary: ring 1 touches its boundary points, ring k touches a point
+  // of ring k-1.
+  std::vector<std::vector<Coordinates>> candidates;
   for (int r = 0; r < ranks; ++r)
   {
-    if (r == me)
-    {
-      continue;
-    }
     for (vtkIdType at = offsets[r]; at < offsets[r] + lengths[r];)
     {
       const auto n = static_cast<vtkIdType>(received[at++]);
       std::vector<Coordinates> corners(static_cast<size_t>(n));
-      bool shared = false;
       for (vtkIdType k = 0; k < n; ++k, at += 3)
       {
         corners[k] = { received[at], received[at + 1], received[at + 2] };
-        shared |= boundaryIds.count(corners[k]) > 0;
       }
-      if (!shared)
+      if (r != me)
+      {
+        candidates.push_back(std::move(corners));
+      }
+    }
+  }
+  std::map<Coordinates, char> reached;
+  for (const auto& entry : boundaryIds)
+  {
+    reached.emplace(entry.first, 1);
+  }
+  std::vector<char> taken(candidates.size(), 0);
+  std::vector<size_t> chosen;
+  for (int ring = 0; ring < rings; ++ring)
+  {
+    std::vector<size_t> fresh;
+    for (size_t f = 0; f < candidates.size(); ++f)
+    {
+      if (taken[f])
       {
         continue;
       }
-      face.clear();
-      for (const Coordinates& p : corners)
+      for (const Coordinates& p : candidates[f])
       {
-        auto local = boundaryIds.find(p);
-        if (local != boundaryIds.end())
+        if (reached.count(p))
         {
-          face.push_back(local->second);
-          continue;
+          taken[f] = 1;
+          fresh.push_back(f);
+          break;
         }
-        auto ghost = newIds.find(p);
-        if (ghost == newIds.end())
-        {
-          ghost = newIds.emplace(p, points->InsertNextPoint(p.data())).first;
-        }
-        face.push_back(ghost->second);
       }
-      outPolys->InsertNextCell(static_cast<vtkIdType>(face.size()), face.data());
-      ++added;
     }
+    for (size_t f : fresh)
+    {
+      for (const Coordinates& p : candidates[f])
+      {
+        reached.emplace(p, 1);
+      }
+      chosen.push_back(f);
+    }
+  }
+  std::vector<vtkIdType> face;
+  for (size_t f : chosen)
+  {
+    face.clear();
+    for (const Coordinates& p : candidates[f])
+    {
+      auto local = boundaryIds.find(p);
+      if (local != boundaryIds.end())
+      {
+        face.push_back(local->second);
+        continue;
+      }
+      auto ghost = newIds.find(p);
+      if (ghost == newIds.end())
+      {
+        ghost = newIds.emplace(p, points->InsertNextPoint(p.data())).first;
+      }
+      face.push_back(ghost->second);
+    }
+    outPolys->InsertNextCell(static_cast<vtkIdType>(face.size()), face.data());
+    ++added;
   }
   // Attributes of the new points and faces: zero (grown tuple by tuple:
   // vtkFieldData::SetNumberOfTuples lost the existing values here).
@@ -184,24 +247,41 @@ inline vtkSmartPointer<vtkPolyData> WithNeighbourFaces(
   };
   grow(pd, localPoints, output->GetNumberOfPoints());
   grow(cd, localCells, output->GetNumberOfCells());
+  vtkNew<vtkUnsignedCharArray> borrowed;
+  borrowed->SetName(kBorrowedArray);
+  borrowed->SetNumberOfTuples(output->GetNumberOfCells());
+  borrowed->Fill(0);
+  for (vtkIdType c = localCells; c < output->GetNumberOfCells(); ++c)
+  {
+    borrowed->SetValue(c, 1);
+  }
+  cd->AddArray(borrowed);
   return output;
 }
 
 /**
- * Removes the last `borrowed` polygons (the faces WithNeighbourFaces
- * appended; a filter that keeps polygon order keeps them last) and the
- * points no remaining cell uses, keeping the order of everything else.
+ * Removes the polygons flagged in kBorrowedArray (the faces
+ * WithNeighbourFaces appended, or the faces a filter made from them) and
+ * the points no remaining cell uses, keeping the order of everything else,
+ * and drops the flag array.
  */
-inline void DropBorrowedFaces(vtkPolyData* mesh, vtkIdType borrowed, vtkPolyData* output)
+inline void DropBorrowedFaces(vtkPolyData* mesh, vtkPolyData* output)
 {
+  auto* flags = vtkUnsignedCharArray::SafeDownCast(mesh->GetCellData()->GetArray(kBorrowedArray));
   vtkCellArray* polys = mesh->GetPolys();
-  const vtkIdType keepPolys = polys->GetNumberOfCells() - borrowed;
   const vtkIdType firstPoly = mesh->GetNumberOfVerts() + mesh->GetNumberOfLines();
+  auto isBorrowed = [&](vtkIdType poly) {
+    return flags && flags->GetValue(firstPoly + poly) != 0;
+  };
   std::vector<vtkIdType> newId(static_cast<size_t>(mesh->GetNumberOfPoints()), -1);
   vtkNew<vtkIdList> ids;
-  auto markCells = [&](vtkCellArray* cells, vtkIdType count) {
-    for (vtkIdType c = 0; c < count; ++c)
+  auto markCells = [&](vtkCellArray* cells, bool polygons) {
+    for (vtkIdType c = 0; c < cells->GetNumberOfCells(); ++c)
     {
+      if (polygons && isBorrowed(c))
+      {
+        continue;
+      }
       cells->GetCellAtId(c, ids);
       for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
       {
@@ -209,9 +289,9 @@ inline void DropBorrowedFaces(vtkPolyData* mesh, vtkIdType borrowed, vtkPolyData
       }
     }
   };
-  markCells(mesh->GetVerts(), mesh->GetNumberOfVerts());
-  markCells(mesh->GetLines(), mesh->GetNumberOfLines());
-  markCells(polys, keepPolys);
+  markCells(mesh->GetVerts(), false);
+  markCells(mesh->GetLines(), false);
+  markCells(polys, true);
   vtkIdType kept = 0;
   for (auto& id : newId)
   {
@@ -231,29 +311,35 @@ inline void DropBorrowedFaces(vtkPolyData* mesh, vtkIdType borrowed, vtkPolyData
     }
   }
   output->SetPoints(points);
-  auto remap = [&](vtkCellArray* cells, vtkIdType count) {
+  std::vector<vtkIdType> keptCells; // input cell ids, in output order
+  auto remap = [&](vtkCellArray* cells, vtkIdType cellBase, bool polygons) {
     vtkNew<vtkCellArray> out;
-    for (vtkIdType c = 0; c < count; ++c)
+    for (vtkIdType c = 0; c < cells->GetNumberOfCells(); ++c)
     {
+      if (polygons && isBorrowed(c))
+      {
+        continue;
+      }
       cells->GetCellAtId(c, ids);
       for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
       {
         ids->SetId(k, newId[ids->GetId(k)]);
       }
       out->InsertNextCell(ids);
+      keptCells.push_back(cellBase + c);
     }
     return out;
   };
-  output->SetVerts(remap(mesh->GetVerts(), mesh->GetNumberOfVerts()));
-  output->SetLines(remap(mesh->GetLines(), mesh->GetNumberOfLines()));
-  output->SetPolys(remap(polys, keepPolys));
+  output->SetVerts(remap(mesh->GetVerts(), 0, false));
+  output->SetLines(remap(mesh->GetLines(), mesh->GetNumberOfVerts(), false));
+  output->SetPolys(remap(polys, firstPoly, true));
   vtkCellData* outCD = output->GetCellData();
-  const vtkIdType keepCells = firstPoly + keepPolys;
-  outCD->CopyAllocate(mesh->GetCellData(), keepCells);
-  for (vtkIdType c = 0; c < keepCells; ++c)
+  outCD->CopyAllocate(mesh->GetCellData(), static_cast<vtkIdType>(keptCells.size()));
+  for (size_t c = 0; c < keptCells.size(); ++c)
   {
-    outCD->CopyData(mesh->GetCellData(), c, c);
+    outCD->CopyData(mesh->GetCellData(), keptCells[c], static_cast<vtkIdType>(c));
   }
+  outCD->RemoveArray(kBorrowedArray);
   output->GetFieldData()->ShallowCopy(mesh->GetFieldData());
 }
 

@@ -66,7 +66,7 @@ int vtkShadingLabNormals::RequestData(
   {
     return 0;
   }
-  shadinglab::paraview::DropBorrowedFaces(withGhosts, borrowed, output);
+  shadinglab::paraview::DropBorrowedFaces(withGhosts, output);
   return 1;
 }
 

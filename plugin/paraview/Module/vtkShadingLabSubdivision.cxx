@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkShadingLabSubdivision.h"
 
+#include "BoundaryGhosts.h"
 #include "InnerFilter.h"
 #include "vtkOpenSubdivRefine.h"
 
 #include <vtkInformationVector.h>
+#include <vtkCommunicator.h>
+#include <vtkMultiProcessController.h>
 #include <vtkObjectFactory.h>
 
 vtkStandardNewMacro(vtkShadingLabSubdivision);
@@ -21,6 +24,29 @@ int vtkShadingLabSubdivision::RequestData(
   inner->SetFeatureAngle(this->FeatureAngle);
   inner->SetCreaseSharpness(this->CreaseSharpness);
   inner->SetProjectToLimit(this->ProjectToLimit);
+  // Distributed data: refine with two rings of the neighbouring ranks'
+  // faces around the partition boundary (BoundaryGhosts.h), so that both
+  // sides compute the same limit points there, then drop what grew from
+  // the borrowed faces. Collective on all ranks.
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  if (controller && controller->GetNumberOfProcesses() > 1)
+  {
+    int usable = input->GetNumberOfStrips() == 0 ? 1 : 0, everyone = 0;
+    controller->AllReduce(&usable, &everyone, 1, vtkCommunicator::MIN_OP);
+    if (everyone)
+    {
+      vtkIdType borrowed = 0;
+      vtkSmartPointer<vtkPolyData> augmented =
+        shadinglab::paraview::WithNeighbourFaces(input, controller, borrowed, 2);
+      vtkNew<vtkPolyData> refined;
+      if (!shadinglab::paraview::RunInnerFilter(this, inner, augmented, refined))
+      {
+        return 0;
+      }
+      shadinglab::paraview::DropBorrowedFaces(refined, output);
+      return 1;
+    }
+  }
   return shadinglab::paraview::RunInnerFilter(this, inner, input, output) ? 1 : 0;
 }
 

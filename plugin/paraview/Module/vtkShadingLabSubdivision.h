@@ -8,9 +8,9 @@
  * levels, edges sharper than FeatureAngle (and line cells) carried as
  * creases of the given sharpness, points projected to the limit surface
  * with its normals. The input is not modified.
- * @warning On partitioned data each partition is refined alone, so the
- * limit surface near partition boundaries follows each partition's own
- * boundary rules.
+ * On distributed data each rank refines its piece with two rings of its
+ * neighbours' faces (BoundaryGhosts.h) and keeps only its own: the limit
+ * surface is the serial one, with no seam at partition boundaries.
  */
 #ifndef vtkShadingLabSubdivision_h
 #define vtkShadingLabSubdivision_h

@@ -371,7 +371,8 @@ struct FastPhongStage : StageBase
   {
     // The model is fixed per frame: one pixel loop per model, so the
     // compiler folds BrdfFromCosines' choice and the unused quadratics.
-    switch (F.Mat.model)
+    // Without a specular term every model is Lambert's here.
+    switch (F.Mat.ks > 0.0f ? F.Mat.model : ReflectanceModel::Lambert)
     {
       case ReflectanceModel::Phong:
         return this->Draw<ReflectanceModel::Phong>(
@@ -417,9 +418,8 @@ struct FastPhongStage : StageBase
     const int nl = F.Lights.lightCount;
     // The quadratics each model needs: N.L always; N.H for Blinn-Phong; N.V
     // for Phong, whose R.V = 2 (N.L)(N.V) - L.V (docs/model.md eq. 2.8).
-    const bool specular = F.Mat.ks > 0.0f && Model != ReflectanceModel::Lambert;
-    const bool halfVector = specular && Model == ReflectanceModel::BlinnPhong;
-    const bool viewCosine = specular && Model == ReflectanceModel::Phong;
+    constexpr bool halfVector = Model == ReflectanceModel::BlinnPhong;
+    constexpr bool viewCosine = Model == ReflectanceModel::Phong;
     FastPhongQuadratic<float> diffuseQ[kMaxLights], specularQ[kMaxLights], viewQ;
     Vec3f irradiance[kMaxLights];
     bool active[kMaxLights];

@@ -45,6 +45,24 @@ struct StageBase
     return { p, back };
   }
   bool Triangulates() const { return this->F.Opt.polygons == render::PolygonHandling::Triangulate; }
+
+  /// raster::ScanConvert over this frame's width and attribute slots.
+  template<typename SpanFn, typename PixelFn>
+  void Scan(const ScreenVertex* const* verts,
+    int n,
+    int rowBegin,
+    int rowEnd,
+    SpanFn&& beginSpan,
+    PixelFn&& pixel) const
+  {
+    ScanConvert(F.Width, F.NumAttributes, verts, n, rowBegin, rowEnd, beginSpan, pixel);
+  }
+  /// The same, for stages with nothing to do at the start of a span.
+  template<typename PixelFn>
+  void Scan(const ScreenVertex* const* verts, int n, int rowBegin, int rowEnd, PixelFn&& pixel) const
+  {
+    this->Scan(verts, n, rowBegin, rowEnd, [](int, int) {}, pixel);
+  }
 };
 
 /// The fill-rule check (RenderOptions::countCoverage): counts polygons per
@@ -65,14 +83,7 @@ struct CoverageStage : StageBase
     int rowEnd,
     ThreadState&) const
   {
-    ScanConvert(
-      F.Width,
-      F.NumAttributes,
-      verts,
-      n,
-      rowBegin,
-      rowEnd,
-      [](int, int) {},
+    this->Scan(verts, n, rowBegin, rowEnd,
       [&](int j, int i, const float*)
       {
         const size_t pix = static_cast<size_t>(j) * F.Width + i;
@@ -140,14 +151,7 @@ struct FlatStage : StageBase
     int rowEnd,
     ThreadState&) const
   {
-    ScanConvert(
-      F.Width,
-      F.NumAttributes,
-      verts,
-      n,
-      rowBegin,
-      rowEnd,
-      [](int, int) {},
+    this->Scan(verts, n, rowBegin, rowEnd,
       [&](int j, int i, const float* a)
       {
         if (float* out = F.DepthTest(j, i, a))
@@ -212,14 +216,7 @@ struct GouraudStage : StageBase
     int rowEnd,
     ThreadState&) const
   {
-    ScanConvert(
-      F.Width,
-      F.NumAttributes,
-      verts,
-      n,
-      rowBegin,
-      rowEnd,
-      [](int, int) {},
+    this->Scan(verts, n, rowBegin, rowEnd,
       [&](int j, int i, const float* a)
       {
         if (float* out = F.DepthTest(j, i, a))
@@ -300,14 +297,7 @@ struct PhongStage : StageBase
   {
     const float flip = (poly.back && F.Opt.twoSidedLighting) ? -1.0f : 1.0f;
     int64_t shaded = 0;
-    ScanConvert(
-      F.Width,
-      F.NumAttributes,
-      verts,
-      n,
-      rowBegin,
-      rowEnd,
-      [](int, int) {},
+    this->Scan(verts, n, rowBegin, rowEnd,
       [&](int j, int i, const float* a)
       {
         float* out = F.DepthTest(j, i, a);
@@ -482,13 +472,7 @@ struct FastPhongStage : StageBase
     const int W = F.Width;
     float* rgb = F.Rgb;
     uint8_t* covered = F.Covered;
-    ScanConvert(
-      F.Width,
-      F.NumAttributes,
-      verts,
-      3,
-      rowBegin,
-      rowEnd,
+    this->Scan(verts, 3, rowBegin, rowEnd,
       [&](int j, int i0)
       {
         if (!ready)

@@ -4,16 +4,39 @@
 #include <vtkCellArray.h>
 #include <vtkDoubleArray.h>
 #include <vtkIdList.h>
+#include <vtkIdTypeArray.h>
 #include <vtkNew.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkTriangleFilter.h>
 #include <vtkTypeInt64Array.h>
 
+#include <algorithm>
 #include <type_traits>
 
 namespace shadinglab::mesh
 {
+
+vtkSmartPointer<vtkCellArray> CellArrayFromFlat(const int64_t* offsets,
+  int64_t numberOfPolygons, const int64_t* connectivity)
+{
+  vtkNew<vtkIdTypeArray> offsetArray, connectivityArray;
+  offsetArray->SetNumberOfTuples(numberOfPolygons + 1);
+  const int64_t size = numberOfPolygons > 0 ? offsets[numberOfPolygons] : 0;
+  connectivityArray->SetNumberOfTuples(size);
+  if (numberOfPolygons > 0)
+  {
+    std::copy(offsets, offsets + numberOfPolygons + 1, offsetArray->GetPointer(0));
+    std::copy(connectivity, connectivity + size, connectivityArray->GetPointer(0));
+  }
+  else
+  {
+    offsetArray->SetValue(0, 0); // an empty cell array still has its first offset
+  }
+  auto cells = vtkSmartPointer<vtkCellArray>::New();
+  cells->SetData(offsetArray, connectivityArray);
+  return cells;
+}
 
 void FlatPolygonsFromPolyData(vtkPolyData* input, FlatPolygons& out)
 {

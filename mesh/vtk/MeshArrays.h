@@ -11,6 +11,7 @@
 
 #include <vtkSmartPointer.h>
 
+class vtkCellArray;
 class vtkPolyData;
 
 namespace shadinglab::mesh
@@ -32,6 +33,12 @@ void FlatPolygonsFromPolyData(vtkPolyData* input, FlatPolygons& out);
 /// The input itself when it has no triangle strips, else a copy with the
 /// strips triangulated (lines and vertices kept when `keepLinesAndVerts`).
 vtkSmartPointer<vtkPolyData> WithoutStrips(vtkPolyData* input, bool keepLinesAndVerts);
+
+/// The inverse: a cell array holding `numberOfPolygons` polygons given as
+/// offsets (numberOfPolygons + 1 entries, or none for no polygon) and
+/// connectivity, copied.
+vtkSmartPointer<vtkCellArray> CellArrayFromFlat(const int64_t* offsets,
+  int64_t numberOfPolygons, const int64_t* connectivity);
 
 /// Point id pairs of the input's line cells (each segment of a polyline).
 std::vector<int64_t> LineSegments(vtkPolyData* input);

@@ -114,15 +114,9 @@ int vtkMeshRepair::RequestData(
     originalIds->SetValue(i, mesh.pointIds[i]);
   }
   outPD->AddArray(originalIds);
-  vtkNew<vtkIdTypeArray> offsets, connectivity;
-  offsets->SetNumberOfTuples(static_cast<vtkIdType>(mesh.offsets.size()));
-  std::copy(mesh.offsets.begin(), mesh.offsets.end(), offsets->GetPointer(0));
-  connectivity->SetNumberOfTuples(static_cast<vtkIdType>(mesh.connectivity.size()));
-  std::copy(mesh.connectivity.begin(), mesh.connectivity.end(), connectivity->GetPointer(0));
-  vtkNew<vtkCellArray> polys;
-  polys->SetData(offsets, connectivity);
   output->SetPoints(points);
-  output->SetPolys(polys);
+  output->SetPolys(slm::CellArrayFromFlat(
+    mesh.offsets.data(), mesh.NumberOfPolygons(), mesh.connectivity.data()));
   vtkCellData* inCD = source->GetCellData();
   vtkCellData* outCD = output->GetCellData();
   outCD->CopyAllocate(inCD, static_cast<vtkIdType>(mesh.cellIds.size()));

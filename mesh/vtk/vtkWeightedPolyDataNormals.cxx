@@ -130,14 +130,8 @@ int vtkWeightedPolyDataNormals::RequestData(
   }
   else
   {
-    vtkNew<vtkIdTypeArray> offsets, connectivity;
-    offsets->SetNumberOfTuples(mesh.numberOfPolygons + 1);
-    std::copy(mesh.offsets, mesh.offsets + mesh.numberOfPolygons + 1, offsets->GetPointer(0));
-    connectivity->SetNumberOfTuples(static_cast<vtkIdType>(result.connectivity.size()));
-    std::copy(result.connectivity.begin(), result.connectivity.end(), connectivity->GetPointer(0));
-    vtkNew<vtkCellArray> polys;
-    polys->SetData(offsets, connectivity);
-    output->SetPolys(polys);
+    output->SetPolys(slm::CellArrayFromFlat(
+      mesh.offsets, mesh.numberOfPolygons, result.connectivity.data()));
   }
   output->SetVerts(source->GetVerts());
   output->SetLines(source->GetLines());

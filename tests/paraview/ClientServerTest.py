@@ -10,6 +10,9 @@ import subprocess
 import sys
 import time
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from pngs import read_png  # noqa: E402
+
 plugin, mesh, outdir = sys.argv[1:4]
 os.makedirs(outdir, exist_ok=True)
 
@@ -48,12 +51,7 @@ try:
     Render(view)
     shot = os.path.join(outdir, 'client_server.png')
     SaveScreenshot(shot, view, ImageResolution=[320, 240])
-    from vtkmodules.vtkIOImage import vtkPNGReader
-    from vtkmodules.util.numpy_support import vtk_to_numpy
-    reader = vtkPNGReader()
-    reader.SetFileName(shot)
-    reader.Update()
-    pixels = vtk_to_numpy(reader.GetOutput().GetPointData().GetScalars())[:, :3].astype(float)
+    pixels = read_png(shot).reshape(-1, 3)
     background = pixels[0]
     drawn = (abs(pixels - background).sum(axis=1) > 30).sum()
     print('server ranks: %d; pixels drawn: %d' % (partitions, drawn))

@@ -11,6 +11,9 @@ import subprocess
 import sys
 import time
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from pngs import read_png  # noqa: E402
+
 W, H = 400, 300
 
 
@@ -50,17 +53,6 @@ def worker(plugin, mesh, out):
     refine.Levels = 2
     refined = servermanager.Fetch(refine)
     numpy.save(out + '_sub.npy', vtk_to_numpy(refined.GetPoints().GetData()).astype(numpy.float64))
-
-
-def read_png(path):
-    from vtkmodules.vtkIOImage import vtkPNGReader
-    from vtkmodules.util.numpy_support import vtk_to_numpy
-    reader = vtkPNGReader()
-    reader.SetFileName(path)
-    reader.Update()
-    image = reader.GetOutput()
-    w, h, _ = image.GetDimensions()
-    return vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, -1)[:, :, :3].astype(float)
 
 
 def driver(plugin, mesh, outdir):

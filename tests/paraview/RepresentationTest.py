@@ -12,9 +12,9 @@ import subprocess
 import sys
 
 from paraview.simple import *
-from vtkmodules.vtkIOImage import vtkPNGReader
-from vtkmodules.util.numpy_support import vtk_to_numpy
 import numpy
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from pngs import read_png  # noqa: E402
 
 plugin, mesh, coarse, cli, outdir = sys.argv[1:6]
 os.makedirs(outdir, exist_ok=True)
@@ -28,16 +28,6 @@ def check(condition, message):
     print(('ok   ' if condition else 'FAIL ') + message)
     if not condition:
         failures.append(message)
-
-
-def read_png(path):
-    reader = vtkPNGReader()
-    reader.SetFileName(path)
-    reader.Update()
-    image = reader.GetOutput()
-    w, h, _ = image.GetDimensions()
-    pixels = vtk_to_numpy(image.GetPointData().GetScalars()).reshape(h, w, -1)[:, :, :3]
-    return pixels.astype(numpy.float64)
 
 
 reader = OpenDataFile(mesh)

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "GpuRenderer.h"
 
+#include "GpuScene.h"
+
 #include "vtkShadingLabPolyDataMapper.h"
 
 #include <vtkActor.h>
@@ -20,6 +22,7 @@
 #include <vtkWindowToImageFilter.h>
 
 #include "PolyDataMesh.h"
+#include "VtkCamera.h"
 
 #include <X11/Xlib.h>
 
@@ -73,58 +76,8 @@ struct GpuRenderer::Internals
     this->Window->AddRenderer(this->Renderer);
   }
 
-  void SetLights(const Lighting<double>& lighting);
-  void SetCamera(const render::Camera& cam);
   void ReadBack(int W, int H, int ssaa);
 };
-
-void GpuRenderer::Internals::SetLights(const Lighting<double>& lighting)
-{
-  this->Renderer->RemoveAllLights();
-  this->Renderer->SetAmbient(
-    lighting.ambientIntensity.x, lighting.ambientIntensity.y, lighting.ambientIntensity.z);
-  // No lights given: VTK's automatic headlight (a light at the camera).
-  this->Renderer->SetAutomaticLightCreation(lighting.lightCount == 0);
-  for (int j = 0; j < lighting.lightCount; ++j)
-  {
-    const Light<double>& l = lighting.lights[j];
-    vtkNew<vtkLight> light;
-    light->SetLightTypeToSceneLight();
-    light->SetIntensity(1.0);
-    // The mapper multiplies by the model's solid angle pi; scale other dw.
-    const double s = l.solidAngle / kPi<double>;
-    light->SetDiffuseColor(l.intensity.x * s, l.intensity.y * s, l.intensity.z * s);
-    if (l.type == LightType::Directional)
-    {
-      light->SetPositional(false);
-      light->SetPosition(l.vector.x, l.vector.y, l.vector.z);
-      light->SetFocalPoint(0, 0, 0);
-    }
-    else
-    {
-      light->SetPositional(true);
-      light->SetPosition(l.vector.x, l.vector.y, l.vector.z);
-      const Vec3<double> axis = NormalizeOr(l.spotDirection, Vec3<double>(0, 0, -1));
-      light->SetFocalPoint(l.vector.x + axis.x, l.vector.y + axis.y, l.vector.z + axis.z);
-      light->SetConeAngle(l.coneAngle);
-      light->SetExponent(l.coneExponent);
-      light->SetAttenuationValues(l.attenuation.x, l.attenuation.y, l.attenuation.z);
-    }
-    this->Renderer->AddLight(light);
-  }
-}
-
-void GpuRenderer::Internals::SetCamera(const render::Camera& cam)
-{
-  vtkCamera* camera = this->Renderer->GetActiveCamera();
-  camera->SetPosition(cam.position.x, cam.position.y, cam.position.z);
-  camera->SetFocalPoint(cam.focalPoint.x, cam.focalPoint.y, cam.focalPoint.z);
-  camera->SetViewUp(cam.viewUp.x, cam.viewUp.y, cam.viewUp.z);
-  camera->SetViewAngle(cam.viewAngle);
-  camera->SetParallelProjection(cam.parallel);
-  camera->SetParallelScale(cam.parallelScale);
-  camera->SetClippingRange(cam.nearClip, cam.farClip);
-}
 
 void GpuRenderer::Internals::ReadBack(int W, int H, int ssaa)
 {
@@ -193,21 +146,10 @@ const render::Image& GpuRenderer::Render(
   vtkSmartPointer<vtkPolyData> polydata;
   polydata.TakeReference(render::PolyDataFromMesh(*scene.mesh));
   in.Mapper->SetInputData(polydata);
-  in.Mapper->SetShadingMode(static_cast<int>(options.mode));
-  in.Mapper->SetPerspectiveCorrect(options.interpolation == render::InterpolationSpace::Perspective);
-  in.Mapper->SetMaterial(material);
-  in.Mapper->SetFastPhongMaxSpread(options.fastPhongMaxSpread);
-  in.Mapper->ScalarVisibilityOn();
-  in.Mapper->SetColorModeToDirectScalars();
-  vtkProperty* prop = in.Actor->GetProperty();
-  prop->SetDiffuse(1.0);
-  prop->SetDiffuseColor(material.diffuseColor.x, material.diffuseColor.y, material.diffuseColor.z);
-  prop->SetAmbient(0.0);
-  prop->SetSpecular(0.0);
-  prop->SetBackfaceCulling(options.cullBackFaces);
+  ConfigureActor(options, material, in.Mapper, in.Actor);
   in.Renderer->SetBackground(options.background.x, options.background.y, options.background.z);
-  in.SetLights(scene.lighting);
-  in.SetCamera(scene.camera);
+  ApplyLighting(scene.lighting, in.Renderer);
+  render::ApplyToVtkCamera(scene.camera, in.Renderer->GetActiveCamera());
   const int ssaa = options.ssaa;
   const int W = options.width * ssaa, H = options.height * ssaa;
   in.Window->SetSize(W, H);

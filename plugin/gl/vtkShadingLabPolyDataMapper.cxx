@@ -117,7 +117,8 @@ std::string vtkShadingLabPolyDataMapper::Variant(vtkRenderer* ren) const
     }
   }
   headlightOnly &= lights == 1;
-  const bool specular = m.model != sl::ReflectanceModel::Lambert && m.ks > 0;
+  const bool specular = m.model != sl::ReflectanceModel::Lambert &&
+    m.model != sl::ReflectanceModel::LommelSeeliger && m.ks > 0;
   std::ostringstream v;
   v << "#define SL_MODE " << this->EffectiveMode() << "\n"
     << "#define SL_MODEL " << model << "\n"

@@ -13,6 +13,13 @@ float Fd_Lambert()
   return SL_INV_PI;
 }
 
+// Lommel-Seeliger (Seeliger 1888; Hapke 1981), scaled to equal Lambert at
+// normal incidence and view; docs/model.md eq. 1.12.
+float Fd_LommelSeeliger(float NoL, float NoV)
+{
+  return 2.0 * SL_INV_PI / max(NoL + NoV, SL_MIN_COS_THETA);
+}
+
 // Phong 1975, (R.V)^n, normalized by (n+2)/(2 pi) (Lewis 1994);
 // docs/model.md eq. 1.3.
 float Fs_Phong(float RoV, float shininess)

@@ -3,7 +3,8 @@
 //   I_r = Ra Ia + sum_j I_Lj (N.Lj) dw_j (kd Rd + ks Rs).
 // Variants are compile-time #defines set by vtkShadingLabPolyDataMapper, so
 // a scene pays only for what it uses:
-//   SL_MODEL        SL_MODEL_LAMBERT, _PHONG, _BLINN_PHONG or _COOK_TORRANCE
+//   SL_MODEL        SL_MODEL_LAMBERT, _PHONG, _BLINN_PHONG, _COOK_TORRANCE or
+//                   _LOMMEL_SEELIGER
 //   SL_LIGHT_COUNT  number of lights (1..8)
 //   SL_POINT_LIGHTS 1 when any light is positional
 //   SL_SPECULAR     0 drops the specular term (ks = 0)
@@ -95,7 +96,10 @@ vec3 EvaluateBrdf(vec3 diffuseColor, vec3 N, vec3 L, vec3 V)
   float NoL = dot(N, L);
   float NoV = dot(N, V);
   bool above = NoL > 0.0 && NoV > 0.0;
-#if SL_MODEL != SL_MODEL_COOK_TORRANCE || !SL_SPECULAR
+#if SL_MODEL == SL_MODEL_LOMMEL_SEELIGER
+  vec3 f = diffuseColor * (slKd * Fd_LommelSeeliger(NoL, NoV));
+  return above ? f : vec3(0.0);
+#elif SL_MODEL != SL_MODEL_COOK_TORRANCE || !SL_SPECULAR
 #if SL_MODEL == SL_MODEL_PHONG
   float RoV = dot(N * (2.0 * NoL) - L, V);
   float NoH = 0.0;

@@ -61,9 +61,9 @@ void vtkShadingLabSurfaceRepresentation::SetShadingMode(int mode)
 
 void vtkShadingLabSurfaceRepresentation::SetReflectanceModel(int model)
 {
-  if (model < 0 || model > 3)
+  if (model < 0 || model > static_cast<int>(sl::ReflectanceModel::LommelSeeliger))
   {
-    vtkErrorMacro("ReflectanceModel must be 0..3 (got " << model << ")");
+    vtkErrorMacro("ReflectanceModel must be 0..4 (got " << model << ")");
     return;
   }
   this->Internal->Parameters.model = static_cast<sl::ReflectanceModel>(model);

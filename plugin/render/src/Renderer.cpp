@@ -13,8 +13,10 @@ bool SupportsModel(ShadingMode mode, ReflectanceModel model)
 {
   // Fast Phong expands cosines of the interpolated normal (N.L, N.H, N.V)
   // as quadratics (docs/model.md eq. 2.6-2.8); Cook-Torrance's D, G and F
-  // are not functions of those cosines alone in a form the paper expands.
-  return !(mode == ShadingMode::FastPhong && model == ReflectanceModel::CookTorrance);
+  // are not functions of those cosines alone in a form the paper expands;
+  // Lommel-Seeliger divides by N.L + N.V, which the quadratics do not carry.
+  return !(mode == ShadingMode::FastPhong &&
+    (model == ReflectanceModel::CookTorrance || model == ReflectanceModel::LommelSeeliger));
 }
 
 std::string ValidateRequest(const Scene& scene, const RenderOptions& options)

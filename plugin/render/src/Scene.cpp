@@ -96,4 +96,22 @@ Light<double> KeyLight(const Camera& camera, double intensity)
   return key;
 }
 
+Light<double> CameraLight(
+  const Camera& camera, double azimuthDeg, double elevationDeg, double intensity)
+{
+  const Vec3<double> toEye =
+    NormalizeOr(camera.position - camera.focalPoint, Vec3<double>(0, 0, 1));
+  const Vec3<double> right = NormalizeOr(Cross(camera.viewUp, toEye), Vec3<double>(1, 0, 0));
+  const Vec3<double> up = Cross(toEye, right);
+  const double az = azimuthDeg * kPi<double> / 180.0, el = elevationDeg * kPi<double> / 180.0;
+  Light<double> light;
+  light.type = LightType::Directional;
+  light.vector = NormalizeOr(
+    toEye * (std::cos(el) * std::cos(az)) + right * (std::cos(el) * std::sin(az)) +
+      up * std::sin(el),
+    toEye);
+  light.intensity = Vec3<double>(intensity, intensity, intensity);
+  return light;
+}
+
 } // namespace shadinglab::render

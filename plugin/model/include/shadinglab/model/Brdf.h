@@ -24,6 +24,21 @@ constexpr T Fd_Lambert()
   return kInvPi<T>;
 }
 
+/**
+ * Lommel-Seeliger (Seeliger 1888; Hapke 1981, eq. 19), docs/model.md
+ * eq. 1.12: single scattering in a dark, porous regolith, whose radiance
+ * goes as N.L / (N.L + N.V). Scaled by 2 so that it equals Lambert at
+ * normal incidence and view (the two disks match at their centres):
+ *   Rd = (2 / pi) / (N.L + N.V).
+ * The denominator is floored at kMinCosTheta (both cosines are > 0 where
+ * the model is evaluated; the floor only keeps a grazing pair finite).
+ */
+template <typename T>
+SL_INLINE T Fd_LommelSeeliger(T NoL, T NoV)
+{
+  return T(2) * kInvPi<T> / std::max(NoL + NoV, kMinCosTheta<T>);
+}
+
 /// Clamp of the RMS slope m to [kMinRoughness, kMaxRoughness] (see there).
 template <typename T>
 T ClampRoughness(T m)

@@ -28,6 +28,7 @@ enum class ReflectanceModel
   Phong,
   BlinnPhong,
   CookTorrance,
+  LommelSeeliger, ///< the full moon's diffuse law (eq. 1.12): no specular term
 };
 
 /// One row of the reflectance models' name table: the one list the CLI,
@@ -45,6 +46,7 @@ inline constexpr ReflectanceModelRow kReflectanceModels[] = {
   { ReflectanceModel::Phong, "phong", "Phong", "PHONG" },
   { ReflectanceModel::BlinnPhong, "blinn-phong", "Blinn-Phong", "BLINN_PHONG" },
   { ReflectanceModel::CookTorrance, "cook-torrance", "Cook-Torrance", "COOK_TORRANCE" },
+  { ReflectanceModel::LommelSeeliger, "lommel-seeliger", "Lommel-Seeliger", "LOMMEL_SEELIGER" },
 };
 
 /// Material parameters of the illumination model. Plain data, so it can be
@@ -254,6 +256,7 @@ SL_INLINE Vec3<T> BrdfFromCosines(const Material<T>& material, const Vec3<T>& di
       return BrdfFromCosines<ReflectanceModel::BlinnPhong>(material, diffuseColor, NoH, RoV, power);
     case ReflectanceModel::Lambert:
     case ReflectanceModel::CookTorrance:
+    case ReflectanceModel::LommelSeeliger:
       break;
   }
   return BrdfFromCosines<ReflectanceModel::Lambert>(material, diffuseColor, NoH, RoV, power);
@@ -296,6 +299,8 @@ SL_INLINE Vec3<T> EvaluateBrdf(
       const T DG = Fs_CookTorrance(T(1), D, G, NoL, NoV, material.variant);
       return diffuse + F * (material.ks * DG);
     }
+    case ReflectanceModel::LommelSeeliger:
+      return diffuseColor * (material.kd * Fd_LommelSeeliger(NoL, NoV));
   }
   return {};
 }

@@ -72,6 +72,15 @@ Camera FitCamera(const double bounds[6], double azimuthDeg, double elevationDeg,
 /// light of every front end (CLI, explorer, VTK classes).
 Light<double> KeyLight(const Camera& camera, double intensity = 1.0);
 
+/**
+ * A directional light given in the camera's frame, in world coordinates:
+ * azimuth turns it from the view direction toward the camera's right,
+ * elevation toward its up (0, 0: a headlight, light from the viewer). The
+ * explorer's light control; the light follows the camera as VTK's light kit.
+ */
+Light<double> CameraLight(
+  const Camera& camera, double azimuthDeg, double elevationDeg, double intensity = 1.0);
+
 /// A camera of `frame`'s world in its local coordinates (position, focal
 /// point, clipping range, parallel scale; directions unchanged).
 void ToLocal(const WorldFrame& frame, Camera& camera);

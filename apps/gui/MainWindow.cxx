@@ -1,0 +1,616 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "MainWindow.h"
+
+#include "BrdfPlot.h"
+#include "ComparisonWidget.h"
+#include "MaterialEditor.h"
+#include "ParameterPlot.h"
+#include "ProfilePlot.h"
+#include "ShadingPanel.h"
+
+#include "MeshIO.h"
+#include "shadinglab/model/Materials.h"
+
+#include <vtkPolyData.h>
+
+#include <QAction>
+#include <QApplication>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDockWidget>
+#include <QDoubleSpinBox>
+#include <QDragEnterEvent>
+#include <QFileDialog>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QLabel>
+#include <QListWidget>
+#include <QMenuBar>
+#include <QMessageBox>
+#include <QMimeData>
+#include <QScrollArea>
+#include <QSlider>
+#include <QSpinBox>
+#include <QSplitter>
+#include <QStackedWidget>
+#include <QStatusBar>
+#include <QTextBrowser>
+#include <QTimer>
+#include <QVBoxLayout>
+
+#include <fstream>
+#include <sstream>
+
+namespace shadinglab::gui
+{
+
+namespace
+{
+
+/// Plots re-read the panels this long after the last render, so a slider
+/// drag re-renders at once and reads the framebuffers once it pauses.
+constexpr int kPlotDelayMs = 60;
+
+QSlider* MakeSlider(int lo, int hi, int value)
+{
+  auto* slider = new QSlider(Qt::Horizontal);
+  slider->setRange(lo, hi);
+  slider->setValue(value);
+  return slider;
+}
+
+} // namespace
+
+MainWindow::MainWindow(const SceneOptions& options)
+  : Options(options)
+  , View(new widgets::ComparisonWidget)
+  , Plots(new QStackedWidget)
+  , ProfileChart(new widgets::ProfilePlot)
+  , BrdfChart(new widgets::BrdfPlot)
+  , ParameterChart(new widgets::ParameterPlot)
+  , Editor(new widgets::MaterialEditor)
+  , SceneNames(new QListWidget)
+  , Explanation(new QTextBrowser)
+  , PlotTimer(new QTimer(this))
+{
+  this->setWindowTitle("ShadingLab explorer");
+  this->setAcceptDrops(true);
+  if (options.input)
+  {
+    this->Input = options.input;
+  }
+  this->Options.input = nullptr;
+
+  auto* empty = new QLabel("(this scene has no plot)");
+  empty->setAlignment(Qt::AlignCenter);
+  this->Plots->addWidget(empty);
+  this->Plots->addWidget(this->ProfileChart);
+  this->Plots->addWidget(this->BrdfChart);
+  this->Plots->addWidget(this->ParameterChart);
+  auto* split = new QSplitter(Qt::Vertical);
+  split->addWidget(this->View);
+  split->addWidget(this->Plots);
+  split->setStretchFactor(0, 3);
+  split->setStretchFactor(1, 2);
+  split->setSizes({ 600, 380 });
+  this->setCentralWidget(split);
+
+  // Left: the scenes and what each shows.
+  auto* left = new QWidget;
+  auto* leftLayout = new QVBoxLayout(left);
+  for (const SceneInfo& info : SceneList())
+  {
+    auto* item = new QListWidgetItem(info.name, this->SceneNames);
+    item->setToolTip(info.summary);
+  }
+  this->SceneNames->setMaximumHeight(230);
+  leftLayout->addWidget(new QLabel("<b>Scenes</b>"));
+  leftLayout->addWidget(this->SceneNames);
+  leftLayout->addWidget(this->Explanation, 1);
+  auto* leftDock = new QDockWidget("Lecture", this);
+  leftDock->setWidget(left);
+  leftDock->setFeatures(QDockWidget::NoDockWidgetFeatures);
+  this->addDockWidget(Qt::LeftDockWidgetArea, leftDock);
+  connect(this->SceneNames, &QListWidget::currentTextChanged, this, [this](const QString& name) {
+    if (this->Updating || name.toStdString() == this->Current.name)
+    {
+      return;
+    }
+    std::string error;
+    if (!this->LoadScene(name.toStdString(), error))
+    {
+      QMessageBox::warning(this, "ShadingLab", QString::fromStdString(error));
+    }
+  });
+
+  auto* rightDock = new QDockWidget("Controls", this);
+  auto* scroll = new QScrollArea;
+  scroll->setWidget(this->BuildControls());
+  scroll->setWidgetResizable(true);
+  scroll->setMinimumWidth(330);
+  rightDock->setWidget(scroll);
+  rightDock->setFeatures(QDockWidget::NoDockWidgetFeatures);
+  this->addDockWidget(Qt::RightDockWidgetArea, rightDock);
+  this->BuildMenus();
+
+  this->PlotTimer->setSingleShot(true);
+  this->PlotTimer->setInterval(kPlotDelayMs);
+  connect(this->PlotTimer, &QTimer::timeout, this, &MainWindow::UpdatePlot);
+  connect(this->View, &widgets::ComparisonWidget::rendered, this->PlotTimer,
+    QOverload<>::of(&QTimer::start));
+  connect(this->View, &widgets::ComparisonWidget::profileLineChanged, this->PlotTimer,
+    QOverload<>::of(&QTimer::start));
+  connect(this->View, &widgets::ComparisonWidget::currentPanelChanged, this,
+    &MainWindow::OnPanelSelected);
+}
+
+MainWindow::~MainWindow() = default;
+
+void MainWindow::BuildMenus()
+{
+  QMenu* file = this->menuBar()->addMenu("&File");
+  file->addAction("&Open mesh...", this, [this] {
+    const QString path = QFileDialog::getOpenFileName(this, "Open a mesh", QString(),
+      "Meshes (*.vtp *.vtk *.vtu *.ply *.obj *.stl *.off);;All files (*)");
+    std::string error;
+    if (!path.isEmpty() && !this->OpenMesh(path.toStdString(), error))
+    {
+      QMessageBox::warning(this, "ShadingLab", QString::fromStdString(error));
+    }
+  }, QKeySequence::Open);
+  file->addAction("Save &screenshot...", this, [this] {
+    const QString path =
+      QFileDialog::getSaveFileName(this, "Save screenshot", "shadinglab.png", "PNG (*.png)");
+    if (!path.isEmpty())
+    {
+      this->grab().save(path);
+    }
+  });
+  file->addAction("Export plot &CSV...", this, [this] {
+    const QString path =
+      QFileDialog::getSaveFileName(this, "Export the plot's numbers", "profile.csv", "CSV (*.csv)");
+    if (!path.isEmpty())
+    {
+      std::ofstream(path.toStdString()) << this->PlotCsv();
+    }
+  });
+  file->addSeparator();
+  file->addAction("&Quit", qApp, &QApplication::quit, QKeySequence::Quit);
+  QMenu* view = this->menuBar()->addMenu("&View");
+  view->addAction("&Reset camera", this, [this] {
+    if (this->Current.explicitCamera)
+    {
+      this->View->SetCamera(this->Current.camera);
+    }
+    else
+    {
+      this->View->ResetCamera(this->Current.azimuth, this->Current.elevation,
+        this->Current.zoom, this->Current.parallel);
+    }
+    this->View->RenderAll();
+  });
+}
+
+QWidget* MainWindow::BuildControls()
+{
+  auto* root = new QWidget;
+  auto* layout = new QVBoxLayout(root);
+
+  auto* panelBox = new QGroupBox("Panel (click a panel to select it)");
+  auto* panelForm = new QFormLayout(panelBox);
+  this->PanelLabel = new QLabel;
+  this->PanelLabel->setWordWrap(true);
+  panelForm->addRow(this->PanelLabel);
+  this->Mode = new QComboBox;
+  for (const auto& row : render::kShadingModes)
+  {
+    this->Mode->addItem(row.label, static_cast<int>(row.value));
+  }
+  panelForm->addRow("Shading", this->Mode);
+  this->Backend = new QComboBox;
+  this->Backend->addItem("GPU (ShadingLab mapper)", static_cast<int>(render::Backend::GPU));
+  this->Backend->addItem("CPU (software renderer)", static_cast<int>(render::Backend::CPU));
+  panelForm->addRow("Backend", this->Backend);
+  this->Interpolation = new QComboBox;
+  for (const auto& row : render::kInterpolationSpaces)
+  {
+    this->Interpolation->addItem(row.label, static_cast<int>(row.value));
+  }
+  panelForm->addRow("Interpolation", this->Interpolation);
+  layout->addWidget(panelBox);
+  for (QComboBox* box : { this->Mode, this->Backend, this->Interpolation })
+  {
+    connect(box, QOverload<int>::of(&QComboBox::activated), this, &MainWindow::OnPanelEdited);
+  }
+
+  auto* materialBox = new QGroupBox("Material of the panel");
+  auto* materialLayout = new QVBoxLayout(materialBox);
+  materialLayout->addWidget(this->Editor);
+  layout->addWidget(materialBox);
+  connect(this->Editor, &widgets::MaterialEditor::materialChanged, this,
+    &MainWindow::OnPanelEdited);
+
+  auto* lightBox = new QGroupBox("Light (relative to the view; all panels)");
+  auto* lightForm = new QFormLayout(lightBox);
+  this->LightAzimuth = MakeSlider(-90, 90, -25);
+  this->LightElevation = MakeSlider(-90, 90, 25);
+  lightForm->addRow("Azimuth (deg)", this->LightAzimuth);
+  lightForm->addRow("Elevation (deg)", this->LightElevation);
+  layout->addWidget(lightBox);
+  for (QSlider* slider : { this->LightAzimuth, this->LightElevation })
+  {
+    connect(slider, &QSlider::valueChanged, this, [this] {
+      if (!this->Updating)
+      {
+        this->View->SetLight(this->LightAzimuth->value(), this->LightElevation->value());
+      }
+    });
+  }
+
+  auto* meshBox = new QGroupBox("Mesh preparation (your mesh: modes, silhouette, moon, metal)");
+  auto* meshForm = new QFormLayout(meshBox);
+  this->Weighting = new QComboBox;
+  for (const char* name : { "uniform", "area", "angle", "max" })
+  {
+    this->Weighting->addItem(name);
+  }
+  this->Weighting->setCurrentText(mesh::NormalWeightingName(this->Options.preparation.weighting));
+  meshForm->addRow("Normal weighting", this->Weighting);
+  this->CreaseAngle = new QDoubleSpinBox;
+  this->CreaseAngle->setRange(0, 180);
+  this->CreaseAngle->setValue(this->Options.preparation.featureAngle);
+  this->CreaseAngle->setSuffix(" deg");
+  meshForm->addRow("Crease angle", this->CreaseAngle);
+  this->Subdivision = new QSpinBox;
+  this->Subdivision->setRange(0, mesh::kMaxSubdivisionLevels);
+  this->Subdivision->setValue(this->Options.preparation.subdivisionLevels);
+  meshForm->addRow("Subdivision levels", this->Subdivision);
+  this->Repair = new QCheckBox("weld, orient, non-manifold, T-junctions");
+  this->Repair->setChecked(this->Options.preparation.repair);
+  meshForm->addRow("Repair", this->Repair);
+  layout->addWidget(meshBox);
+  auto applyPreparation = [this] {
+    if (this->Updating)
+    {
+      return;
+    }
+    mesh::PreparationOptions& p = this->Options.preparation;
+    mesh::ParseNormalWeighting(this->Weighting->currentText().toStdString(), p.weighting);
+    p.featureAngle = this->CreaseAngle->value();
+    p.subdivisionLevels = this->Subdivision->value();
+    p.repair = this->Repair->isChecked();
+    p.fixTJunctions = p.repair;
+    this->ReloadScene();
+  };
+  connect(this->Weighting, QOverload<int>::of(&QComboBox::activated), this, applyPreparation);
+  connect(this->CreaseAngle, &QDoubleSpinBox::editingFinished, this, applyPreparation);
+  connect(this->Subdivision, QOverload<int>::of(&QSpinBox::valueChanged), this, applyPreparation);
+  connect(this->Repair, &QCheckBox::toggled, this, applyPreparation);
+
+  auto* plotBox = new QGroupBox("Plot");
+  auto* plotForm = new QFormLayout(plotBox);
+  this->ProfileTool = new QCheckBox("left-drag draws the profile line (or Ctrl+drag)");
+  plotForm->addRow(this->ProfileTool);
+  this->Perceived = new QCheckBox("show the perceived profile (lateral inhibition)");
+  plotForm->addRow(this->Perceived);
+  this->Rotation = MakeSlider(0, 90, 0);
+  plotForm->addRow("orientation: rotation", this->Rotation);
+  this->ThetaL = MakeSlider(0, 89, 45);
+  plotForm->addRow("brdf: light angle", this->ThetaL);
+  this->Shininess = MakeSlider(1, 200, 32);
+  plotForm->addRow("brdf: shininess n", this->Shininess);
+  this->Roughness = MakeSlider(5, 100, 30);
+  plotForm->addRow("brdf: roughness m x 100", this->Roughness);
+  layout->addWidget(plotBox);
+  connect(this->ProfileTool, &QCheckBox::toggled, this,
+    [this](bool on) { this->View->SetProfileTool(on); });
+  connect(this->Perceived, &QCheckBox::toggled, this->ProfileChart,
+    &widgets::ProfilePlot::SetShowPerceived);
+  connect(this->Rotation, &QSlider::valueChanged, this, [this](int degrees) {
+    this->Options.rotation = degrees;
+    if (!this->Updating && this->Current.name == "orientation")
+    {
+      this->ReloadScene();
+    }
+  });
+  for (QSlider* slider : { this->ThetaL, this->Shininess, this->Roughness })
+  {
+    connect(slider, &QSlider::valueChanged, this, &MainWindow::UpdateBrdfPlot);
+  }
+  layout->addStretch(1);
+  return root;
+}
+
+bool MainWindow::LoadScene(const std::string& name, std::string& error)
+{
+  SceneOptions options = this->Options;
+  options.input = this->Input;
+  Scene scene;
+  try
+  {
+    scene = MakeScene(name, options);
+  }
+  catch (const std::exception& e)
+  {
+    error = e.what();
+    return false;
+  }
+  this->Current = scene;
+  this->Updating = true;
+  this->View->SetPanels(scene.panels);
+  this->View->setVisible(!scene.panels.empty());
+  this->View->SetProfileLine(scene.line);
+  this->View->View().lightAzimuth = scene.lightAzimuth;
+  this->View->View().lightElevation = scene.lightElevation;
+  this->LightAzimuth->setValue(static_cast<int>(scene.lightAzimuth));
+  this->LightElevation->setValue(static_cast<int>(scene.lightElevation));
+  this->Perceived->setChecked(scene.perceived);
+  this->ProfileChart->SetShowPerceived(scene.perceived);
+  for (int i = 0; i < this->SceneNames->count(); ++i)
+  {
+    if (this->SceneNames->item(i)->text().toStdString() == name)
+    {
+      this->SceneNames->setCurrentRow(i);
+    }
+  }
+  this->Updating = false;
+  QString html = QString("<h3>%1</h3><p>%2</p><p><b>Formula.</b> %3</p>")
+                   .arg(QString::fromStdString(scene.title))
+                   .arg(QString::fromStdString(scene.explanation).toHtmlEscaped())
+                   .arg(QString::fromStdString(scene.formula));
+  if (this->Input && !scene.usesInput)
+  {
+    html += "<p><i>This scene builds its own mesh; your mesh shows in modes, silhouette, "
+            "moon and metal.</i></p>";
+  }
+  this->Explanation->setHtml(html);
+  this->CurrentStudy = scene.plot == PlotKind::Parameter ? RunStudy(scene, options) : Study();
+  this->Plots->setCurrentIndex(static_cast<int>(scene.plot));
+  if (scene.explicitCamera)
+  {
+    this->View->SetCamera(scene.camera);
+  }
+  else
+  {
+    this->View->ResetCamera(scene.azimuth, scene.elevation, scene.zoom, scene.parallel);
+  }
+  this->OnPanelSelected(0);
+  this->View->RenderAll();
+  if (scene.plot == PlotKind::Brdf)
+  {
+    this->UpdateBrdfPlot();
+  }
+  this->statusBar()->showMessage(QString("scene %1: %2 panel(s)")
+                                   .arg(QString::fromStdString(name))
+                                   .arg(scene.panels.size()));
+  return true;
+}
+
+void MainWindow::ReloadScene()
+{
+  if (this->Current.name.empty())
+  {
+    return;
+  }
+  std::string error;
+  const std::string name = this->Current.name;
+  this->Current.name.clear();
+  if (!this->LoadScene(name, error))
+  {
+    this->statusBar()->showMessage(QString::fromStdString(error));
+    QMessageBox::warning(this, "ShadingLab", QString::fromStdString(error));
+  }
+}
+
+bool MainWindow::OpenMesh(const std::string& path, std::string& error)
+{
+  vtkSmartPointer<vtkPolyData> mesh;
+  try
+  {
+    mesh.TakeReference(ReadMesh(path));
+  }
+  catch (const std::exception& e)
+  {
+    error = path + ": " + e.what();
+    return false;
+  }
+  vtkSmartPointer<vtkPolyData> previous = this->Input;
+  this->Input = mesh;
+  const std::string target = this->Current.usesInput ? this->Current.name : "modes";
+  this->Current.name.clear();
+  if (!this->LoadScene(target, error))
+  {
+    this->Input = previous;
+    error = path + ": " + error;
+    return false;
+  }
+  this->setWindowTitle(QString("ShadingLab explorer - %1").arg(QString::fromStdString(path)));
+  return true;
+}
+
+void MainWindow::OnPanelSelected(int index)
+{
+  if (index < 0 || index >= this->View->PanelCount())
+  {
+    this->PanelLabel->setText("(no panel)");
+    return;
+  }
+  const widgets::ShadingPanel* panel = this->View->Panel(index);
+  const widgets::PanelSpec& spec = panel->Spec();
+  this->Updating = true;
+  this->PanelLabel->setText(QString("Panel %1: %2").arg(index + 1).arg(panel->Title()));
+  this->Mode->setCurrentIndex(this->Mode->findData(static_cast<int>(spec.mode)));
+  this->Backend->setCurrentIndex(this->Backend->findData(static_cast<int>(spec.backend)));
+  this->Interpolation->setCurrentIndex(
+    this->Interpolation->findData(static_cast<int>(spec.interpolation)));
+  this->Editor->SetMaterial(spec.material);
+  this->Updating = false;
+}
+
+void MainWindow::OnPanelEdited()
+{
+  if (this->Updating || this->View->PanelCount() == 0)
+  {
+    return;
+  }
+  const int index = this->View->CurrentPanel();
+  widgets::PanelSpec spec = this->View->Panel(index)->Spec();
+  spec.mode = static_cast<render::ShadingMode>(this->Mode->currentData().toInt());
+  spec.interpolation =
+    static_cast<render::InterpolationSpace>(this->Interpolation->currentData().toInt());
+  spec.material = this->Editor->GetMaterial();
+  const auto backend = static_cast<render::Backend>(this->Backend->currentData().toInt());
+  if (!render::SupportsModel(spec.mode, spec.material.model))
+  {
+    this->statusBar()->showMessage(QString("%1 cannot evaluate %2; choose another mode")
+                                     .arg(render::ShadingModeLabel(spec.mode))
+                                     .arg(ReflectanceModelName(spec.material.model)));
+    return;
+  }
+  if (backend != spec.backend)
+  {
+    // Another backend is another panel: rebuild the comparison.
+    std::vector<widgets::PanelSpec> specs;
+    for (int i = 0; i < this->View->PanelCount(); ++i)
+    {
+      specs.push_back(i == index ? spec : this->View->Panel(i)->Spec());
+    }
+    specs[index].backend = backend;
+    this->Current.panels = specs;
+    this->View->SetPanels(specs);
+    this->View->SetProfileLine(this->View->GetProfileLine());
+    this->View->SetCurrentPanel(index);
+    this->View->RenderAll();
+    return;
+  }
+  this->View->SetPanelSpec(index, spec);
+  this->Current.panels[index] = this->View->Panel(index)->Spec();
+  this->statusBar()->showMessage(QString("panel %1 re-rendered in %2 ms")
+                                   .arg(index + 1)
+                                   .arg(this->View->Panel(index)->LastRenderMilliseconds(), 0,
+                                     'f', 1));
+}
+
+void MainWindow::UpdatePlot()
+{
+  switch (this->Current.plot)
+  {
+    case PlotKind::Profile:
+    {
+      std::vector<widgets::ProfileCurve> curves;
+      const std::vector<int> panels = this->View->ProfilePanels();
+      const std::vector<widgets::Profile> profiles = this->View->Profiles();
+      for (size_t i = 0; i < panels.size(); ++i)
+      {
+        // The legend names a curve by its title up to a colon.
+        const std::string& title = this->View->Panel(panels[i])->Spec().title;
+        curves.push_back({ title.substr(0, title.find(':')),
+          widgets::PanelColor(panels[i]), profiles[i] });
+      }
+      this->ProfileChart->SetCurves(curves);
+      break;
+    }
+    case PlotKind::Parameter:
+    {
+      std::vector<widgets::ParameterSeries> series;
+      int color = 0;
+      for (const Study::Series& s : this->CurrentStudy.series)
+      {
+        series.push_back({ QString::fromStdString(s.name), widgets::PanelColor(color++), s.x, s.y });
+      }
+      std::vector<QString> categories;
+      for (const std::string& c : this->CurrentStudy.categories)
+      {
+        categories.push_back(QString::fromStdString(c));
+      }
+      this->ParameterChart->SetSeries(QString::fromStdString(this->CurrentStudy.title),
+        QString::fromStdString(this->CurrentStudy.xTitle),
+        QString::fromStdString(this->CurrentStudy.yTitle), series, this->CurrentStudy.marker,
+        categories);
+      break;
+    }
+    case PlotKind::Brdf:
+    case PlotKind::None:
+      break;
+  }
+}
+
+void MainWindow::UpdateBrdfPlot()
+{
+  this->BrdfChart->SetLobes(
+    widgets::DefaultLobes(this->Shininess->value(), this->Roughness->value() / 100.0),
+    this->ThetaL->value());
+}
+
+void MainWindow::RefreshNow()
+{
+  this->View->RenderAll();
+  QApplication::processEvents();
+  this->PlotTimer->stop();
+  this->UpdatePlot();
+  if (this->Current.plot == PlotKind::Brdf)
+  {
+    this->UpdateBrdfPlot();
+  }
+  QApplication::processEvents();
+}
+
+std::string MainWindow::PlotCsv() const
+{
+  if (this->Current.plot == PlotKind::Profile)
+  {
+    return this->ProfileChart->ToCsv();
+  }
+  std::ostringstream csv;
+  csv.precision(8);
+  if (this->Current.plot == PlotKind::Parameter)
+  {
+    csv << "series,x,y\n";
+    for (const Study::Series& s : this->CurrentStudy.series)
+    {
+      for (size_t i = 0; i < s.x.size(); ++i)
+      {
+        csv << '"' << s.name << "\"," << s.x[i] << ',' << s.y[i] << '\n';
+      }
+    }
+    return csv.str();
+  }
+  if (this->Current.plot == PlotKind::Brdf)
+  {
+    csv << "lobe,theta_l,theta_v,f_r\n";
+    for (const widgets::BrdfLobe& lobe :
+      widgets::DefaultLobes(this->Shininess->value(), this->Roughness->value() / 100.0))
+    {
+      for (int v = -90; v <= 90; ++v)
+      {
+        csv << '"' << lobe.name << "\"," << this->ThetaL->value() << ',' << v << ','
+            << widgets::BrdfInPlane(lobe.material, this->ThetaL->value(), v) << '\n';
+      }
+    }
+  }
+  return csv.str();
+}
+
+void MainWindow::dragEnterEvent(QDragEnterEvent* event)
+{
+  if (event->mimeData()->hasUrls())
+  {
+    event->acceptProposedAction();
+  }
+}
+
+void MainWindow::dropEvent(QDropEvent* event)
+{
+  const QList<QUrl> urls = event->mimeData()->urls();
+  if (urls.isEmpty())
+  {
+    return;
+  }
+  std::string error;
+  if (!this->OpenMesh(urls.front().toLocalFile().toStdString(), error))
+  {
+    QMessageBox::warning(this, "ShadingLab", QString::fromStdString(error));
+  }
+}
+
+} // namespace shadinglab::gui

@@ -1,0 +1,105 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The explorer's window: the scene list and its explanation (left), the
+// comparison and its plot (centre), the controls (right).
+#pragma once
+
+#include "Scenes.h"
+
+#include <QMainWindow>
+
+#include <vtkSmartPointer.h>
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QListWidget;
+class QSlider;
+class QSpinBox;
+class QStackedWidget;
+class QTextBrowser;
+class QTimer;
+class vtkPolyData;
+
+namespace shadinglab::widgets
+{
+class BrdfPlot;
+class ComparisonWidget;
+class MaterialEditor;
+class ParameterPlot;
+class ProfilePlot;
+}
+
+namespace shadinglab::gui
+{
+
+class MainWindow : public QMainWindow
+{
+  Q_OBJECT
+public:
+  explicit MainWindow(const SceneOptions& options);
+  ~MainWindow() override;
+
+  /// Builds and shows scene `name`; false with `error` (one line) if it fails.
+  bool LoadScene(const std::string& name, std::string& error);
+  /// Reads a mesh (the CLI's reader and its one-line errors) and shows it
+  /// in the current scene if it shows a mesh, else in "modes".
+  bool OpenMesh(const std::string& path, std::string& error);
+  /// Renders every panel and recomputes the plot now (not deferred).
+  void RefreshNow();
+
+  widgets::ComparisonWidget* Comparison() const { return this->View; }
+  widgets::ProfilePlot* Profile() const { return this->ProfileChart; }
+  widgets::ParameterPlot* Parameter() const { return this->ParameterChart; }
+  widgets::MaterialEditor* Materials() const { return this->Editor; }
+  const Scene& CurrentScene() const { return this->Current; }
+  /// The current plot's numbers as CSV (profile, study or lobes).
+  std::string PlotCsv() const;
+
+protected:
+  void dragEnterEvent(QDragEnterEvent* event) override;
+  void dropEvent(QDropEvent* event) override;
+
+private:
+  QWidget* BuildControls();
+  void BuildMenus();
+  void OnPanelSelected(int index);
+  void OnPanelEdited();
+  void UpdatePlot();
+  void UpdateBrdfPlot();
+  void ReloadScene();
+
+  SceneOptions Options;
+  vtkSmartPointer<vtkPolyData> Input;
+  Scene Current;
+  Study CurrentStudy;
+
+  widgets::ComparisonWidget* View;
+  QStackedWidget* Plots;
+  widgets::ProfilePlot* ProfileChart;
+  widgets::BrdfPlot* BrdfChart;
+  widgets::ParameterPlot* ParameterChart;
+  widgets::MaterialEditor* Editor;
+  QListWidget* SceneNames;
+  QTextBrowser* Explanation;
+  QLabel* PanelLabel;
+  QComboBox* Mode;
+  QComboBox* Backend;
+  QComboBox* Interpolation;
+  QSlider* LightAzimuth;
+  QSlider* LightElevation;
+  QComboBox* Weighting;
+  QDoubleSpinBox* CreaseAngle;
+  QSpinBox* Subdivision;
+  QCheckBox* Repair;
+  QCheckBox* ProfileTool;
+  QCheckBox* Perceived;
+  QSlider* Rotation;
+  QSlider* ThetaL;
+  QSlider* Shininess;
+  QSlider* Roughness;
+  QTimer* PlotTimer;
+  bool Updating = false;
+};
+
+} // namespace shadinglab::gui

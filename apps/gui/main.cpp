@@ -1,0 +1,195 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// shadinglab-gui: the artifact explorer. Interactive by default; with
+// --screenshot or --profile it renders the scene, writes the files and exits
+// (tests, documentation).
+#include "MainWindow.h"
+
+#include "MeshIO.h"
+
+#include <QApplication>
+#include <QSurfaceFormat>
+#include <QVTKOpenGLNativeWidget.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+
+#include <X11/Xlib.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace
+{
+
+const char* kUsage =
+  "usage: shadinglab-gui [--scene NAME] [INPUT] [--backend gpu|cpu] [--size WxH]\n"
+  "                      [--variant corrugated|isosurface] [--rotation DEG]\n"
+  "                      [--screenshot FILE.png] [--profile FILE.csv]\n"
+  "       shadinglab-gui --list-scenes\n"
+  "\n"
+  "The ShadingLab explorer: the lecture's interpolation artifacts side by side.\n"
+  "INPUT is any mesh the CLI reads (.vtp .vtk .vtu .ply .obj .stl .off).\n"
+  "With --screenshot and/or --profile the window is rendered, the files are\n"
+  "written (the profile or study numbers as CSV) and the program exits.\n"
+  "Needs an X display (e.g. xvfb-run); without one it exits with status 2.\n";
+
+/// Window size limits: below 400 x 300 the controls do not fit; 8192 is
+/// beyond any screen and keeps a grab under 256 MB.
+constexpr int kMinWindowSide = 300;
+constexpr int kMaxWindowSide = 8192;
+
+int Fail(const std::string& message)
+{
+  std::cerr << "shadinglab-gui: " << message << "\n";
+  return 2;
+}
+
+bool ParseSize(const std::string& text, int& w, int& h)
+{
+  char x = 0;
+  char rest = 0;
+  return std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &rest) == 3 && (x == 'x' || x == 'X');
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  using namespace shadinglab;
+  std::string scene = "modes", input, screenshot, profile, sizeText = "1600x1000";
+  gui::SceneOptions options;
+  std::vector<std::string> args(argv + 1, argv + argc);
+  for (size_t i = 0; i < args.size(); ++i)
+  {
+    const std::string& a = args[i];
+    auto value = [&](const char* name) -> std::string {
+      if (i + 1 >= args.size())
+      {
+        throw std::invalid_argument(std::string(name) + " needs a value");
+      }
+      return args[++i];
+    };
+    try
+    {
+      if (a == "--help" || a == "-h")
+      {
+        std::cout << kUsage;
+        return 0;
+      }
+      if (a == "--list-scenes")
+      {
+        for (const gui::SceneInfo& info : gui::SceneList())
+        {
+          std::cout << info.name << "\t" << info.summary << "\n";
+        }
+        return 0;
+      }
+      if (a == "--scene")
+        scene = value("--scene");
+      else if (a == "--screenshot")
+        screenshot = value("--screenshot");
+      else if (a == "--profile")
+        profile = value("--profile");
+      else if (a == "--size")
+        sizeText = value("--size");
+      else if (a == "--variant")
+        options.variant = value("--variant");
+      else if (a == "--rotation")
+      {
+        const std::string v = value("--rotation");
+        char* end = nullptr;
+        options.rotation = std::strtod(v.c_str(), &end);
+        if (*end || !(options.rotation >= 0 && options.rotation <= 90))
+        {
+          return Fail("--rotation must be a number of degrees in [0, 90] (got '" + v + "')");
+        }
+      }
+      else if (a == "--backend")
+      {
+        const std::string b = value("--backend");
+        if (b != "gpu" && b != "cpu")
+        {
+          return Fail("--backend must be gpu or cpu (got '" + b + "')");
+        }
+        options.backend = b == "gpu" ? render::Backend::GPU : render::Backend::CPU;
+      }
+      else if (!a.empty() && a[0] == '-')
+        return Fail("unknown option " + a + " (see --help)");
+      else if (input.empty())
+        input = a;
+      else
+        return Fail("more than one INPUT given ('" + input + "' and '" + a + "')");
+    }
+    catch (const std::invalid_argument& e)
+    {
+      return Fail(e.what());
+    }
+  }
+  int width = 0, height = 0;
+  if (!ParseSize(sizeText, width, height) || width < kMinWindowSide || height < kMinWindowSide ||
+    width > kMaxWindowSide || height > kMaxWindowSide)
+  {
+    return Fail("--size must be WxH with sides in [300, 8192] (got '" + sizeText + "')");
+  }
+  // Qt and VTK abort without an X display: say so first.
+  const char* display = std::getenv("DISPLAY");
+  if (!display || !*display)
+  {
+    return Fail("no X display (DISPLAY is not set); run it under X or xvfb-run");
+  }
+  if (Display* dpy = XOpenDisplay(nullptr))
+  {
+    XCloseDisplay(dpy);
+  }
+  else
+  {
+    return Fail(std::string("cannot open X display '") + display + "'");
+  }
+  vtkSmartPointer<vtkPolyData> mesh;
+  if (!input.empty())
+  {
+    try
+    {
+      mesh.TakeReference(ReadMesh(input));
+    }
+    catch (const std::exception& e)
+    {
+      return Fail(input + ": " + e.what());
+    }
+  }
+  options.input = mesh;
+
+  QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
+  QApplication app(argc, argv);
+  gui::MainWindow window(options);
+  window.resize(width, height);
+  window.show();
+  QApplication::processEvents();
+  std::string error;
+  if (!window.LoadScene(scene, error))
+  {
+    return Fail(error);
+  }
+  if (screenshot.empty() && profile.empty())
+  {
+    return app.exec();
+  }
+  window.RefreshNow();
+  if (!profile.empty())
+  {
+    std::ofstream out(profile);
+    out << window.PlotCsv();
+    if (!out)
+    {
+      return Fail("cannot write " + profile);
+    }
+  }
+  if (!screenshot.empty() && !window.grab().save(QString::fromStdString(screenshot)))
+  {
+    return Fail("cannot write " + screenshot);
+  }
+  return 0;
+}

@@ -1,0 +1,167 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "BrdfPlot.h"
+
+#include "ChartStyle.h"
+
+#include <QtCharts/QCategoryAxis>
+#include <QtCharts/QChartView>
+#include <QtCharts/QLegendMarker>
+#include <QtCharts/QLineSeries>
+#include <QtCharts/QPolarChart>
+#include <QtCharts/QValueAxis>
+
+#include <QVBoxLayout>
+
+#include <cmath>
+
+using namespace QtCharts;
+
+namespace shadinglab::widgets
+{
+
+double BrdfInPlane(const Material<double>& material, double thetaL, double thetaV)
+{
+  const double l = thetaL * kPi<double> / 180.0, v = thetaV * kPi<double> / 180.0;
+  // Light on the -x side, viewer on the +x side for thetaV > 0.
+  const Vec3<double> L(-std::sin(l), 0.0, std::cos(l));
+  const Vec3<double> V(std::sin(v), 0.0, std::cos(v));
+  const Vec3<double> N(0.0, 0.0, 1.0);
+  const Vec3<double> f = EvaluateBrdf(material, material.diffuseColor, N, L, V);
+  return 0.2126 * f.x + 0.7152 * f.y + 0.0722 * f.z;
+}
+
+std::vector<BrdfLobe> DefaultLobes(double shininess, double roughness)
+{
+  std::vector<BrdfLobe> lobes;
+  Material<double> base;
+  base.kd = 0.3;
+  base.ks = 0.7;
+  base.shininess = shininess;
+  Material<double> phong = base;
+  phong.model = ReflectanceModel::Phong;
+  lobes.push_back({ "Phong (R.V)^n", phong, QColor(0, 114, 178) });
+  Material<double> blinn = base;
+  blinn.model = ReflectanceModel::BlinnPhong;
+  lobes.push_back({ "Blinn-Phong (N.H)^n", blinn, QColor(213, 94, 0) });
+  Material<double> ct = base;
+  ct.model = ReflectanceModel::CookTorrance;
+  ct.lobeCount = 1;
+  ct.lobes[0] = { 1.0, roughness };
+  lobes.push_back({ "Cook-Torrance 1982", ct, QColor(0, 158, 115) });
+  Material<double> walter = ct;
+  walter.variant = SpecularVariant::Walter2007;
+  lobes.push_back({ "Cook-Torrance, Walter 2007", walter, QColor(204, 121, 167) });
+  Material<double> mixture = ct;
+  mixture.lobeCount = 2;
+  mixture.lobes[0] = { 0.4, roughness };
+  mixture.lobes[1] = { 0.6, std::min(1.0, 2.5 * roughness) };
+  lobes.push_back({ "Beckmann mixture 0.4 m + 0.6 (2.5 m)", mixture, QColor(230, 159, 0) });
+  return lobes;
+}
+
+BrdfPlot::BrdfPlot(QWidget* parent)
+  : QWidget(parent)
+  , View(new QChartView(this))
+{
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(0, 0, 0, 0);
+  this->View->setRenderHint(QPainter::Antialiasing);
+  this->View->setMinimumSize(300, 300);
+  layout->addWidget(this->View);
+  this->Redraw();
+}
+
+void BrdfPlot::SetLobes(const std::vector<BrdfLobe>& lobes, double thetaL)
+{
+  this->Lobes = lobes;
+  this->ThetaL = thetaL;
+  this->Redraw();
+}
+
+void BrdfPlot::SetSpecularOnly(bool on)
+{
+  this->SpecularOnly = on;
+  this->Redraw();
+}
+
+void BrdfPlot::Redraw()
+{
+  auto* chart = new QPolarChart;
+  StyleChart(chart,
+    QString("BRDF lobes in the plane of incidence, light at %1 deg%2")
+      .arg(this->ThetaL, 0, 'f', 0)
+      .arg(this->SpecularOnly ? " (specular term ks f_s)" : ""));
+  // The angular axis runs clockwise from the top: the normal is up, angles
+  // from the normal read -90 (left) .. 90 (right).
+  auto* angular = new QCategoryAxis;
+  angular->setRange(0, 360);
+  angular->setLabelsPosition(QCategoryAxis::AxisLabelsPositionOnValue);
+  for (int a = 0; a < 360; a += 30)
+  {
+    const int fromNormal = a <= 180 ? a : a - 360;
+    angular->append(QString("%1%2").arg(fromNormal).arg(QChar(0x00B0)), a);
+  }
+  angular->setTitleText("viewing angle from the normal");
+  auto* radial = MakeAxis("f_r (1/sr)");
+  chart->addAxis(angular, QPolarChart::PolarOrientationAngular);
+  chart->addAxis(radial, QPolarChart::PolarOrientationRadial);
+  double maxValue = 1e-3;
+  for (const BrdfLobe& lobe : this->Lobes)
+  {
+    Material<double> material = lobe.material;
+    if (this->SpecularOnly)
+    {
+      material.kd = 0.0;
+    }
+    // Two series per lobe, split at the normal (angle 0 = 360 on the axis).
+    auto* right = new QLineSeries;
+    auto* left = new QLineSeries;
+    for (int i = 0; i <= 180; ++i)
+    {
+      const double thetaV = -90.0 + i;
+      const double value = BrdfInPlane(material, this->ThetaL, thetaV);
+      maxValue = std::max(maxValue, value);
+      if (thetaV >= 0)
+      {
+        right->append(thetaV, value);
+      }
+      if (thetaV <= 0)
+      {
+        left->append(360.0 + thetaV, value);
+      }
+    }
+    QPen pen(lobe.color, 2);
+    for (QLineSeries* s : { left, right })
+    {
+      s->setPen(pen);
+      s->setName(QString::fromStdString(lobe.name));
+      chart->addSeries(s);
+      s->attachAxis(angular);
+      s->attachAxis(radial);
+    }
+    chart->legend()->markers(left).front()->setVisible(false);
+  }
+  radial->setRange(0, maxValue * 1.05);
+  // The incident direction and its mirror direction.
+  auto* incident = new QLineSeries;
+  incident->setName(QString("light (%1 deg)").arg(this->ThetaL, 0, 'f', 0));
+  incident->setPen(QPen(Qt::black, 2, Qt::DashLine));
+  incident->append(360.0 - this->ThetaL, 0.0);
+  incident->append(360.0 - this->ThetaL, maxValue * 1.05);
+  chart->addSeries(incident);
+  incident->attachAxis(angular);
+  incident->attachAxis(radial);
+  auto* mirror = new QLineSeries;
+  mirror->setName("mirror direction");
+  mirror->setPen(QPen(Qt::gray, 1, Qt::DotLine));
+  mirror->append(this->ThetaL, 0.0);
+  mirror->append(this->ThetaL, maxValue * 1.05);
+  chart->addSeries(mirror);
+  mirror->attachAxis(angular);
+  mirror->attachAxis(radial);
+  QChart* old = this->View->chart();
+  this->View->setChart(chart);
+  delete old;
+}
+
+} // namespace shadinglab::widgets

@@ -1,0 +1,265 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "CpuPanel.h"
+
+#include "ViewInteraction.h"
+
+#include "PolyDataMesh.h"
+#include "VtkCamera.h"
+#include "shadinglab/cpu/SoftwareRenderer.h"
+
+#include <vtkCamera.h>
+#include <vtkPolyData.h>
+
+#include <QMouseEvent>
+#include <QPainter>
+#include <QWheelEvent>
+
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <stdexcept>
+
+namespace shadinglab::widgets
+{
+
+/// Shows a QImage 1:1 and turns mouse drags into trackball camera moves.
+class ImageView : public QWidget
+{
+public:
+  explicit ImageView(QWidget* parent)
+    : QWidget(parent)
+  {
+    this->setAttribute(Qt::WA_OpaquePaintEvent);
+    this->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
+  }
+  QImage Picture;
+  vtkCamera* Camera = nullptr;
+  std::function<void()> CameraMoved;
+  std::function<void()> Resized;
+
+protected:
+  void paintEvent(QPaintEvent*) override
+  {
+    QPainter painter(this);
+    painter.fillRect(this->rect(), QColor(80, 80, 80));
+    painter.drawImage(0, 0, this->Picture);
+  }
+  void resizeEvent(QResizeEvent*) override
+  {
+    if (this->Resized)
+    {
+      this->Resized();
+    }
+  }
+  void mousePressEvent(QMouseEvent* event) override { this->LastPos = event->pos(); }
+  void mouseMoveEvent(QMouseEvent* event) override
+  {
+    if (!this->Camera || event->buttons() == Qt::NoButton)
+    {
+      return;
+    }
+    const QPoint d = event->pos() - this->LastPos;
+    this->LastPos = event->pos();
+    if (event->buttons() & Qt::MiddleButton ||
+      (event->buttons() & Qt::LeftButton && event->modifiers() & Qt::ShiftModifier))
+    {
+      PanCamera(this->Camera, d.x(), d.y(), this->height());
+    }
+    else if (event->buttons() & Qt::RightButton)
+    {
+      // vtkInteractorStyleTrackballCamera::Dolly: 1.1^(dy / 10 * MotionFactor / 2)
+      DollyCamera(this->Camera, std::pow(1.1, -d.y() * 0.5));
+    }
+    else if (event->buttons() & Qt::LeftButton)
+    {
+      RotateCamera(this->Camera, d.x(), d.y(), this->width(), this->height());
+    }
+    this->Moved();
+  }
+  void wheelEvent(QWheelEvent* event) override
+  {
+    if (this->Camera)
+    {
+      DollyCamera(this->Camera, std::pow(1.1, event->angleDelta().y() > 0 ? 1.0 : -1.0));
+      this->Moved();
+    }
+  }
+
+private:
+  void Moved()
+  {
+    if (this->CameraMoved)
+    {
+      this->CameraMoved();
+    }
+  }
+  QPoint LastPos;
+};
+
+const render::Mesh& CpuMeshCache::Get(vtkPolyData* polydata)
+{
+  if (this->Source != polydata || this->Time != polydata->GetMTime())
+  {
+    this->Mesh = render::MeshFromPolyData(polydata, this->Frame);
+    this->Source = polydata;
+    this->Time = polydata->GetMTime();
+  }
+  return this->Mesh;
+}
+
+const render::Image& RenderOnCpu(cpu::SoftwareRenderer& renderer, CpuMeshCache& cache,
+  const PanelSpec& spec, const ViewState& view, int width, int height)
+{
+  render::Scene scene;
+  scene.mesh = &cache.Get(spec.mesh);
+  scene.material = spec.material;
+  scene.camera = render::CameraFromVtk(view.camera);
+  scene.lighting = ViewLighting(view, scene.camera);
+  render::ToLocal(cache.Frame, scene.camera);
+  render::ToLocal(cache.Frame, scene.lighting);
+  // The local mesh fits the unit sphere at the origin: clip around it as
+  // vtkRenderer::ResetCameraClippingRange does (its 1e-3 near/far ratio).
+  const double distance = Length(scene.camera.position);
+  scene.camera.nearClip = std::max(distance - 1.01, 1e-3 * (distance + 1.01));
+  scene.camera.farClip = distance + 1.01;
+  return renderer.Render(scene, PanelOptions(spec, view, width, height));
+}
+
+CpuPanel::CpuPanel(const PanelSpec& spec, ViewState* view, QWidget* parent)
+  : ShadingPanel(spec, view, parent)
+  , Renderer(new cpu::SoftwareRenderer)
+  , ViewWidget(new ImageView(this))
+  , Overlay(nullptr)
+{
+  this->ViewWidget->Camera = view->camera;
+  // The comparison re-renders every panel, this one included.
+  this->ViewWidget->CameraMoved = [this]() { emit this->cameraMoved(this); };
+  this->ViewWidget->Resized = [this]() { this->Render(); };
+  this->Overlay = new ProfileOverlay(this->ViewWidget);
+  this->Overlay->DrawsLine = [this](Qt::KeyboardModifiers modifiers) {
+    return this->View->profileTool || (modifiers & Qt::ControlModifier);
+  };
+  this->Overlay->LineEdited = [this](const ProfileLine& line) {
+    this->Line = line;
+    emit this->profileLineEdited(line);
+  };
+  this->Overlay->Pressed = [this]() { emit this->activated(this); };
+  this->SetViewWidget(this->ViewWidget);
+}
+
+CpuPanel::~CpuPanel() = default;
+
+void CpuPanel::OnSpecChanged()
+{
+  this->Cache.Source = nullptr; // re-convert: the mesh may have been edited in place
+}
+
+void CpuPanel::OnProfileLineChanged()
+{
+  this->Overlay->SetLine(this->Line);
+}
+
+bool CpuPanel::RenderView()
+{
+  const int width = this->ViewWidget->width(), height = this->ViewWidget->height();
+  if (width < 2 || height < 2 || !this->SpecValue.mesh)
+  {
+    return false;
+  }
+  const auto start = std::chrono::steady_clock::now();
+  try
+  {
+    this->Last = RenderOnCpu(
+      *this->Renderer, this->Cache, this->SpecValue, *this->View, width, height);
+  }
+  catch (const std::exception& e)
+  {
+    this->Error = e.what();
+    this->ViewWidget->Picture = QImage();
+    this->ViewWidget->update();
+    return false;
+  }
+  if (this->SpecValue.errorReference >= 0 && this->Reference)
+  {
+    this->ViewWidget->Picture = this->HeatMap(this->Reference->Snapshot());
+  }
+  else
+  {
+    const std::vector<uint8_t> rgb8 = this->Last.ToRGB8(this->View->display);
+    this->ViewWidget->Picture =
+      QImage(rgb8.data(), width, height, 3 * width, QImage::Format_RGB888).copy();
+  }
+  this->ViewWidget->update();
+  this->CountRender(
+    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+  return true;
+}
+
+namespace
+{
+
+/// A perceptually ordered dark-to-bright map (black, purple, orange, pale
+/// yellow, after matplotlib's "inferno") that prints in grey as a ramp.
+QColor Inferno(double t)
+{
+  static const double stops[5][3] = { { 0, 0, 4 }, { 87, 16, 110 }, { 188, 55, 84 },
+    { 249, 142, 9 }, { 252, 255, 164 } };
+  t = std::clamp(t, 0.0, 1.0) * 4.0;
+  const int i = std::min(3, static_cast<int>(t));
+  const double f = t - i;
+  return QColor::fromRgbF((stops[i][0] + f * (stops[i + 1][0] - stops[i][0])) / 255.0,
+    (stops[i][1] + f * (stops[i + 1][1] - stops[i][1])) / 255.0,
+    (stops[i][2] + f * (stops[i + 1][2] - stops[i][2])) / 255.0);
+}
+
+} // namespace
+
+QImage CpuPanel::HeatMap(const render::Image& reference) const
+{
+  const int width = this->Last.width, height = this->Last.height;
+  QImage image(width, height, QImage::Format_RGB888);
+  image.fill(QColor(60, 60, 60));
+  // Panels of one comparison may differ by a pixel (the grid's rounding):
+  // compare against the reference's nearest pixel.
+  const bool comparable = reference.width > 0 && reference.height > 0;
+  const double scale = this->SpecValue.errorScale;
+  for (int y = 0; comparable && y < height; ++y)
+  {
+    const int ry = std::min(reference.height - 1, y * reference.height / height);
+    for (int x = 0; x < width; ++x)
+    {
+      const int rx = std::min(reference.width - 1, x * reference.width / width);
+      const size_t o = static_cast<size_t>(y) * width + x;
+      const size_t r = static_cast<size_t>(ry) * reference.width + rx;
+      if (!this->Last.covered[o] && !reference.covered[r])
+      {
+        continue;
+      }
+      const double error =
+        std::abs(Luminance(&this->Last.rgb[3 * o]) - Luminance(&reference.rgb[3 * r]));
+      image.setPixelColor(x, y, Inferno(error / scale));
+    }
+  }
+  // The colour bar: 0 at the bottom, the full scale at the top.
+  QPainter painter(&image);
+  const int barW = 10, barH = std::max(20, height / 3), x0 = width - barW - 34, y0 = 8;
+  for (int i = 0; i < barH; ++i)
+  {
+    painter.setPen(Inferno(1.0 - static_cast<double>(i) / (barH - 1)));
+    painter.drawLine(x0, y0 + i, x0 + barW, y0 + i);
+  }
+  painter.setPen(Qt::white);
+  QFont font = painter.font();
+  font.setPixelSize(10);
+  painter.setFont(font);
+  painter.drawText(x0 + barW + 3, y0 + 8, QString("%1").arg(scale * 255.0, 0, 'g', 3));
+  painter.drawText(x0 + barW + 3, y0 + barH, "0");
+  painter.drawText(x0 - 4, y0 + barH + 12, "/255");
+  if (!comparable)
+  {
+    painter.drawText(8, 16, "reference not rendered yet");
+  }
+  return image;
+}
+
+} // namespace shadinglab::widgets

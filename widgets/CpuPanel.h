@@ -1,0 +1,70 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// A panel drawn by the CPU software renderer (cpu::SoftwareRenderer), or a
+// heat map of its error against a reference panel. The mouse moves the
+// shared camera as VTK's trackball style does.
+#pragma once
+
+#include "ShadingPanel.h"
+
+#include <QImage>
+
+#include <memory>
+
+namespace shadinglab::cpu
+{
+class SoftwareRenderer;
+}
+
+namespace shadinglab::widgets
+{
+
+class ImageView;
+class ProfileOverlay;
+
+/// A mesh converted for the CPU renderer, with its world frame, re-made only
+/// when the vtkPolyData changes.
+struct CpuMeshCache
+{
+  render::Mesh Mesh;
+  render::WorldFrame Frame;
+  const void* Source = nullptr; ///< the vtkPolyData Mesh was made from
+  unsigned long Time = 0;       ///< and its modification time then
+  const render::Mesh& Get(vtkPolyData* polydata);
+};
+
+/**
+ * Renders `spec` as a panel of `view` would at width x height with the CPU
+ * renderer (the shared camera and light, clipping fitted to the mesh).
+ * The panels and the explorer's parameter studies both draw through it.
+ * Throws what Renderer::Render throws.
+ */
+const render::Image& RenderOnCpu(cpu::SoftwareRenderer& renderer, CpuMeshCache& cache,
+  const PanelSpec& spec, const ViewState& view, int width, int height);
+
+class CpuPanel final : public ShadingPanel
+{
+  Q_OBJECT
+public:
+  CpuPanel(const PanelSpec& spec, ViewState* view, QWidget* parent);
+  ~CpuPanel() override;
+
+  render::Image Snapshot() override { return this->Last; }
+  render::Backend Backend() const override { return render::Backend::CPU; }
+
+protected:
+  bool RenderView() override;
+  void OnSpecChanged() override;
+  void OnProfileLineChanged() override;
+
+private:
+  /// |I - I_ref| as a heat map (and the colour bar).
+  QImage HeatMap(const render::Image& reference) const;
+
+  std::unique_ptr<cpu::SoftwareRenderer> Renderer;
+  ImageView* ViewWidget;
+  ProfileOverlay* Overlay;
+  CpuMeshCache Cache;
+  render::Image Last;
+};
+
+} // namespace shadinglab::widgets

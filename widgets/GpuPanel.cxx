@@ -1,0 +1,177 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "GpuPanel.h"
+
+#include "ViewInteraction.h"
+
+#include "GpuScene.h"
+#include "VtkCamera.h"
+#include "vtkShadingLabPolyDataMapper.h"
+
+#include <QVTKOpenGLNativeWidget.h>
+#include <vtkActor.h>
+#include <vtkCallbackCommand.h>
+#include <vtkCamera.h>
+#include <vtkFloatArray.h>
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkImageData.h>
+#include <vtkInteractorStyleTrackballCamera.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkRenderWindowInteractor.h>
+#include <vtkRenderer.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkWindowToImageFilter.h>
+
+#include <chrono>
+
+namespace shadinglab::widgets
+{
+
+namespace
+{
+double Now()
+{
+  return std::chrono::duration<double, std::milli>(
+    std::chrono::steady_clock::now().time_since_epoch())
+    .count();
+}
+} // namespace
+
+GpuPanel::GpuPanel(const PanelSpec& spec, ViewState* view, QWidget* parent)
+  : ShadingPanel(spec, view, parent)
+  , ViewWidget(new QVTKOpenGLNativeWidget(this))
+  , Overlay(nullptr)
+{
+  this->ViewWidget->setSizePolicy(QSizePolicy::Expanding, QSizePolicy::Expanding);
+  this->ViewWidget->setRenderWindow(this->Window);
+  this->Window->SetMultiSamples(0);
+  this->Window->AddRenderer(this->Renderer);
+  this->Renderer->SetActiveCamera(view->camera);
+  this->Actor->SetMapper(this->Mapper);
+  this->Renderer->AddActor(this->Actor);
+  vtkNew<vtkInteractorStyleTrackballCamera> style;
+  this->Window->GetInteractor()->SetInteractorStyle(style);
+  style->AddObserver(vtkCommand::InteractionEvent, this, &GpuPanel::OnInteraction);
+  style->AddObserver(vtkCommand::EndInteractionEvent, this, &GpuPanel::OnInteraction);
+  this->Renderer->AddObserver(vtkCommand::StartEvent, this, &GpuPanel::OnRenderEnd);
+  this->Renderer->AddObserver(vtkCommand::EndEvent, this, &GpuPanel::OnRenderEnd);
+  this->Overlay = new ProfileOverlay(this->ViewWidget);
+  this->Overlay->DrawsLine = [this](Qt::KeyboardModifiers modifiers) {
+    return this->View->profileTool || (modifiers & Qt::ControlModifier);
+  };
+  this->Overlay->LineEdited = [this](const ProfileLine& line) {
+    this->Line = line;
+    emit this->profileLineEdited(line);
+  };
+  this->Overlay->Pressed = [this]() { emit this->activated(this); };
+  this->Configure();
+  this->SetViewWidget(this->ViewWidget);
+}
+
+GpuPanel::~GpuPanel() = default;
+
+void GpuPanel::Configure()
+{
+  this->Mapper->SetInputData(this->SpecValue.mesh);
+  const render::RenderOptions options = PanelOptions(this->SpecValue, *this->View, 1, 1);
+  gl::ConfigureActor(options, this->SpecValue.material, this->Mapper, this->Actor);
+}
+
+void GpuPanel::OnSpecChanged()
+{
+  this->Configure();
+}
+
+void GpuPanel::OnProfileLineChanged()
+{
+  this->Overlay->SetLine(this->Line);
+}
+
+void GpuPanel::OnInteraction(vtkObject*, unsigned long, void*)
+{
+  emit this->cameraMoved(this);
+}
+
+void GpuPanel::OnRenderEnd(vtkObject*, unsigned long event, void*)
+{
+  if (event == vtkCommand::StartEvent)
+  {
+    // The light follows the camera (which any panel may have moved) and
+    // the clipping range fits this panel's mesh.
+    const render::Camera camera = render::CameraFromVtk(this->View->camera);
+    gl::ApplyLighting(ViewLighting(*this->View, camera), this->Renderer);
+    this->Renderer->SetBackground(
+      this->View->background.x, this->View->background.y, this->View->background.z);
+    this->Renderer->ResetCameraClippingRange();
+    this->StartTime = Now();
+    return;
+  }
+  this->CountRender(Now() - this->StartTime);
+}
+
+bool GpuPanel::RenderView()
+{
+  if (!this->SpecValue.mesh || this->Mapper->GetFailedSubstitutionCount() > 0)
+  {
+    if (this->Mapper->GetFailedSubstitutionCount() > 0)
+    {
+      this->Error = "GPU shader substitution failed";
+    }
+    return false;
+  }
+  const int before = this->RenderCount();
+  this->Window->Render();
+  return this->RenderCount() > before;
+}
+
+render::Image GpuPanel::Snapshot()
+{
+  render::Image image;
+  const int* size = this->Window->GetSize();
+  const int W = size[0], H = size[1];
+  if (this->RenderCount() == 0 || W < 1 || H < 1)
+  {
+    return image;
+  }
+  this->Window->MakeCurrent();
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(this->Window);
+  grab->ShouldRerenderOff();
+  grab->ReadFrontBufferOff();
+  grab->SetInputBufferTypeToRGB();
+  grab->Update();
+  vtkNew<vtkWindowToImageFilter> depthGrab;
+  depthGrab->SetInput(this->Window);
+  depthGrab->ShouldRerenderOff();
+  depthGrab->ReadFrontBufferOff();
+  depthGrab->SetInputBufferTypeToZBuffer();
+  depthGrab->Update();
+  auto* pixels =
+    vtkUnsignedCharArray::SafeDownCast(grab->GetOutput()->GetPointData()->GetScalars());
+  auto* depth = vtkFloatArray::SafeDownCast(depthGrab->GetOutput()->GetPointData()->GetScalars());
+  if (!pixels || !depth || pixels->GetNumberOfTuples() != static_cast<vtkIdType>(W) * H ||
+    depth->GetNumberOfTuples() != static_cast<vtkIdType>(W) * H)
+  {
+    return image;
+  }
+  image.width = W;
+  image.height = H;
+  image.rgb.resize(static_cast<size_t>(W) * H * 3);
+  image.covered.resize(static_cast<size_t>(W) * H);
+  for (int y = 0; y < H; ++y)
+  {
+    for (int x = 0; x < W; ++x)
+    {
+      const vtkIdType i = static_cast<vtkIdType>(H - 1 - y) * W + x; // VTK rows go up
+      const size_t o = static_cast<size_t>(y) * W + x;
+      for (int c = 0; c < 3; ++c)
+      {
+        image.rgb[3 * o + c] = pixels->GetTypedComponent(i, c) / 255.0f;
+      }
+      image.covered[o] = depth->GetValue(i) < 1.0f;
+    }
+  }
+  return image;
+}
+
+} // namespace shadinglab::widgets

@@ -1,0 +1,228 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "MaterialEditor.h"
+
+#include "shadinglab/model/Materials.h"
+
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QSignalBlocker>
+#include <QSlider>
+
+#include <cmath>
+
+namespace shadinglab::widgets
+{
+
+namespace
+{
+/// Slider steps: fine enough that a drag looks continuous.
+constexpr int kSliderSteps = 1000;
+} // namespace
+
+MaterialEditor::MaterialEditor(QWidget* parent)
+  : QWidget(parent)
+  , Preset(new QComboBox(this))
+  , Model(new QComboBox(this))
+  , Variant(new QComboBox(this))
+  , Lobes(new QComboBox(this))
+{
+  auto* form = new QFormLayout(this);
+  form->setContentsMargins(0, 0, 0, 0);
+  this->Preset->addItem("(custom)");
+  for (const MaterialPreset& preset : MaterialPresets())
+  {
+    this->Preset->addItem(QString::fromStdString(preset.name));
+    this->Preset->setItemData(this->Preset->count() - 1,
+      QString::fromStdString(preset.source), Qt::ToolTipRole);
+  }
+  form->addRow("Preset", this->Preset);
+  for (const ReflectanceModelRow& row : kReflectanceModels)
+  {
+    this->Model->addItem(row.label, static_cast<int>(row.value));
+  }
+  form->addRow("Model", this->Model);
+  this->Variant->addItem("Cook-Torrance 1982 (1/pi)");
+  this->Variant->addItem("Walter 2007 (1/4)");
+  form->addRow("CT variant", this->Variant);
+  this->Lobes->addItem("1 Beckmann lobe");
+  this->Lobes->addItem("2 lobes (mixture)");
+  form->addRow("Roughness", this->Lobes);
+  this->AddRow("kd", 0.0, 1.0, false, &this->Value.kd);
+  this->AddRow("ks", 0.0, 1.0, false, &this->Value.ks);
+  this->AddRow("shininess n", 1.0, 1000.0, true, &this->Value.shininess);
+  this->AddRow("m (lobe 1)", kMinRoughness<double>, 1.0, true, &this->Value.lobes[0].m);
+  this->AddRow("weight lobe 1", 0.0, 1.0, false, &this->Value.lobes[0].weight);
+  this->AddRow("m (lobe 2)", kMinRoughness<double>, 1.0, true, &this->Value.lobes[1].m);
+  this->AddRow("eta R", 0.05, 4.0, false, &this->Value.eta.x);
+  this->AddRow("eta G", 0.05, 4.0, false, &this->Value.eta.y);
+  this->AddRow("eta B", 0.05, 4.0, false, &this->Value.eta.z);
+  this->AddRow("k R", 0.0, 10.0, false, &this->Value.k.x);
+  this->AddRow("k G", 0.0, 10.0, false, &this->Value.k.y);
+  this->AddRow("k B", 0.0, 10.0, false, &this->Value.k.z);
+  this->AddRow("albedo R", 0.0, 1.0, false, &this->Value.diffuseColor.x);
+  this->AddRow("albedo G", 0.0, 1.0, false, &this->Value.diffuseColor.y);
+  this->AddRow("albedo B", 0.0, 1.0, false, &this->Value.diffuseColor.z);
+  this->AddRow("ambient", 0.0, 0.5, false, &this->Value.ambient.x);
+  for (const Row& row : this->Rows)
+  {
+    auto* line = new QWidget(this);
+    auto* h = new QHBoxLayout(line);
+    h->setContentsMargins(0, 0, 0, 0);
+    h->addWidget(row.slider, 1);
+    h->addWidget(row.box);
+    form->addRow(row.label, line);
+  }
+  connect(this->Preset, QOverload<int>::of(&QComboBox::activated), this, [this](int index) {
+    if (index <= 0)
+    {
+      return;
+    }
+    const MaterialPreset* preset =
+      FindMaterialPreset(this->Preset->itemText(index).toStdString());
+    if (preset)
+    {
+      this->Value = preset->material;
+      this->Refresh();
+      this->Emit();
+    }
+  });
+  connect(this->Model, QOverload<int>::of(&QComboBox::activated), this, [this](int index) {
+    this->Value.model = static_cast<ReflectanceModel>(this->Model->itemData(index).toInt());
+    this->Emit();
+  });
+  connect(this->Variant, QOverload<int>::of(&QComboBox::activated), this, [this](int index) {
+    this->Value.variant =
+      index == 1 ? SpecularVariant::Walter2007 : SpecularVariant::CookTorrance1982;
+    this->Emit();
+  });
+  connect(this->Lobes, QOverload<int>::of(&QComboBox::activated), this, [this](int index) {
+    this->Value.lobeCount = index + 1;
+    if (this->Value.lobeCount == 1)
+    {
+      this->Value.lobes[0].weight = 1.0;
+    }
+    else
+    {
+      this->Value.lobes[0].weight = 0.5;
+      this->Value.lobes[1].weight = 0.5;
+      if (!(this->Value.lobes[1].m > 0))
+      {
+        this->Value.lobes[1].m = std::min(1.0, 2.5 * this->Value.lobes[0].m);
+      }
+    }
+    this->Refresh();
+    this->Emit();
+  });
+  this->Refresh();
+}
+
+void MaterialEditor::AddRow(
+  const QString& label, double lo, double hi, bool logScale, double* target)
+{
+  Row row{ label, lo, hi, logScale, new QSlider(Qt::Horizontal, this),
+    new QDoubleSpinBox(this), target };
+  row.slider->setRange(0, kSliderSteps);
+  row.box->setRange(lo, hi);
+  row.box->setDecimals(hi > 100 ? 1 : 3);
+  row.box->setSingleStep((hi - lo) / 100.0);
+  row.box->setKeyboardTracking(false);
+  const int index = static_cast<int>(this->Rows.size());
+  connect(row.slider, &QSlider::valueChanged, this, [this, index](int step) {
+    if (this->Updating)
+    {
+      return;
+    }
+    const Row& r = this->Rows[index];
+    const double t = static_cast<double>(step) / kSliderSteps;
+    const double value =
+      r.logScale ? r.lo * std::pow(r.hi / r.lo, t) : r.lo + t * (r.hi - r.lo);
+    this->OnRowEdited(index, value);
+  });
+  connect(row.box, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
+    [this, index](double value) {
+      if (!this->Updating)
+      {
+        this->OnRowEdited(index, value);
+      }
+    });
+  this->Rows.push_back(row);
+}
+
+void MaterialEditor::OnRowEdited(int index, double value)
+{
+  Row& row = this->Rows[index];
+  *row.target = std::clamp(value, row.lo, row.hi);
+  Material<double>& m = this->Value;
+  // kd + ks <= 1 (docs/model.md eq. 1.2): the other coefficient gives way.
+  if (row.target == &m.kd && m.kd + m.ks > 1.0)
+  {
+    m.ks = 1.0 - m.kd;
+  }
+  if (row.target == &m.ks && m.kd + m.ks > 1.0)
+  {
+    m.kd = 1.0 - m.ks;
+  }
+  // Mixture weights sum to 1: lobe 2 takes the rest.
+  if (m.lobeCount == 2)
+  {
+    m.lobes[1].weight = 1.0 - m.lobes[0].weight;
+  }
+  else
+  {
+    m.lobes[0].weight = 1.0;
+  }
+  // One ambient slider: grey ambient reflectance.
+  m.ambient.y = m.ambient.z = m.ambient.x;
+  this->Preset->setCurrentIndex(0);
+  this->Refresh();
+  this->Emit();
+}
+
+bool MaterialEditor::SetParameter(const QString& label, double value)
+{
+  for (size_t i = 0; i < this->Rows.size(); ++i)
+  {
+    if (this->Rows[i].label == label)
+    {
+      this->OnRowEdited(static_cast<int>(i), value);
+      return true;
+    }
+  }
+  return false;
+}
+
+void MaterialEditor::SetMaterial(const Material<double>& material)
+{
+  this->Value = material;
+  this->Preset->setCurrentIndex(0);
+  this->Refresh();
+}
+
+void MaterialEditor::Refresh()
+{
+  this->Updating = true;
+  for (Row& row : this->Rows)
+  {
+    const double v = std::clamp(*row.target, row.lo, row.hi);
+    const double t = row.logScale ? std::log(v / row.lo) / std::log(row.hi / row.lo)
+                                  : (v - row.lo) / (row.hi - row.lo);
+    row.slider->setValue(static_cast<int>(std::lround(t * kSliderSteps)));
+    row.box->setValue(v);
+  }
+  this->Model->setCurrentIndex(this->Model->findData(static_cast<int>(this->Value.model)));
+  this->Variant->setCurrentIndex(this->Value.variant == SpecularVariant::Walter2007 ? 1 : 0);
+  this->Lobes->setCurrentIndex(std::clamp(this->Value.lobeCount, 1, 2) - 1);
+  this->Updating = false;
+}
+
+void MaterialEditor::Emit()
+{
+  if (ValidateMaterial(this->Value).empty())
+  {
+    emit this->materialChanged(this->Value);
+  }
+}
+
+} // namespace shadinglab::widgets

@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Presets and a slider for every parameter of the model's Material: kd, ks
+// (kd + ks <= 1 enforced as either moves), shininess, the Beckmann mixture
+// (one or two lobes: roughness and weight), eta and k per channel, the
+// Cook-Torrance 1982 / Walter 2007 variant, ambient, albedo.
+#pragma once
+
+#include "shadinglab/model/Shading.h"
+
+#include <QWidget>
+
+#include <vector>
+
+class QComboBox;
+class QDoubleSpinBox;
+class QSlider;
+
+namespace shadinglab::widgets
+{
+
+class MaterialEditor : public QWidget
+{
+  Q_OBJECT
+public:
+  explicit MaterialEditor(QWidget* parent = nullptr);
+  /// Shows `material` without emitting materialChanged.
+  void SetMaterial(const Material<double>& material);
+  const Material<double>& GetMaterial() const { return this->Value; }
+  /// Sets one parameter by its label (as a user would move its slider):
+  /// emits materialChanged once. False when no such parameter.
+  bool SetParameter(const QString& label, double value);
+
+signals:
+  /// Every edit, already valid (ValidateMaterial passes).
+  void materialChanged(const Material<double>& material);
+
+private:
+  struct Row
+  {
+    QString label;
+    double lo, hi;
+    bool logScale;
+    QSlider* slider;
+    QDoubleSpinBox* box;
+    double* target;
+  };
+  void AddRow(const QString& label, double lo, double hi, bool logScale, double* target);
+  void OnRowEdited(int index, double value);
+  void Refresh();
+  void Emit();
+
+  Material<double> Value;
+  QComboBox* Preset;
+  QComboBox* Model;
+  QComboBox* Variant;
+  QComboBox* Lobes;
+  std::vector<Row> Rows;
+  bool Updating = false;
+};
+
+} // namespace shadinglab::widgets

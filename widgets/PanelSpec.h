@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// What one panel of the comparison shows, and the view state all panels
+// share. Plain data: the explorer's scenes are lists of PanelSpecs.
+#pragma once
+
+#include "shadinglab/model/Shading.h"
+#include "shadinglab/render/Options.h"
+#include "shadinglab/render/Renderer.h"
+
+#include <vtkCamera.h>   // complete types for the smart pointers below
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+
+#include <string>
+
+
+namespace shadinglab::widgets
+{
+
+struct PanelSpec
+{
+  std::string title; ///< what the panel shows, in a teacher's words
+  /// The mesh drawn (prepared: with the normals the panel should use). Panels
+  /// may share one mesh or show different ones (repair, subdivision, normal
+  /// weightings) under the one camera.
+  vtkSmartPointer<vtkPolyData> mesh;
+  render::ShadingMode mode = render::ShadingMode::Phong;
+  Material<double> material;
+  /// GPU by default; a GPU panel without OpenGL >= 3.2 becomes a CPU panel
+  /// and says so in its title.
+  render::Backend backend = render::Backend::GPU;
+  render::InterpolationSpace interpolation = render::InterpolationSpace::Perspective;
+  /// Direct: quads and polygons scan-converted whole (CPU only: the GPU
+  /// triangulates), the lecture's polygon scan conversion.
+  render::PolygonHandling polygons = render::PolygonHandling::Triangulate;
+  /// >= 0: the panel displays the per-pixel error |I - I_ref| of its image
+  /// against panel `errorReference` as a heat map instead of its image.
+  int errorReference = -1;
+  /// The heat map's full scale, in linear intensity.
+  double errorScale = 16.0 / 255.0;
+};
+
+/// What all panels share: one camera (rotate, zoom or pan in any panel moves
+/// all) and one light given in the camera's frame (render::CameraLight).
+struct ViewState
+{
+  vtkSmartPointer<vtkCamera> camera;
+  double lightAzimuth = -25.0;  ///< degrees toward the camera's right
+  double lightElevation = 25.0; ///< degrees toward the camera's up
+  Vec3<float> background{ 0.32f, 0.34f, 0.43f };
+  render::DisplayTransform display = render::DisplayTransform::Clamp;
+  /// Left-drag draws the profile line instead of rotating.
+  bool profileTool = false;
+};
+
+/// The render options of a panel of `spec` at width x height.
+render::RenderOptions PanelOptions(const PanelSpec& spec, const ViewState& view, int width,
+  int height);
+
+/// The scene's lighting for `camera`: one directional light from the view
+/// state's direction, ambient intensity 1 (the material's ambient sets Ra).
+Lighting<double> ViewLighting(const ViewState& view, const render::Camera& camera);
+
+} // namespace shadinglab::widgets

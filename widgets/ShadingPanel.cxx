@@ -1,0 +1,157 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "ShadingPanel.h"
+
+#include "CpuPanel.h"
+#include "GpuPanel.h"
+
+#include "GpuRenderer.h"
+
+#include <QLabel>
+#include <QVBoxLayout>
+
+namespace shadinglab::widgets
+{
+
+namespace
+{
+
+/// Asked once per process: creating a GL window to ask is not free.
+bool GpuAnswers(std::string& why)
+{
+  static std::string reason;
+  static const bool available = gl::GpuAvailable(reason);
+  why = reason;
+  return available;
+}
+
+} // namespace
+
+Lighting<double> ViewLighting(const ViewState& view, const render::Camera& camera)
+{
+  Lighting<double> lighting;
+  lighting.lightCount = 1;
+  lighting.lights[0] = render::CameraLight(camera, view.lightAzimuth, view.lightElevation);
+  return lighting;
+}
+
+ShadingPanel* ShadingPanel::Create(const PanelSpec& spec, ViewState* view, QWidget* parent)
+{
+  if (spec.backend == render::Backend::GPU && spec.errorReference < 0)
+  {
+    std::string why;
+    if (GpuAnswers(why))
+    {
+      return new GpuPanel(spec, view, parent);
+    }
+    auto* panel = new CpuPanel(spec, view, parent);
+    panel->Note = QString("CPU: no GPU (%1)").arg(QString::fromStdString(why));
+    panel->UpdateTitle();
+    return panel;
+  }
+  return new CpuPanel(spec, view, parent);
+}
+
+ShadingPanel::ShadingPanel(const PanelSpec& spec, ViewState* view, QWidget* parent)
+  : QWidget(parent)
+  , SpecValue(spec)
+  , View(view)
+  , TitleLabel(new QLabel(this))
+{
+  auto* layout = new QVBoxLayout(this);
+  layout->setContentsMargins(2, 2, 2, 2);
+  layout->setSpacing(2);
+  this->TitleLabel->setWordWrap(true);
+  this->TitleLabel->setAlignment(Qt::AlignCenter);
+  this->TitleLabel->setTextFormat(Qt::RichText);
+  // Two lines for every title, so panels of one row have views of one size
+  // (the shared camera then frames them alike).
+  this->TitleLabel->setFixedHeight(2 * this->TitleLabel->fontMetrics().lineSpacing() + 4);
+  layout->addWidget(this->TitleLabel);
+  this->setMinimumSize(120, 120);
+}
+
+void ShadingPanel::SetViewWidget(QWidget* viewWidget)
+{
+  static_cast<QVBoxLayout*>(this->layout())->addWidget(viewWidget, 1);
+  this->UpdateTitle();
+}
+
+QString ShadingPanel::Title() const
+{
+  QString backend = this->Note.isEmpty()
+    ? QString(render::BackendName(this->Backend())).toUpper()
+    : this->Note;
+  QString title = QString::fromStdString(this->SpecValue.title) + " [" + backend + "]";
+  if (!this->Error.isEmpty())
+  {
+    title += " - error: " + this->Error;
+  }
+  return title;
+}
+
+void ShadingPanel::SetCurveColor(const QColor& color)
+{
+  this->CurveColor = color;
+  this->UpdateTitle();
+}
+
+void ShadingPanel::UpdateTitle()
+{
+  QString swatch;
+  if (this->CurveColor.isValid())
+  {
+    swatch = QString("<span style='color:%1'>&#9632;</span> ").arg(this->CurveColor.name());
+  }
+  QString text = swatch + "<b>" + this->Title().toHtmlEscaped() + "</b>";
+  this->TitleLabel->setText(text);
+  this->TitleLabel->setStyleSheet(
+    this->Selected ? "background:#ffe9a8; color:#000;" : "color:#000;");
+}
+
+void ShadingPanel::SetSpec(const PanelSpec& spec)
+{
+  this->SpecValue = spec;
+  this->OnSpecChanged();
+  this->UpdateTitle();
+  this->Render();
+}
+
+void ShadingPanel::Render()
+{
+  this->Error.clear();
+  this->RenderView();
+  this->UpdateTitle();
+}
+
+void ShadingPanel::CountRender(double milliseconds)
+{
+  ++this->Renders;
+  this->LastMilliseconds = milliseconds;
+}
+
+void ShadingPanel::SetProfileLine(const ProfileLine& line)
+{
+  this->Line = line;
+  this->OnProfileLineChanged();
+}
+
+void ShadingPanel::SetSelected(bool selected)
+{
+  this->Selected = selected;
+  this->UpdateTitle();
+}
+
+render::RenderOptions PanelOptions(const PanelSpec& spec, const ViewState& view, int width,
+  int height)
+{
+  render::RenderOptions options;
+  options.mode = spec.mode;
+  options.interpolation = spec.interpolation;
+  options.polygons = spec.polygons;
+  options.width = width;
+  options.height = height;
+  options.background = view.background;
+  return options;
+}
+
+} // namespace shadinglab::widgets

@@ -20,6 +20,9 @@ void StyleChart(QtCharts::QChart* chart, const QString& title)
   chart->setMargins(QMargins(4, 4, 4, 4));
   chart->legend()->setAlignment(Qt::AlignBottom);
   chart->legend()->setShowToolTips(true);
+  QFont legendFont = chart->legend()->font();
+  legendFont.setPointSize(8);
+  chart->legend()->setFont(legendFont);
 }
 
 QtCharts::QValueAxis* MakeAxis(const QString& title, const QString& format)

@@ -47,6 +47,7 @@ struct ViewState
   vtkSmartPointer<vtkCamera> camera;
   double lightAzimuth = -25.0;  ///< degrees toward the camera's right
   double lightElevation = 25.0; ///< degrees toward the camera's up
+  double lightIntensity = 1.0;  ///< I_L of the one light (eq. 1.1)
   Vec3<float> background{ 0.32f, 0.34f, 0.43f };
   render::DisplayTransform display = render::DisplayTransform::Clamp;
   /// Left-drag draws the profile line instead of rotating.

@@ -94,6 +94,8 @@ void ParameterPlot::SetSeries(const QString& title, const QString& xTitle, const
   }
   const double pad = categories.empty() ? 0.0 : 0.5;
   x->setRange(xlo - pad, xhi + pad);
+  // Plain integers for counts, three digits otherwise (no 4.94e+03).
+  y->setLabelFormat(yhi >= 100.0 ? "%.0f" : "%.3g");
   y->setRange(ylo, yhi * 1.1);
   if (marker > -1e299)
   {

@@ -30,7 +30,8 @@ Lighting<double> ViewLighting(const ViewState& view, const render::Camera& camer
 {
   Lighting<double> lighting;
   lighting.lightCount = 1;
-  lighting.lights[0] = render::CameraLight(camera, view.lightAzimuth, view.lightElevation);
+  lighting.lights[0] =
+    render::CameraLight(camera, view.lightAzimuth, view.lightElevation, view.lightIntensity);
   return lighting;
 }
 

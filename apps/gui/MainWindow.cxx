@@ -342,6 +342,7 @@ bool MainWindow::LoadScene(const std::string& name, std::string& error)
   this->View->SetProfileLine(scene.line);
   this->View->View().lightAzimuth = scene.lightAzimuth;
   this->View->View().lightElevation = scene.lightElevation;
+  this->View->View().lightIntensity = scene.lightIntensity;
   this->LightAzimuth->setValue(static_cast<int>(scene.lightAzimuth));
   this->LightElevation->setValue(static_cast<int>(scene.lightElevation));
   this->Perceived->setChecked(scene.perceived);

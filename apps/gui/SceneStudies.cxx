@@ -46,6 +46,7 @@ widgets::ViewState StudyView(const Scene& scene, const std::vector<widgets::Pane
     view.camera);
   view.lightAzimuth = scene.lightAzimuth;
   view.lightElevation = scene.lightElevation;
+  view.lightIntensity = scene.lightIntensity;
   return view;
 }
 
@@ -100,13 +101,14 @@ Study SilhouetteStudy(const Scene& scene, const SceneOptions& options)
   {
     --kLevels;
   }
-  study.yTitle = "pixels covered differently from level " + std::to_string(kLevels);
+  study.yTitle = "pixels differing from level " + std::to_string(kLevels);
   std::vector<widgets::PanelSpec> specs;
   for (int level = 0; level <= kLevels; ++level)
   {
     widgets::PanelSpec spec = scene.panels[0];
     mesh::PreparationOptions p = options.preparation;
     p.repair = false;
+    p.featureAngle = options.input ? p.featureAngle : 180.0; // as the scene
     p.subdivisionLevels = level;
     spec.mesh = Prepared(scene.panels[0].mesh, p);
     specs.push_back(spec);
@@ -139,7 +141,7 @@ Study NormalsStudy(const Scene& scene)
   Study study;
   study.title = "Mean shading error of each weighting (Phong, 256 x 256)";
   study.xTitle = "vertex normal weighting";
-  study.yTitle = "mean |I - I_exact| over the surface (1/255)";
+  study.yTitle = "mean |I - I_exact| (1/255)";
   cpu::SoftwareRenderer renderer;
   const widgets::ViewState view = StudyView(scene, scene.panels);
   constexpr int kSize = 256;

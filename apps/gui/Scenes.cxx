@@ -215,6 +215,7 @@ Scene Orientation(const SceneOptions& o)
   triangulated.backend = o.backend;
   s.panels = { first, second, triangulated };
   s.parallel = true;
+  s.zoom = 1.6;
   s.lightAzimuth = 0;
   s.lightElevation = 0;
   s.plot = PlotKind::Parameter;
@@ -234,7 +235,7 @@ Scene SharedVertices(const SceneOptions& o)
 {
   Scene s;
   s.title = "Shared vertices: T-junctions";
-  PolyPtr patch = WithExactNormals(Adopt(datasets::MakeTJunctionPatch(2)));
+  PolyPtr patch = WithExactNormals(Adopt(datasets::MakeTJunctionPatch(1)));
   PolyPtr cracked = CrackedTJunctions(patch);
   mesh::PreparationOptions repair;
   repair.repair = true;
@@ -245,18 +246,24 @@ Scene SharedVertices(const SceneOptions& o)
   {
     throw std::logic_error("repair dropped the exact normals");
   }
-  const Material<double> m = Plastic(ReflectanceModel::BlinnPhong);
+  // A dim, broad highlight: the jump stays inside [0, 1] on the plot.
+  Material<double> m = Plastic(ReflectanceModel::BlinnPhong);
+  m.kd = 0.45;
+  m.ks = 0.08;
+  m.shininess = 24;
   s.panels = { Panel("T-junctions: intensity jumps along x = 0", patch, ShadingMode::Gouraud,
                  m, o.backend),
     Panel("T vertices lifted onto the surface: cracks", cracked, ShadingMode::Gouraud, m,
       o.backend),
     Panel("Repaired: edges split at the T vertices", repaired, ShadingMode::Gouraud, m,
       o.backend) };
-  s.elevation = -55;
-  s.azimuth = -20;
-  s.zoom = 1.3;
-  s.lightAzimuth = -35;
-  s.lightElevation = 40;
+  // The light mirrors the view about the patch's top normal (0, 0, 1), the
+  // T vertex's own normal: its highlight is what the coarse edge misses.
+  s.elevation = -30;
+  s.azimuth = -15;
+  s.zoom = 1.5;
+  s.lightAzimuth = 28;
+  s.lightElevation = 58;
   s.line = { 0.15, 0.5, 0.85, 0.5 };
   s.explanation =
     "The left half is meshed coarsely, the right half finely; the fine vertices on the "
@@ -283,14 +290,21 @@ Scene Silhouette(const SceneOptions& o)
   // Four panels, levels 0..3, fewer for a large input (llvmpipe draws
   // ~kPanelMaxFaces at interactive rates).
   constexpr double kPanelMaxFaces = 2e6;
+  // The built-in icosahedron's dihedral angles (41.8 degrees) are above the
+  // default crease angle: refine it smooth. A user's mesh keeps its creases.
+  mesh::PreparationOptions refine = o.preparation;
+  refine.repair = false;
+  if (!o.input)
+  {
+    refine.featureAngle = 180.0;
+  }
   for (int level = 0; level < 4; ++level)
   {
     if (level > 1 && base->GetNumberOfPolys() * std::pow(4.0, level) > kPanelMaxFaces)
     {
       break;
     }
-    mesh::PreparationOptions p = o.preparation;
-    p.repair = false;
+    mesh::PreparationOptions p = refine;
     p.subdivisionLevels = level;
     PolyPtr refined = Prepared(base, p);
     const std::string title = level == 0
@@ -374,7 +388,7 @@ Scene Moon(const SceneOptions& o)
     Panel("Lommel-Seeliger: the flat full moon", sphere, ShadingMode::Phong, moon, o.backend),
     Panel("Cook-Torrance, m = 0.5", sphere, ShadingMode::Phong, ct, o.backend) };
   s.parallel = true;
-  s.zoom = 1.15;
+  s.zoom = 1.5;
   s.lightAzimuth = 0;
   s.lightElevation = 0;
   s.line = { 0.0, 0.5, 1.0, 0.5 };
@@ -399,10 +413,12 @@ Scene Metal(const SceneOptions& o)
   s.panels = { Panel("Cook-Torrance gold", sphere, ShadingMode::Phong, Preset("gold"), o.backend),
     Panel("Cook-Torrance copper", sphere, ShadingMode::Phong, Preset("copper"), o.backend),
     Panel("Phong plastic", sphere, ShadingMode::Phong, plastic, o.backend),
-    Panel("Gouraud gold: the highlight falls between vertices", sphere, ShadingMode::Gouraud,
+    Panel("Gouraud gold: misses the highlight", sphere, ShadingMode::Gouraud,
       Preset("gold"), o.backend) };
   s.lightAzimuth = 70;
   s.lightElevation = 15;
+  // A dim light: the metals' highlights stay below 1, so their colour shows.
+  s.lightIntensity = 0.3;
   s.line = { 0.5, 0.45, 0.98, 0.45 };
   s.explanation =
     "With the light nearly at right angles to the view, the highlight sits near the "

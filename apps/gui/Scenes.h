@@ -59,7 +59,7 @@ struct Scene
   /// Instead of fitting the bounds (azimuth, elevation, zoom): this camera.
   bool explicitCamera = false;
   render::Camera camera;
-  double lightAzimuth = -25, lightElevation = 25;
+  double lightAzimuth = -25, lightElevation = 25, lightIntensity = 1;
   widgets::ProfileLine line;
   PlotKind plot = PlotKind::Profile;
   bool perceived = false;

@@ -108,15 +108,11 @@ vtkSmartPointer<vtkPolyData> PrepareMesh(
     throw std::invalid_argument(problem);
   }
   vtkSmartPointer<vtkPolyData> current = input;
-  if (!o.repair)
-  {
-    return current;
-  }
   // Repair only when asked for a weld or T-junctions, or when the cheap
   // check finds something to repair: a clean 5M-triangle mesh does not pay
   // for the OpenMesh halfedge build.
-  bool needed = o.weld || o.fixTJunctions || input->GetNumberOfStrips() > 0;
-  if (!needed)
+  bool needed = o.repair && (o.weld || o.fixTJunctions || input->GetNumberOfStrips() > 0);
+  if (o.repair && !needed)
   {
     FlatPolygons flat;
     FlatPolygonsFromPolyData(input, flat);

@@ -37,7 +37,9 @@ constexpr long long kMaxSubdividedFaces = 1LL << 25;
 
 struct PreparationOptions
 {
-  bool repair = true;          ///< weld, degenerate removal, orientation, non-manifold (vtkMeshRepair)
+  /// weld, degenerate removal, orientation, non-manifold (vtkMeshRepair);
+  /// off: the mesh goes to subdivision or normals as it is.
+  bool repair = true;
   bool weld = false;           ///< weld coincident points
   double weldTolerance = 1e-6; ///< relative to the bounding-box diagonal, [0, 0.1]
   bool fixTJunctions = false;
@@ -66,9 +68,10 @@ bool ParseSubdivisionScheme(const std::string& name, SubdivisionScheme& scheme);
 std::string ValidatePreparationOptions(const PreparationOptions& options);
 
 /**
- * Runs the step. Without options.repair the input is returned as is; with
- * it, the repair filter runs when a weld or T-junctions are asked for or
- * when CheckRepairNeeds finds something (else the report says it skipped).
+ * Runs the step. With options.repair, the repair filter runs when a weld or
+ * T-junctions are asked for or when CheckRepairNeeds finds something (else
+ * the report says it skipped); then subdivision or weighted normals as
+ * asked (neither: the input itself is returned).
  * Throws std::invalid_argument with one line for invalid options, a mesh
  * left without polygons, or a failed subdivision.
  */

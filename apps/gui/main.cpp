@@ -134,6 +134,18 @@ int main(int argc, char** argv)
   {
     return Fail("--size must be WxH with sides in [300, 8192] (got '" + sizeText + "')");
   }
+  vtkSmartPointer<vtkPolyData> mesh;
+  if (!input.empty())
+  {
+    try
+    {
+      mesh.TakeReference(ReadMesh(input));
+    }
+    catch (const std::exception& e)
+    {
+      return Fail(input + ": " + e.what());
+    }
+  }
   // Qt and VTK abort without an X display: say so first.
   const char* display = std::getenv("DISPLAY");
   if (!display || !*display)
@@ -147,18 +159,6 @@ int main(int argc, char** argv)
   else
   {
     return Fail(std::string("cannot open X display '") + display + "'");
-  }
-  vtkSmartPointer<vtkPolyData> mesh;
-  if (!input.empty())
-  {
-    try
-    {
-      mesh.TakeReference(ReadMesh(input));
-    }
-    catch (const std::exception& e)
-    {
-      return Fail(input + ": " + e.what());
-    }
   }
   options.input = mesh;
 

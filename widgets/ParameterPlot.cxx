@@ -97,6 +97,11 @@ void ParameterPlot::SetSeries(const QString& title, const QString& xTitle, const
   // Plain integers for counts, three digits otherwise (no 4.94e+03).
   y->setLabelFormat(yhi >= 100.0 ? "%.0f" : "%.3g");
   y->setRange(ylo, yhi * 1.1);
+  y->applyNiceNumbers();
+  if (categories.empty())
+  {
+    x->applyNiceNumbers();
+  }
   if (marker > -1e299)
   {
     auto* mark = new QLineSeries;

@@ -107,11 +107,10 @@ void AddCurve(QChart* chart, QAbstractAxis* x, QAbstractAxis* y, const QString& 
 void ProfilePlot::Redraw()
 {
   auto* intensity = new QChart;
-  StyleChart(intensity, this->ShowPerceived
-      ? "Intensity along the line (dashed: perceived, lateral inhibition)"
-      : "Intensity along the profile line");
+  StyleChart(intensity, this->ShowPerceived ? "Intensity (dashed: perceived)"
+                                            : "Intensity along the line");
   auto* derivative = new QChart;
-  StyleChart(derivative, "Its derivative dI/dx");
+  StyleChart(derivative, "Its derivative");
   double maxDistance = 1.0;
   for (const ProfileCurve& curve : this->Curves)
   {
@@ -120,10 +119,10 @@ void ProfilePlot::Redraw()
       maxDistance = std::max(maxDistance, curve.profile.distance.back());
     }
   }
-  QValueAxis* x1 = MakeAxis("distance along the line (pixels)", "%.0f");
-  QValueAxis* y1 = MakeAxis("luminance (linear, 0-1)");
-  QValueAxis* x2 = MakeAxis("distance along the line (pixels)", "%.0f");
-  QValueAxis* y2 = MakeAxis("dI/dx (1/pixel)", "%.3f");
+  QValueAxis* x1 = MakeAxis("distance along the line (px)", "%.0f");
+  QValueAxis* y1 = MakeAxis("luminance (linear)");
+  QValueAxis* x2 = MakeAxis("distance along the line (px)", "%.0f");
+  QValueAxis* y2 = MakeAxis("dI/dx (1/px)", "%.3f");
   intensity->addAxis(x1, Qt::AlignBottom);
   intensity->addAxis(y1, Qt::AlignLeft);
   derivative->addAxis(x2, Qt::AlignBottom);
@@ -173,13 +172,18 @@ void ProfilePlot::Redraw()
   }
   if (clipped)
   {
-    derivative->setTitle(derivative->title() + " (axis clipped at 3x its 95th percentile)");
+    // The title says so: spikes beyond 3x the 95th percentile are cut.
+    derivative->setTitle("Its derivative (spikes clipped)");
   }
   x1->setRange(0, maxDistance);
   x2->setRange(0, maxDistance);
   y1->setRange(std::min(0.0, lo1), hi1 * 1.05);
   const double span = std::max(std::abs(lo2), std::abs(hi2)) * 1.1;
   y2->setRange(-span, span);
+  for (QValueAxis* axis : { x1, x2, y1, y2 })
+  {
+    axis->applyNiceNumbers(); // ticks at round values
+  }
   derivative->legend()->hide();
   QChart* oldIntensity = this->IntensityView->chart();
   QChart* oldDerivative = this->DerivativeView->chart();

@@ -62,6 +62,9 @@ ShadingPanel::ShadingPanel(const PanelSpec& spec, ViewState* view, QWidget* pare
   layout->setContentsMargins(2, 2, 2, 2);
   layout->setSpacing(2);
   this->TitleLabel->setWordWrap(true);
+  QFont font = this->TitleLabel->font();
+  font.setPointSizeF(font.pointSizeF() * 0.9);
+  this->TitleLabel->setFont(font);
   this->TitleLabel->setAlignment(Qt::AlignCenter);
   this->TitleLabel->setTextFormat(Qt::RichText);
   // Two lines for every title, so panels of one row have views of one size

@@ -104,6 +104,7 @@ MainWindow::MainWindow(const SceneOptions& options)
     item->setToolTip(info.summary);
   }
   this->SceneNames->setMaximumHeight(230);
+  left->setMaximumWidth(250);
   leftLayout->addWidget(new QLabel("<b>Scenes</b>"));
   leftLayout->addWidget(this->SceneNames);
   leftLayout->addWidget(this->Explanation, 1);
@@ -127,7 +128,8 @@ MainWindow::MainWindow(const SceneOptions& options)
   auto* scroll = new QScrollArea;
   scroll->setWidget(this->BuildControls());
   scroll->setWidgetResizable(true);
-  scroll->setMinimumWidth(330);
+  scroll->setMinimumWidth(300);
+  scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
   rightDock->setWidget(scroll);
   rightDock->setFeatures(QDockWidget::NoDockWidgetFeatures);
   this->addDockWidget(Qt::RightDockWidgetArea, rightDock);

@@ -137,7 +137,7 @@ Scene MachBands(const SceneOptions&)
     Rotated(Rotated(Adopt(datasets::MakeLowPolyCylinder(8)), 0, -90.0), 1, 22.5),
     mesh::NormalWeighting::Area, 60.0);
   s.panels = { Panel("Flat: a staircase", cylinder, ShadingMode::Flat, Lambert(), render::Backend::CPU),
-    Panel("Gouraud: continuous, slope jumps at edges", cylinder, ShadingMode::Gouraud,
+    Panel("Gouraud: slope jumps at edges", cylinder, ShadingMode::Gouraud,
       Lambert(), render::Backend::CPU),
     Panel("Phong: smooth", cylinder, ShadingMode::Phong, Lambert(), render::Backend::CPU) };
   s.parallel = true;
@@ -253,9 +253,9 @@ Scene SharedVertices(const SceneOptions& o)
   m.shininess = 24;
   s.panels = { Panel("T-junctions: intensity jumps along x = 0", patch, ShadingMode::Gouraud,
                  m, o.backend),
-    Panel("T vertices lifted onto the surface: cracks", cracked, ShadingMode::Gouraud, m,
+    Panel("T vertices on the surface: cracks", cracked, ShadingMode::Gouraud, m,
       o.backend),
-    Panel("Repaired: edges split at the T vertices", repaired, ShadingMode::Gouraud, m,
+    Panel("Repaired: edges split at T vertices", repaired, ShadingMode::Gouraud, m,
       o.backend) };
   // The light mirrors the view about the patch's top normal (0, 0, 1), the
   // T vertex's own normal: its highlight is what the coarse edge misses.

@@ -18,6 +18,7 @@
 
 #include <QApplication>
 #include <QMouseEvent>
+#include <QSlider>
 #include <QSurfaceFormat>
 #include <QTest>
 #include <QVTKOpenGLNativeWidget.h>
@@ -190,7 +191,10 @@ void ExplorerGLTest::MaterialSliderRerendersOnePanel()
     before.push_back(view->Panel(i)->RenderCount());
   }
   const render::Image old = view->Panel(2)->Snapshot();
-  QVERIFY(window->Materials()->SetParameter("shininess n", 8.0));
+  // The user's way: one step of the shininess slider.
+  auto* slider = window->Materials()->findChild<QSlider*>("shininess n");
+  QVERIFY(slider);
+  slider->setValue(slider->value() / 2);
   Settle();
   for (int i = 0; i < view->PanelCount(); ++i)
   {
@@ -201,7 +205,7 @@ void ExplorerGLTest::MaterialSliderRerendersOnePanel()
                    .arg(view->Panel(i)->RenderCount())
                    .arg(expected)));
   }
-  QCOMPARE(view->Panel(2)->Spec().material.shininess, 8.0);
+  QVERIFY(view->Panel(2)->Spec().material.shininess < 20.0); // was 60
   // And the picture changed (a broader highlight).
   const render::Image now = view->Panel(2)->Snapshot();
   double change = 0;

@@ -124,6 +124,7 @@ void MaterialEditor::AddRow(
   Row row{ label, lo, hi, logScale, new QSlider(Qt::Horizontal, this),
     new QDoubleSpinBox(this), target };
   row.slider->setRange(0, kSliderSteps);
+  row.slider->setObjectName(label); // found by label (tests, scripting)
   row.box->setRange(lo, hi);
   row.box->setDecimals(hi > 100 ? 1 : 3);
   row.box->setSingleStep((hi - lo) / 100.0);

@@ -45,7 +45,9 @@ ShadingPanel* ShadingPanel::Create(const PanelSpec& spec, ViewState* view, QWidg
       return new GpuPanel(spec, view, parent);
     }
     auto* panel = new CpuPanel(spec, view, parent);
-    panel->Note = QString("CPU: no GPU (%1)").arg(QString::fromStdString(why));
+    panel->Note = "CPU: no OpenGL 3.2";
+    panel->setToolTip(
+      QString("GPU asked for, CPU drawn: %1").arg(QString::fromStdString(why)));
     panel->UpdateTitle();
     return panel;
   }

@@ -297,6 +297,17 @@ QWidget* MainWindow::BuildControls()
   plotForm->addRow(this->Perceived);
   this->Rotation = MakeSlider(0, 90, 0);
   plotForm->addRow("orientation: rotation", this->Rotation);
+  this->Variant = new QComboBox;
+  this->Variant->addItems({ "corrugated", "isosurface" });
+  this->Variant->setCurrentText(QString::fromStdString(this->Options.variant));
+  plotForm->addRow("normals: surface", this->Variant);
+  connect(this->Variant, QOverload<int>::of(&QComboBox::activated), this, [this] {
+    this->Options.variant = this->Variant->currentText().toStdString();
+    if (this->Current.name == "normals")
+    {
+      this->ReloadScene();
+    }
+  });
   this->ThetaL = MakeSlider(0, 89, 45);
   plotForm->addRow("brdf: light angle", this->ThetaL);
   this->Shininess = MakeSlider(1, 200, 32);

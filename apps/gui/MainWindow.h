@@ -95,6 +95,7 @@ private:
   QCheckBox* ProfileTool;
   QCheckBox* Perceived;
   QSlider* Rotation;
+  QComboBox* Variant;
   QSlider* ThetaL;
   QSlider* Shininess;
   QSlider* Roughness;

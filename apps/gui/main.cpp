@@ -4,6 +4,9 @@
 // (tests, documentation).
 #include "MainWindow.h"
 
+#include "ComparisonWidget.h"
+#include "ShadingPanel.h"
+
 #include "MeshIO.h"
 
 #include <QApplication>
@@ -178,6 +181,12 @@ int main(int argc, char** argv)
     return app.exec();
   }
   window.RefreshNow();
+  // What was drawn, for scripts: one line per panel with its backend.
+  for (int i = 0; i < window.Comparison()->PanelCount(); ++i)
+  {
+    std::cout << "panel " << i + 1 << ": "
+              << window.Comparison()->Panel(i)->Title().toStdString() << "\n";
+  }
   if (!profile.empty())
   {
     std::ofstream out(profile);

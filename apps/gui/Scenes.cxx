@@ -337,7 +337,11 @@ Scene Normals(const SceneOptions& o)
   {
     throw std::invalid_argument("normals: --variant must be corrugated or isosurface");
   }
-  const Material<double> m = Plastic();
+  // A highlight that stays below 1: clipped highlights hide differences.
+  Material<double> m = Plastic();
+  m.kd = 0.7;
+  m.ks = 0.1;
+  m.shininess = 30;
   PanelSpec exact = Panel("Exact (analytic gradient) normals", WithExactNormals(raw),
     ShadingMode::Phong, m, render::Backend::CPU);
   s.panels = { exact };

@@ -101,9 +101,11 @@ Scene Modes(const SceneOptions& o)
   Scene s;
   s.title = "The five shading modes";
   s.usesInput = true;
+  // The built-in torus is smooth (its 30-degree facets are not creases);
+  // the normal weighting is the user's.
   PolyPtr mesh = InputOr(o, [&] {
-    return WithNormals(Adopt(datasets::MakeTorus(1.0, 0.45, 24, 12)),
-      o.preparation.weighting, o.preparation.featureAngle);
+    return WithNormals(
+      Adopt(datasets::MakeTorus(1.0, 0.45, 24, 12)), o.preparation.weighting, 180.0);
   });
   const auto b = o.backend;
   s.panels = { Panel("Flat", mesh, ShadingMode::Flat, Plastic(), b),

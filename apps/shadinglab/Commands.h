@@ -25,5 +25,6 @@ int RunBrdf(int argc, char** argv);
 int RunRender(int argc, char** argv);
 int RunCompare(int argc, char** argv);
 int RunNormals(int argc, char** argv);
+int RunAccuracy(int argc, char** argv);
 
 } // namespace shadinglab::cli

@@ -14,7 +14,8 @@ const char* kUsage = "usage: shadinglab COMMAND [options]   (shadinglab COMMAND 
                      "  brdf      tabulate a reflectance model or one of its terms as CSV\n"
                      "  render    render a mesh in one shading mode to PNG\n"
                      "  compare   render a mesh in every shading mode, side by side\n"
-                     "  normals   repair, subdivide and compute vertex normals of a mesh\n";
+                     "  normals   repair, subdivide and compute vertex normals of a mesh\n"
+                     "  accuracy  frame time against error for every mode, vs exact surfaces\n";
 
 } // namespace
 
@@ -39,6 +40,10 @@ int main(int argc, char** argv)
     if (command == "compare")
     {
       return shadinglab::cli::RunCompare(argc - 2, argv + 2);
+    }
+    if (command == "accuracy")
+    {
+      return shadinglab::cli::RunAccuracy(argc - 2, argv + 2);
     }
     if (command == "render")
     {

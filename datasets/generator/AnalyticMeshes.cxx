@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "AnalyticMeshes.h"
+#include "MetaballField.h"
 
 #include <vtkCellArray.h>
 #include <vtkDoubleArray.h>
@@ -377,35 +378,12 @@ vtkPolyData* MakeTJunctionPatch(int coarse)
 
 namespace
 {
-struct Blob
-{
-  P3 c;
-  double s;
-};
-const Blob kBlobs[] = { { { -0.35, 0.0, 0.0 }, 0.35 }, { { 0.35, 0.1, 0.05 }, 0.3 },
-  { { 0.0, -0.3, 0.25 }, 0.25 } };
-constexpr double kIsoValue = 0.5;
-
+/// The blobs' field (MetaballField.h) on this file's point type.
 double Field(const P3& p, P3* gradient)
 {
-  double f = 0;
-  P3 g = { 0, 0, 0 };
-  for (const auto& b : kBlobs)
-  {
-    const P3 d = { p[0] - b.c[0], p[1] - b.c[1], p[2] - b.c[2] };
-    const double e = std::exp(-(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) / (b.s * b.s));
-    f += e;
-    for (int k = 0; k < 3; ++k)
-    {
-      g[k] += -2.0 * d[k] / (b.s * b.s) * e;
-    }
-  }
-  if (gradient)
-  {
-    *gradient = g;
-  }
-  return f;
+  return MetaballField(p, gradient);
 }
+constexpr double kIsoValue = kMetaballIsoValue;
 } // namespace
 
 vtkPolyData* MakeMetaballIsosurface(int n)

@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The time-against-error study behind `shadinglab accuracy`: analytic
+// surfaces tessellated at several levels, rendered in every shading mode and
+// reflectance model on each backend, with several vertex normals, against
+// the surface ray-cast with its exact normal (plugin/reference).
+#pragma once
+
+#include "shadinglab/render/Renderer.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace shadinglab::cli
+{
+
+struct StudyOptions
+{
+  bool quick = false;        ///< a subset that runs in well under a minute
+  int width = 320, height = 240;
+  int frames = 5;            ///< frames timed per configuration (median)
+  int threads = 0;           ///< CPU renderer threads (0: all)
+  bool gpu = false;          ///< also the GPU backend (a display answered)
+};
+
+/// One configuration and what it measured (one CSV row).
+struct StudyRow
+{
+  std::string shape;
+  int level = 0;             ///< tessellation parameter (slices, or grid size)
+  long long triangles = 0;
+  std::string backend, mode, model, normals;
+  int width = 0, height = 0, threads = 0;
+  double prepareMs = 0;      ///< normals or subdivision (median of 3)
+  double frameMs = 0;        ///< one frame, median of `frames`, steady state
+  /// |I - I_ref| per pixel (largest channel) over pixels both cover:
+  double meanLinear = 0, rmseLinear = 0, p99Linear = 0, maxLinear = 0; ///< linear intensity
+  double mean255 = 0, rmse255 = 0, p99_255 = 0, max255 = 0;            ///< 8-bit display values
+  double coverageMismatch = 0; ///< fraction of covered pixels covered by one image only
+  bool pareto = false;         ///< on the time-error Pareto front (mean 1/255)
+};
+
+/// The CSV header, in StudyRow's order; documented in docs/accuracy.md.
+const char* StudyCsvHeader();
+std::string StudyCsvRow(const StudyRow& row);
+
+/// Runs the study; `progress` gets one line per configuration.
+std::vector<StudyRow> RunStudy(
+  const StudyOptions& options, const std::function<void(const StudyRow&)>& progress);
+
+/// Marks the rows no other row of the same shape and backend beats in both
+/// frame time and mean error (1/255).
+void MarkParetoFront(std::vector<StudyRow>& rows);
+
+} // namespace shadinglab::cli

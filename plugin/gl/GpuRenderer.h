@@ -25,7 +25,8 @@ bool GpuAvailable(std::string& why);
  * VTK's automatic headlight is used. The image is linear floats in [0, 1]
  * (8-bit framebuffer precision) with `covered` from the framebuffer's depth.
  * The window, renderer and mapper persist across calls, so VTK's shader
- * cache serves a variant compiled before.
+ * cache serves a variant compiled before, and a mesh whose arrays are
+ * unchanged (hashed) is not converted or uploaded again.
  * Check GpuAvailable() first: without an X display VTK aborts.
  */
 class GpuRenderer final : public render::Renderer

@@ -135,15 +135,7 @@ CpuPanel::CpuPanel(const PanelSpec& spec, ViewState* view, QWidget* parent)
   // The comparison re-renders every panel, this one included.
   this->ViewWidget->CameraMoved = [this]() { emit this->cameraMoved(this); };
   this->ViewWidget->Resized = [this]() { this->Render(); };
-  this->Overlay = new ProfileOverlay(this->ViewWidget);
-  this->Overlay->DrawsLine = [this](Qt::KeyboardModifiers modifiers) {
-    return this->View->profileTool || (modifiers & Qt::ControlModifier);
-  };
-  this->Overlay->LineEdited = [this](const ProfileLine& line) {
-    this->Line = line;
-    emit this->profileLineEdited(line);
-  };
-  this->Overlay->Pressed = [this]() { emit this->activated(this); };
+  this->Overlay = this->InstallOverlay(this->ViewWidget);
   this->SetViewWidget(this->ViewWidget);
 }
 

@@ -11,16 +11,11 @@
 #include <vtkActor.h>
 #include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
-#include <vtkFloatArray.h>
 #include <vtkGenericOpenGLRenderWindow.h>
-#include <vtkImageData.h>
 #include <vtkInteractorStyleTrackballCamera.h>
-#include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkRenderWindowInteractor.h>
 #include <vtkRenderer.h>
-#include <vtkUnsignedCharArray.h>
-#include <vtkWindowToImageFilter.h>
 
 #include <chrono>
 
@@ -55,15 +50,7 @@ GpuPanel::GpuPanel(const PanelSpec& spec, ViewState* view, QWidget* parent)
   style->AddObserver(vtkCommand::EndInteractionEvent, this, &GpuPanel::OnInteraction);
   this->Renderer->AddObserver(vtkCommand::StartEvent, this, &GpuPanel::OnRenderEnd);
   this->Renderer->AddObserver(vtkCommand::EndEvent, this, &GpuPanel::OnRenderEnd);
-  this->Overlay = new ProfileOverlay(this->ViewWidget);
-  this->Overlay->DrawsLine = [this](Qt::KeyboardModifiers modifiers) {
-    return this->View->profileTool || (modifiers & Qt::ControlModifier);
-  };
-  this->Overlay->LineEdited = [this](const ProfileLine& line) {
-    this->Line = line;
-    emit this->profileLineEdited(line);
-  };
-  this->Overlay->Pressed = [this]() { emit this->activated(this); };
+  this->Overlay = this->InstallOverlay(this->ViewWidget);
   this->Configure();
   this->SetViewWidget(this->ViewWidget);
 }
@@ -134,43 +121,12 @@ render::Image GpuPanel::Snapshot()
     return image;
   }
   this->Window->MakeCurrent();
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(this->Window);
-  grab->ShouldRerenderOff();
-  grab->ReadFrontBufferOff();
-  grab->SetInputBufferTypeToRGB();
-  grab->Update();
-  vtkNew<vtkWindowToImageFilter> depthGrab;
-  depthGrab->SetInput(this->Window);
-  depthGrab->ShouldRerenderOff();
-  depthGrab->ReadFrontBufferOff();
-  depthGrab->SetInputBufferTypeToZBuffer();
-  depthGrab->Update();
-  auto* pixels =
-    vtkUnsignedCharArray::SafeDownCast(grab->GetOutput()->GetPointData()->GetScalars());
-  auto* depth = vtkFloatArray::SafeDownCast(depthGrab->GetOutput()->GetPointData()->GetScalars());
-  if (!pixels || !depth || pixels->GetNumberOfTuples() != static_cast<vtkIdType>(W) * H ||
-    depth->GetNumberOfTuples() != static_cast<vtkIdType>(W) * H)
+  if (!gl::ReadFrame(this->Window, W, H, image.rgb, image.covered))
   {
-    return image;
+    return render::Image();
   }
   image.width = W;
   image.height = H;
-  image.rgb.resize(static_cast<size_t>(W) * H * 3);
-  image.covered.resize(static_cast<size_t>(W) * H);
-  for (int y = 0; y < H; ++y)
-  {
-    for (int x = 0; x < W; ++x)
-    {
-      const vtkIdType i = static_cast<vtkIdType>(H - 1 - y) * W + x; // VTK rows go up
-      const size_t o = static_cast<size_t>(y) * W + x;
-      for (int c = 0; c < 3; ++c)
-      {
-        image.rgb[3 * o + c] = pixels->GetTypedComponent(i, c) / 255.0f;
-      }
-      image.covered[o] = depth->GetValue(i) < 1.0f;
-    }
-  }
   return image;
 }
 

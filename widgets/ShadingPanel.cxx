@@ -3,6 +3,7 @@
 
 #include "CpuPanel.h"
 #include "GpuPanel.h"
+#include "ViewInteraction.h"
 
 #include "GpuRenderer.h"
 
@@ -74,6 +75,20 @@ ShadingPanel::ShadingPanel(const PanelSpec& spec, ViewState* view, QWidget* pare
   this->TitleLabel->setFixedHeight(2 * this->TitleLabel->fontMetrics().lineSpacing() + 4);
   layout->addWidget(this->TitleLabel);
   this->setMinimumSize(120, 120);
+}
+
+ProfileOverlay* ShadingPanel::InstallOverlay(QWidget* view)
+{
+  auto* overlay = new ProfileOverlay(view);
+  overlay->DrawsLine = [this](Qt::KeyboardModifiers modifiers) {
+    return this->View->profileTool || (modifiers & Qt::ControlModifier);
+  };
+  overlay->LineEdited = [this](const ProfileLine& line) {
+    this->Line = line;
+    emit this->profileLineEdited(line);
+  };
+  overlay->Pressed = [this]() { emit this->activated(this); };
+  return overlay;
 }
 
 void ShadingPanel::SetViewWidget(QWidget* viewWidget)

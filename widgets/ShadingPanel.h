@@ -15,6 +15,8 @@ class QLabel;
 namespace shadinglab::widgets
 {
 
+class ProfileOverlay;
+
 class ShadingPanel : public QWidget
 {
   Q_OBJECT
@@ -67,6 +69,9 @@ protected:
   virtual bool RenderView() = 0;
   virtual void OnSpecChanged() {}
   virtual void OnProfileLineChanged() {}
+  /// The profile line's overlay on `view`: draws the line, turns left drags
+  /// (with the profile tool or Ctrl) into new lines, reports presses.
+  ProfileOverlay* InstallOverlay(QWidget* view);
   /// Puts the view widget under the title.
   void SetViewWidget(QWidget* view);
   /// Counts one frame drawn, taking `milliseconds`.

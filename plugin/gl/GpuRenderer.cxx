@@ -7,19 +7,14 @@
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
-#include <vtkFloatArray.h>
-#include <vtkImageData.h>
 #include <vtkLight.h>
 #include <vtkNew.h>
 #include <vtkOpenGLRenderWindow.h>
-#include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkProperty.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
-#include <vtkUnsignedCharArray.h>
-#include <vtkWindowToImageFilter.h>
 
 #include "PolyDataMesh.h"
 #include "VtkCamera.h"
@@ -121,40 +116,13 @@ struct GpuRenderer::Internals
 
 void GpuRenderer::Internals::ReadBack(int W, int H, int ssaa)
 {
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(this->Window);
-  grab->SetInputBufferTypeToRGB();
-  grab->ReadFrontBufferOff();
-  grab->Update();
-  vtkNew<vtkWindowToImageFilter> depthGrab;
-  depthGrab->SetInput(this->Window);
-  depthGrab->SetInputBufferTypeToZBuffer();
-  depthGrab->ReadFrontBufferOff();
-  depthGrab->Update();
-  auto* pixels =
-    vtkUnsignedCharArray::SafeDownCast(grab->GetOutput()->GetPointData()->GetScalars());
-  auto* depth = vtkFloatArray::SafeDownCast(depthGrab->GetOutput()->GetPointData()->GetScalars());
-  if (!pixels || !depth || pixels->GetNumberOfTuples() != static_cast<vtkIdType>(W) * H)
+  std::vector<float> rgb;
+  std::vector<uint8_t> covered;
+  if (!ReadFrame(this->Window, W, H, rgb, covered))
   {
     throw std::runtime_error("GPU read-back failed");
   }
-  // Frame to linear floats, rows top-down (VTK rows start at the bottom),
-  // then the same resolve as the CPU renderer.
-  std::vector<float> rgb(static_cast<size_t>(W) * H * 3);
-  std::vector<uint8_t> covered(static_cast<size_t>(W) * H);
-  for (int y = 0; y < H; ++y)
-  {
-    for (int x = 0; x < W; ++x)
-    {
-      const vtkIdType i = static_cast<vtkIdType>(H - 1 - y) * W + x;
-      const size_t o = static_cast<size_t>(y) * W + x;
-      for (int c = 0; c < 3; ++c)
-      {
-        rgb[3 * o + c] = pixels->GetTypedComponent(i, c) / 255.0f;
-      }
-      covered[o] = depth->GetValue(i) < 1.0f;
-    }
-  }
+  // The same resolve as the CPU renderer.
   render::DownsampleBox(rgb, covered, W, H, ssaa, this->Output);
 }
 

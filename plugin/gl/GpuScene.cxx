@@ -4,6 +4,12 @@
 #include "vtkShadingLabPolyDataMapper.h"
 
 #include <vtkActor.h>
+#include <vtkFloatArray.h>
+#include <vtkImageData.h>
+#include <vtkPointData.h>
+#include <vtkRenderWindow.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkWindowToImageFilter.h>
 #include <vtkLight.h>
 #include <vtkNew.h>
 #include <vtkProperty.h>
@@ -63,6 +69,49 @@ void ApplyLighting(const Lighting<double>& lighting, vtkRenderer* renderer)
     }
     renderer->AddLight(light);
   }
+}
+
+bool ReadFrame(vtkRenderWindow* window, int width, int height, std::vector<float>& rgb,
+  std::vector<uint8_t>& covered)
+{
+  // ShouldRerender off: the frame drawn is the frame read (the filter's
+  // default renders the window again first, once per buffer).
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->ShouldRerenderOff();
+  grab->ReadFrontBufferOff();
+  grab->SetInputBufferTypeToRGB();
+  grab->Update();
+  vtkNew<vtkWindowToImageFilter> depthGrab;
+  depthGrab->SetInput(window);
+  depthGrab->ShouldRerenderOff();
+  depthGrab->ReadFrontBufferOff();
+  depthGrab->SetInputBufferTypeToZBuffer();
+  depthGrab->Update();
+  auto* pixels =
+    vtkUnsignedCharArray::SafeDownCast(grab->GetOutput()->GetPointData()->GetScalars());
+  auto* depth = vtkFloatArray::SafeDownCast(depthGrab->GetOutput()->GetPointData()->GetScalars());
+  const vtkIdType n = static_cast<vtkIdType>(width) * height;
+  if (!pixels || !depth || pixels->GetNumberOfTuples() != n || depth->GetNumberOfTuples() != n)
+  {
+    return false;
+  }
+  rgb.resize(static_cast<size_t>(n) * 3);
+  covered.resize(static_cast<size_t>(n));
+  for (int y = 0; y < height; ++y)
+  {
+    for (int x = 0; x < width; ++x)
+    {
+      const vtkIdType i = static_cast<vtkIdType>(height - 1 - y) * width + x; // VTK rows go up
+      const size_t o = static_cast<size_t>(y) * width + x;
+      for (int c = 0; c < 3; ++c)
+      {
+        rgb[3 * o + c] = pixels->GetTypedComponent(i, c) / 255.0f;
+      }
+      covered[o] = depth->GetValue(i) < 1.0f;
+    }
+  }
+  return true;
 }
 
 } // namespace shadinglab::gl

@@ -7,7 +7,11 @@
 #include "shadinglab/render/Options.h"
 #include "shadinglab/model/Shading.h"
 
+#include <cstdint>
+#include <vector>
+
 class vtkActor;
+class vtkRenderWindow;
 class vtkRenderer;
 class vtkShadingLabPolyDataMapper;
 
@@ -29,5 +33,14 @@ void ConfigureActor(const render::RenderOptions& options, const Material<double>
  * headlight.
  */
 void ApplyLighting(const Lighting<double>& lighting, vtkRenderer* renderer);
+
+/**
+ * The window's last frame, without rendering again: linear RGB floats
+ * (8-bit framebuffer precision), row 0 at the top, and `covered` where the
+ * depth buffer is nearer than the far plane. False when the read fails or
+ * the window is not width x height.
+ */
+bool ReadFrame(vtkRenderWindow* window, int width, int height, std::vector<float>& rgb,
+  std::vector<uint8_t>& covered);
 
 } // namespace shadinglab::gl

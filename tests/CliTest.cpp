@@ -472,3 +472,32 @@ TEST(CliTest, GpuBackendUnderXAndNeverAbortsWithoutDisplay)
     EXPECT_EQ(w, 64);
   }
 }
+
+TEST(CliTest, AutoModeChoosesByTheErrorBudgetAndSaysWhy)
+{
+  const std::string in = std::string(SHADINGLAB_SOURCE_DIR) + "/datasets/torus_48x24.vtp";
+  const std::string out = ::testing::TempDir() + "/shadinglab_auto.png";
+  std::string loose, tight;
+  for (const auto& [budget, mode] : { std::pair<std::string, std::string*>{ "50", &loose },
+         { "0.05", &tight } })
+  {
+    const auto r = RunCli("render " + in + " --backend cpu --mode auto --max-error " + budget +
+      " --size 160x120 --stats --out " + out);
+    ASSERT_EQ(r.status, 0) << r.err;
+    const auto at = r.out.find("\"mode\":\"");
+    ASSERT_NE(at, std::string::npos) << r.out;
+    *mode = r.out.substr(at + 8, r.out.find('"', at + 8) - at - 8);
+    EXPECT_NE(r.out.find("\"auto\":\"normal spread"), std::string::npos) << r.out;
+  }
+  // A loose budget takes a cheap mode; one below what any mode can promise
+  // takes the most accurate and says so.
+  EXPECT_NE(loose, "phong");
+  EXPECT_EQ(tight, "phong");
+  for (const char* bad : { "--mode auto", "--mode auto --max-error 0", "--mode auto --max-error nan",
+         "--mode phong --max-error 1" })
+  {
+    const auto r = RunCli("render " + in + " --backend cpu " + bad + " --out " + out);
+    EXPECT_EQ(r.status, 2) << bad;
+    EXPECT_EQ(CountLines(r.err), 1) << bad << ": " << r.err;
+  }
+}

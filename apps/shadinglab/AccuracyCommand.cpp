@@ -13,7 +13,9 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <algorithm>
 #include <map>
+#include <sstream>
 
 namespace shadinglab::cli
 {
@@ -154,6 +156,44 @@ int RunAccuracy(int argc, char** argv)
     throw UsageError("cannot write " + (dir / "accuracy.csv").string());
   }
   WriteTable(rows, (dir / "accuracy.md").string());
+  // The auto mode on held-out meshes: the two figures.
+  const std::vector<AutoCase> cases = ValidateAutoMode(options, [](const AutoCase& c) {
+    std::cerr << "auto: " << c.mesh << ", " << c.material << ", E " << c.maxError << ": "
+              << c.chosen << " (" << Fmt(c.chosenError) << "/255, " << Fmt(c.chosenMs)
+              << " ms); cheapest meeting E: " << (c.cheapest.empty() ? "none" : c.cheapest)
+              << "\n";
+  });
+  std::ofstream autoCsv(dir / "auto.csv");
+  autoCsv << "mesh,material,max_error,chosen,predicted,chosen_error,chosen_ms,cheapest,"
+             "cheapest_ms,met\n";
+  int feasible = 0, met = 0, withinCost = 0;
+  std::vector<double> ratios;
+  for (const AutoCase& c : cases)
+  {
+    autoCsv << c.mesh << ',' << c.material << ',' << c.maxError << ',' << c.chosen << ','
+            << c.predicted << ',' << c.chosenError << ',' << c.chosenMs << ',' << c.cheapest << ','
+            << c.cheapestMs << ',' << (c.met ? 1 : 0) << '\n';
+    if (c.cheapest.empty())
+    {
+      continue; // no mode meets E on this mesh: nothing to choose
+    }
+    ++feasible;
+    met += c.met;
+    const double ratio = c.chosenMs / c.cheapestMs;
+    ratios.push_back(ratio);
+    withinCost += c.met && ratio <= 1.2;
+  }
+  std::sort(ratios.begin(), ratios.end());
+  std::ostringstream summary;
+  summary << "auto mode on " << cases.size() << " held-out cases (" << feasible
+          << " where some mode meets E): meets E in " << Fmt(100.0 * met / std::max(1, feasible))
+          << "%; meets E at <= 1.2x the cheapest mode meeting it in "
+          << Fmt(100.0 * withinCost / std::max(1, feasible)) << "%; cost ratio median "
+          << Fmt(ratios.empty() ? 0 : ratios[ratios.size() / 2]) << ", max "
+          << Fmt(ratios.empty() ? 0 : ratios.back());
+  std::ofstream(dir / "accuracy.md", std::ios::app) << "\n## Auto mode, held out\n\n"
+                                                    << summary.str() << ".\n";
+  std::cout << summary.str() << "\n";
 #ifdef SHADINGLAB_HAVE_QT
   std::vector<std::string> groups;
   std::vector<std::vector<widgets::AccuracyPoint>> points;

@@ -4,6 +4,7 @@
 #include "AnalyticMeshes.h"
 #include "MeshPreparation.h"
 #include "PolyDataMesh.h"
+#include "shadinglab/render/AutoMode.h"
 #include "shadinglab/cpu/SoftwareRenderer.h"
 #include "shadinglab/model/Materials.h"
 #include "shadinglab/reference/AnalyticSurface.h"
@@ -208,7 +209,7 @@ const char* StudyCsvHeader()
 {
   return "shape,level,triangles,backend,mode,model,normals,width,height,threads,prepare_ms,"
          "frame_ms,mean_lin,rmse_lin,p99_lin,max_lin,mean_255,rmse_255,p99_255,max_255,"
-         "coverage_mismatch,pareto";
+         "coverage_mismatch,pareto,normal_spread_deg,triangle_px,sharpness,peak,front_px";
 }
 
 std::string StudyCsvRow(const StudyRow& r)
@@ -219,7 +220,9 @@ std::string StudyCsvRow(const StudyRow& r)
     << r.model << ',' << r.normals << ',' << r.width << ',' << r.height << ',' << r.threads << ','
     << r.prepareMs << ',' << r.frameMs << ',' << r.meanLinear << ',' << r.rmseLinear << ','
     << r.p99Linear << ',' << r.maxLinear << ',' << r.mean255 << ',' << r.rmse255 << ','
-    << r.p99_255 << ',' << r.max255 << ',' << r.coverageMismatch << ',' << (r.pareto ? 1 : 0);
+    << r.p99_255 << ',' << r.max255 << ',' << r.coverageMismatch << ',' << (r.pareto ? 1 : 0)
+    << ',' << r.normalSpreadDeg << ',' << r.trianglePixels << ',' << r.sharpness << ',' << r.peak
+    << ',' << r.frontPixels;
   return s.str();
 }
 
@@ -278,6 +281,8 @@ std::vector<StudyRow> RunStudy(
           prepTimes.push_back(Milliseconds(t0, Clock::now()));
         }
         const render::Mesh mesh = render::MeshFromPolyData(prepared);
+        const render::ViewPredictors view =
+          render::PredictorsOf(mesh, mesh.normals, camera, options.width, options.height);
         for (const Shading& shading : Shadings(options.quick))
         {
           const bool studyNormals = shading.mode == render::ShadingMode::Phong &&
@@ -333,6 +338,11 @@ std::vector<StudyRow> RunStudy(
             row.prepareMs = Median(prepTimes);
             row.frameMs = Median(times);
             Measure(image, ref->second, row);
+            row.normalSpreadDeg = view.normalSpread * 180.0 / kPi<double>;
+            row.trianglePixels = view.trianglePixels;
+            row.sharpness = render::LobeSharpness(shading.material);
+            row.peak = render::LobePeak(shading.material);
+            row.frontPixels = view.frontPixels;
             rows.push_back(row);
             progress(row);
           }
@@ -342,6 +352,139 @@ std::vector<StudyRow> RunStudy(
   }
   MarkParetoFront(rows);
   return rows;
+}
+
+std::vector<AutoCase> ValidateAutoMode(
+  const StudyOptions& options, const std::function<void(const AutoCase&)>& progress)
+{
+  struct HeldOut
+  {
+    std::string name;
+    std::unique_ptr<reference::AnalyticSurface> exact;
+    vtkSmartPointer<vtkPolyData> mesh;
+  };
+  std::vector<HeldOut> meshes;
+  auto add = [&](std::string name, std::unique_ptr<reference::AnalyticSurface> exact,
+               vtkPolyData* mesh) {
+    vtkSmartPointer<vtkPolyData> owned;
+    owned.TakeReference(mesh);
+    meshes.push_back({ std::move(name), std::move(exact), owned });
+  };
+  // Other shapes (a thin torus, a flattened ellipsoid), another tessellation
+  // pattern (icospheres) and other sizes (metaballs) than the study's.
+  const std::vector<int> tori = options.quick ? std::vector<int>{ 12, 48 } : std::vector<int>{ 10, 20, 40, 80 };
+  for (int s : tori)
+  {
+    add("thin torus " + std::to_string(s), reference::MakeTorus(1.0, 0.25),
+      datasets::MakeTorus(1.0, 0.25, 3 * s, s));
+  }
+  const std::vector<int> ellipsoids = options.quick ? std::vector<int>{ 24 } : std::vector<int>{ 12, 24, 48, 96 };
+  for (int s : ellipsoids)
+  {
+    add("ellipsoid 1:0.5:0.8 " + std::to_string(s), reference::MakeEllipsoid(1.0, 0.5, 0.8),
+      datasets::MakeEllipsoid(1.0, 0.5, 0.8, s, s / 2));
+  }
+  const std::vector<int> icospheres = options.quick ? std::vector<int>{ 2, 4 } : std::vector<int>{ 1, 2, 3, 4, 5 };
+  for (int level : icospheres)
+  {
+    add("icosphere " + std::to_string(level), reference::MakeSphere(),
+      datasets::MakeIcosphere(level));
+  }
+  if (!options.quick)
+  {
+    for (int n : { 16, 24, 40, 64 })
+    {
+      add("metaballs " + std::to_string(n), reference::MakeMetaballs(),
+        datasets::MakeMetaballIsosurface(n));
+    }
+  }
+  std::vector<std::pair<std::string, Material<double>>> materials;
+  Material<double> dull = BlinnPhongPlastic();
+  dull.shininess = 20;
+  materials.push_back({ "blinn-phong n=20", dull });
+  Material<double> sharp = BlinnPhongPlastic();
+  sharp.shininess = 150;
+  materials.push_back({ "blinn-phong n=150", sharp });
+  Material<double> ct = FindMaterialPreset("plastic")->material;
+  ct.lobes[0].m = 0.2;
+  materials.push_back({ "ct-dielectric m=0.2", ct });
+  materials.push_back({ "ct-conductor gold", FindMaterialPreset("gold")->material });
+  const std::vector<double> budgets = { 0.5, 1.0, 2.0, 4.0 };
+  cpu::SoftwareRenderer renderer;
+  std::vector<AutoCase> cases;
+  for (const HeldOut& h : meshes)
+  {
+    double bounds[6];
+    h.exact->Bounds(bounds);
+    // Another view than the study's (azimuth 25, elevation 20).
+    const render::Camera camera = render::FitCamera(bounds, -50.0, -15.0, 1.2,
+      static_cast<double>(options.width) / options.height, false);
+    Lighting<double> lighting;
+    lighting.lights[0] = render::KeyLight(camera);
+    mesh::PreparationOptions prep;
+    prep.repair = false;
+    prep.featureAngle = 180.0;
+    mesh::PreparationReport report;
+    const render::Mesh mesh = render::MeshFromPolyData(mesh::PrepareMesh(h.mesh, prep, report));
+    for (const auto& [materialName, material] : materials)
+    {
+      const render::Image exact = reference::RayCast(*h.exact, camera, lighting, material,
+        options.width, options.height, Vec3<float>(0, 0, 0));
+      std::map<std::string, std::pair<double, double>> measured; // mode: error, ms
+      for (render::ShadingMode mode :
+        { render::ShadingMode::Flat, render::ShadingMode::Gouraud, render::ShadingMode::Phong })
+      {
+        render::RenderOptions ro;
+        ro.mode = mode;
+        ro.width = options.width;
+        ro.height = options.height;
+        ro.threads = options.threads;
+        ro.background = Vec3<float>(0, 0, 0);
+        const render::Scene scene{ &mesh, camera, lighting, material };
+        renderer.Render(scene, ro);
+        std::vector<double> times;
+        render::Image image;
+        for (int f = 0; f < options.frames; ++f)
+        {
+          const auto t0 = Clock::now();
+          const render::Image& out = renderer.Render(scene, ro);
+          times.push_back(Milliseconds(t0, Clock::now()));
+          if (f == 0)
+          {
+            image = out;
+          }
+        }
+        StudyRow row;
+        Measure(image, exact, row);
+        measured[render::ShadingModeName(mode)] = { row.mean255, Median(times) };
+      }
+      for (double budget : budgets)
+      {
+        const render::ModeChoice choice = render::ChooseMode(mesh, mesh.normals, camera,
+          lighting, material, options.width, options.height, budget);
+        AutoCase c;
+        c.mesh = h.name;
+        c.material = materialName;
+        c.maxError = budget;
+        c.chosen = render::ShadingModeName(choice.mode);
+        c.predicted = choice.predicted;
+        c.chosenError = measured[c.chosen].first;
+        c.chosenMs = measured[c.chosen].second;
+        c.met = c.chosenError <= budget;
+        for (const auto& [mode, m] : measured)
+        {
+          if (m.first <= budget && (c.cheapest.empty() || m.second < c.cheapestMs))
+          {
+            c.cheapest = mode;
+            c.cheapestMs = m.second;
+          }
+        }
+        cases.push_back(c);
+        progress(c);
+      }
+    }
+  }
+  return cases;
 }
 
 } // namespace shadinglab::cli

@@ -37,6 +37,8 @@ struct StudyRow
   double meanLinear = 0, rmseLinear = 0, p99Linear = 0, maxLinear = 0; ///< linear intensity
   double mean255 = 0, rmse255 = 0, p99_255 = 0, max255 = 0;            ///< 8-bit display values
   double coverageMismatch = 0; ///< fraction of covered pixels covered by one image only
+  /// The auto mode's predictors (render/AutoMode.h), known before rendering:
+  double normalSpreadDeg = 0, trianglePixels = 0, sharpness = 0, peak = 0, frontPixels = 0;
   bool pareto = false;         ///< on the time-error Pareto front (mean 1/255)
 };
 
@@ -47,6 +49,26 @@ std::string StudyCsvRow(const StudyRow& row);
 /// Runs the study; `progress` gets one line per configuration.
 std::vector<StudyRow> RunStudy(
   const StudyOptions& options, const std::function<void(const StudyRow&)>& progress);
+
+/// One held-out case of the auto mode: a mesh, material and view not in
+/// the study, and an error budget.
+struct AutoCase
+{
+  std::string mesh, material;
+  double maxError = 0;        ///< E (1/255)
+  std::string chosen;         ///< auto's mode
+  double predicted = 0;       ///< its predicted (conservative) error
+  double chosenError = 0, chosenMs = 0;
+  std::string cheapest;       ///< the cheapest mode that met E ("" if none)
+  double cheapestMs = 0;
+  bool met = false;           ///< chosenError <= E
+};
+
+/// Renders held-out meshes (a thin torus, a flattened ellipsoid, icospheres,
+/// metaballs at other sizes; another view; other materials) in flat,
+/// Gouraud and Phong, and asks ChooseMode for each budget E.
+std::vector<AutoCase> ValidateAutoMode(
+  const StudyOptions& options, const std::function<void(const AutoCase&)>& progress);
 
 /// Marks the rows no other row of the same shape and backend beats in both
 /// frame time and mean error (1/255).

@@ -60,7 +60,7 @@ int RunRender(int argc, char** argv)
                 "\"milliseconds\":%.3f,\"polygons\":%lld,\"triangles\":%lld,\"rasterized\":%lld,"
                 "\"clipped\":%lld,\"degenerate\":%lld,\"pixels_covered\":%lld,"
                 "\"pixels_shaded\":%lld,\"fast_phong_exact\":%lld,\"threads\":%d,"
-                "\"shader_builds\":%d,\"normals_computed\":%s}\n",
+                "\"shader_builds\":%d,\"normals_computed\":%s%s}\n",
       render::BackendName(renderer->GetBackend()), render::ShadingModeName(options.mode),
       ReflectanceModelName(request->scene.material.model), options.width, options.height, options.ssaa,
       stats.milliseconds, static_cast<long long>(stats.polygons),
@@ -68,7 +68,8 @@ int RunRender(int argc, char** argv)
       static_cast<long long>(stats.clipped), static_cast<long long>(stats.degenerate),
       static_cast<long long>(stats.pixelsCovered), static_cast<long long>(stats.pixelsShaded),
       static_cast<long long>(stats.fastPhongExact), stats.threads, stats.shaderBuilds,
-      stats.normalsComputed ? "true" : "false");
+      stats.normalsComputed ? "true" : "false",
+      request->autoChoice.empty() ? "" : (",\"auto\":\"" + request->autoChoice + "\"").c_str());
   }
   return 0;
 }

@@ -9,6 +9,7 @@
 #include "RepairCheck.h"
 #include "PolyDataMesh.h"
 #include "shadinglab/cpu/SoftwareRenderer.h"
+#include "shadinglab/render/AutoMode.h"
 
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
@@ -23,7 +24,9 @@ namespace shadinglab::cli
 
 const char* const kSceneOptionsHelp =
   "  --mode M            where the model is evaluated: flat | gouraud | phong | fast-phong\n"
-  "                      (default phong); cook-torrance = phong with --model cook-torrance\n"
+  "                      (default phong); cook-torrance = phong with --model cook-torrance;\n"
+  "                      auto = the cheapest of flat, gouraud, phong predicted to keep the\n"
+  "                      mean error under --max-error E (1/255; docs/model.md eq. 4.1-4.2)\n"
       "  --backend B         cpu | gpu | auto (auto: gpu when an X display with OpenGL >= 3.2\n"
   "                      exists, cpu otherwise, said on stderr)\n"
   "  --interp I          perspective (perspective-correct, default) | screen (linear in\n"
@@ -73,7 +76,7 @@ Vec3<double> ParseVector(const std::string& text, const std::string& what)
 std::unique_ptr<SceneArguments> SceneFromArguments(int argc, char** argv, const std::string& help,
   const std::vector<std::string>& extraValued)
 {
-  std::vector<std::string> valued = { "backend", "mode", "size", "out", "interp", "polygons",
+  std::vector<std::string> valued = { "backend", "mode", "max-error", "size", "out", "interp", "polygons",
     "azimuth", "elevation", "zoom", "camera-position", "focal-point", "view-up", "view-angle",
     "light-intensity", "ssaa", "threads", "display", "expansion", "fast-phong-max-spread",
     "normals", "feature-angle", "subdivide", "scheme" };
@@ -103,7 +106,28 @@ std::unique_ptr<SceneArguments> SceneFromArguments(int argc, char** argv, const 
   // interpolation of a Cook-Torrance material.
   const std::string modeName = args.Get("mode", "phong");
   const bool cookTorranceShorthand = modeName == "cook-torrance";
-  if (!cookTorranceShorthand && !render::ParseShadingMode(modeName, options.mode))
+  const bool autoMode = modeName == "auto";
+  double maxError = 0;
+  if (autoMode)
+  {
+    if (!args.Has("max-error"))
+    {
+      throw UsageError("--mode auto needs --max-error E (the mean error allowed, in 1/255)");
+    }
+    maxError = ParseDouble(args.Get("max-error"), "--max-error");
+    // Below 0.01/255 no mode is predicted to comply (the fit's floor);
+    // above 255 every mode does.
+    if (!(maxError >= 0.01 && maxError <= 255))
+    {
+      throw UsageError("--max-error must be in [0.01, 255] (1/255 units)");
+    }
+    options.mode = render::ShadingMode::Phong; // until the choice below
+  }
+  else if (args.Has("max-error"))
+  {
+    throw UsageError("--max-error is for --mode auto");
+  }
+  if (!autoMode && !cookTorranceShorthand && !render::ParseShadingMode(modeName, options.mode))
   {
     throw UsageError("unknown --mode '" + modeName + "' (expected " +
       render::ShadingModeChoices() + ", or cook-torrance for phong with --model cook-torrance)");
@@ -401,6 +425,16 @@ std::unique_ptr<SceneArguments> SceneFromArguments(int argc, char** argv, const 
   }
   lighting.ambientIntensity = Vec3<double>(1, 1, 1);
 
+  if (autoMode)
+  {
+    // The renderers' normals when the mesh has none: area-weighted.
+    const std::vector<float> normals =
+      result->mesh.normals.empty() ? cpu::AreaWeightedNormals(result->mesh) : result->mesh.normals;
+    const render::ModeChoice choice = render::ChooseMode(result->mesh, normals,
+      scene.scene.camera, lighting, scene.scene.material, options.width, options.height, maxError);
+    options.mode = choice.mode;
+    result->autoChoice = choice.why;
+  }
   return result;
 }
 

@@ -31,6 +31,7 @@ struct SceneArguments
   render::RenderOptions options;
   render::DisplayTransform display = render::DisplayTransform::Clamp;
   std::string notices; ///< said after success (errors stay one line)
+  std::string autoChoice; ///< --mode auto: what was chosen and why (--stats)
 };
 
 /// The options 'render' and 'compare' accept, in their --help.

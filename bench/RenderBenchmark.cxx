@@ -28,6 +28,7 @@
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <map>
 #include <memory>
@@ -212,8 +213,49 @@ void GlArgs(benchmark::internal::Benchmark* b)
   }
 }
 
+/// The work a scene does not need is skipped: the same frame with the mesh
+/// half outside the view (the camera panned by half the view's width, so
+/// the torus's centre sits on the left edge) should cost about half.
+void BM_CpuHalfOutside(benchmark::State& state)
+{
+  const Scene& scene = GetScene(0);
+  render::Camera camera = scene.camera;
+  if (state.range(1))
+  {
+    const sl::Vec3d forward = sl::NormalizeOr(camera.focalPoint - camera.position, sl::Vec3d(0, 0, -1));
+    const sl::Vec3d right = sl::NormalizeOr(sl::Cross(forward, camera.viewUp), sl::Vec3d(1, 0, 0));
+    const double halfWidth = sl::Length(camera.focalPoint - camera.position) *
+      std::tan(0.5 * camera.viewAngle * sl::kPi<double> / 180.0) * kWidth / kHeight;
+    camera.position += right * halfWidth;
+    camera.focalPoint += right * halfWidth;
+  }
+  render::RenderOptions opt;
+  opt.width = kWidth;
+  opt.height = kHeight;
+  opt.mode = static_cast<render::ShadingMode>(state.range(0));
+  opt.threads = 2;
+  sl::Material<double> material;
+  const render::Scene s{ &scene.mesh, camera, Headlight(camera), material };
+  cpu::SoftwareRenderer renderer;
+  render::RenderStats stats;
+  renderer.Render(s, opt, &stats);
+  for (auto _ : state)
+  {
+    renderer.Render(s, opt, &stats);
+  }
+  state.counters["rasterized"] = static_cast<double>(stats.rasterized);
+  state.counters["skipped"] = static_cast<double>(stats.skipped);
+  state.counters["pixels_shaded"] = static_cast<double>(stats.pixelsShaded);
+  state.SetLabel(std::string(render::ShadingModeName(opt.mode)) +
+    (state.range(1) ? ", half outside" : ", all in view"));
+}
+
 } // namespace
 
+BENCHMARK(BM_CpuHalfOutside)
+  ->ArgsProduct({ { 0, 1, 2 }, { 0, 1 } })
+  ->Unit(benchmark::kMillisecond)
+  ->UseRealTime();
 BENCHMARK(BM_Cpu)->Apply(CpuArgs)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_VtkOpenGL)
   ->Args({ 0, VTK_GOURAUD })

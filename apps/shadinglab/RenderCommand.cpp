@@ -58,15 +58,18 @@ int RunRender(int argc, char** argv)
   {
     std::printf("{\"backend\":\"%s\",\"mode\":\"%s\",\"model\":\"%s\",\"width\":%d,\"height\":%d,\"ssaa\":%d,"
                 "\"milliseconds\":%.3f,\"polygons\":%lld,\"triangles\":%lld,\"rasterized\":%lld,"
-                "\"clipped\":%lld,\"degenerate\":%lld,\"pixels_covered\":%lld,"
-                "\"pixels_shaded\":%lld,\"fast_phong_exact\":%lld,\"threads\":%d,"
+                "\"clipped\":%lld,\"degenerate\":%lld,\"skipped\":%lld,\"pixels_covered\":%lld,"
+                "\"pixels_shaded\":%lld,\"overdraw\":%.3f,\"fast_phong_exact\":%lld,\"threads\":%d,"
                 "\"shader_builds\":%d,\"normals_computed\":%s%s}\n",
       render::BackendName(renderer->GetBackend()), render::ShadingModeName(options.mode),
       ReflectanceModelName(request->scene.material.model), options.width, options.height, options.ssaa,
       stats.milliseconds, static_cast<long long>(stats.polygons),
       static_cast<long long>(stats.triangles), static_cast<long long>(stats.rasterized),
       static_cast<long long>(stats.clipped), static_cast<long long>(stats.degenerate),
-      static_cast<long long>(stats.pixelsCovered), static_cast<long long>(stats.pixelsShaded),
+      static_cast<long long>(stats.skipped), static_cast<long long>(stats.pixelsCovered),
+      static_cast<long long>(stats.pixelsShaded),
+      // Shading evaluations per covered pixel (0 when nothing is covered).
+      stats.pixelsCovered ? double(stats.pixelsShaded) / stats.pixelsCovered : 0.0,
       static_cast<long long>(stats.fastPhongExact), stats.threads, stats.shaderBuilds,
       stats.normalsComputed ? "true" : "false",
       request->autoChoice.empty() ? "" : (",\"auto\":\"" + request->autoChoice + "\"").c_str());

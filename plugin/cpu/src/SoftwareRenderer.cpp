@@ -229,6 +229,7 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh,
         stats->pixelsCovered += c;
       }
     }
+    stats->skipped = std::max<int64_t>(0, stats->polygons - stats->rasterized - stats->degenerate);
     stats->threads = F.Threads;
     stats->normalsComputed = computedNormals;
     stats->milliseconds =

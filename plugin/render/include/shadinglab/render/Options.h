@@ -122,6 +122,9 @@ struct RenderStats
   int64_t rasterized = 0;     ///< polygons scan-converted (after culling and clipping; CPU)
   int64_t clipped = 0;        ///< polygons crossing the near plane (CPU)
   int64_t degenerate = 0;     ///< zero-area polygons skipped (CPU)
+  /// Polygons skipped before scan conversion: outside the view, beyond the
+  /// far plane, culled back faces, or between pixel centres (CPU).
+  int64_t skipped = 0;
   int64_t pixelsCovered = 0;  ///< pixels with a surface in the final image
   int64_t pixelsShaded = 0;   ///< illumination-model evaluations at pixels (CPU)
   int64_t fastPhongExact = 0; ///< fast-phong pixels evaluated exactly (spread limit; CPU)

@@ -1,0 +1,179 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The explorer's controls dock: the selected panel's mode, backend,
+// interpolation and material; the light; the preparation of the user's
+// mesh; the plot and scene parameters.
+#include "MainWindow.h"
+
+#include "BrdfPlot.h"
+#include "ComparisonWidget.h"
+#include "MaterialEditor.h"
+#include "ProfilePlot.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QLabel>
+#include <QSlider>
+#include <QSpinBox>
+#include <QVBoxLayout>
+
+namespace shadinglab::gui
+{
+
+namespace
+{
+
+QSlider* MakeSlider(int lo, int hi, int value)
+{
+  auto* slider = new QSlider(Qt::Horizontal);
+  slider->setRange(lo, hi);
+  slider->setValue(value);
+  return slider;
+}
+
+} // namespace
+
+QWidget* MainWindow::BuildControls()
+{
+  auto* root = new QWidget;
+  auto* layout = new QVBoxLayout(root);
+
+  auto* panelBox = new QGroupBox("Panel (click a panel to select it)");
+  auto* panelForm = new QFormLayout(panelBox);
+  this->PanelLabel = new QLabel;
+  this->PanelLabel->setWordWrap(true);
+  panelForm->addRow(this->PanelLabel);
+  this->Mode = new QComboBox;
+  for (const auto& row : render::kShadingModes)
+  {
+    this->Mode->addItem(row.label, static_cast<int>(row.value));
+  }
+  panelForm->addRow("Shading", this->Mode);
+  this->Backend = new QComboBox;
+  this->Backend->addItem("GPU (ShadingLab mapper)", static_cast<int>(render::Backend::GPU));
+  this->Backend->addItem("CPU (software renderer)", static_cast<int>(render::Backend::CPU));
+  panelForm->addRow("Backend", this->Backend);
+  this->Interpolation = new QComboBox;
+  for (const auto& row : render::kInterpolationSpaces)
+  {
+    this->Interpolation->addItem(row.label, static_cast<int>(row.value));
+  }
+  panelForm->addRow("Interpolation", this->Interpolation);
+  layout->addWidget(panelBox);
+  for (QComboBox* box : { this->Mode, this->Backend, this->Interpolation })
+  {
+    connect(box, QOverload<int>::of(&QComboBox::activated), this, &MainWindow::OnPanelEdited);
+  }
+
+  auto* materialBox = new QGroupBox("Material of the panel");
+  auto* materialLayout = new QVBoxLayout(materialBox);
+  materialLayout->addWidget(this->Editor);
+  layout->addWidget(materialBox);
+  connect(this->Editor, &widgets::MaterialEditor::materialChanged, this,
+    &MainWindow::OnPanelEdited);
+
+  auto* lightBox = new QGroupBox("Light (relative to the view; all panels)");
+  auto* lightForm = new QFormLayout(lightBox);
+  this->LightAzimuth = MakeSlider(-90, 90, -25);
+  this->LightElevation = MakeSlider(-90, 90, 25);
+  lightForm->addRow("Azimuth (deg)", this->LightAzimuth);
+  lightForm->addRow("Elevation (deg)", this->LightElevation);
+  layout->addWidget(lightBox);
+  for (QSlider* slider : { this->LightAzimuth, this->LightElevation })
+  {
+    connect(slider, &QSlider::valueChanged, this, [this] {
+      if (!this->Updating)
+      {
+        this->View->SetLight(this->LightAzimuth->value(), this->LightElevation->value());
+      }
+    });
+  }
+
+  auto* meshBox = new QGroupBox("Mesh preparation (your mesh: modes, silhouette, moon, metal)");
+  auto* meshForm = new QFormLayout(meshBox);
+  this->Weighting = new QComboBox;
+  for (const char* name : { "uniform", "area", "angle", "max" })
+  {
+    this->Weighting->addItem(name);
+  }
+  this->Weighting->setCurrentText(mesh::NormalWeightingName(this->Options.preparation.weighting));
+  meshForm->addRow("Normal weighting", this->Weighting);
+  this->CreaseAngle = new QDoubleSpinBox;
+  this->CreaseAngle->setRange(0, 180);
+  this->CreaseAngle->setValue(this->Options.preparation.featureAngle);
+  this->CreaseAngle->setSuffix(" deg");
+  meshForm->addRow("Crease angle", this->CreaseAngle);
+  this->Subdivision = new QSpinBox;
+  this->Subdivision->setRange(0, mesh::kMaxSubdivisionLevels);
+  this->Subdivision->setValue(this->Options.preparation.subdivisionLevels);
+  meshForm->addRow("Subdivision levels", this->Subdivision);
+  this->Repair = new QCheckBox("weld, orient, non-manifold, T-junctions");
+  this->Repair->setChecked(this->Options.preparation.repair);
+  meshForm->addRow("Repair", this->Repair);
+  layout->addWidget(meshBox);
+  auto applyPreparation = [this] {
+    if (this->Updating)
+    {
+      return;
+    }
+    mesh::PreparationOptions& p = this->Options.preparation;
+    mesh::ParseNormalWeighting(this->Weighting->currentText().toStdString(), p.weighting);
+    p.featureAngle = this->CreaseAngle->value();
+    p.subdivisionLevels = this->Subdivision->value();
+    p.repair = this->Repair->isChecked();
+    p.fixTJunctions = p.repair;
+    this->ReloadScene();
+  };
+  connect(this->Weighting, QOverload<int>::of(&QComboBox::activated), this, applyPreparation);
+  connect(this->CreaseAngle, &QDoubleSpinBox::editingFinished, this, applyPreparation);
+  connect(this->Subdivision, QOverload<int>::of(&QSpinBox::valueChanged), this, applyPreparation);
+  connect(this->Repair, &QCheckBox::toggled, this, applyPreparation);
+
+  auto* plotBox = new QGroupBox("Plot");
+  auto* plotForm = new QFormLayout(plotBox);
+  this->ProfileTool = new QCheckBox("left-drag draws the profile line (or Ctrl+drag)");
+  plotForm->addRow(this->ProfileTool);
+  this->Perceived = new QCheckBox("show the perceived profile (lateral inhibition)");
+  plotForm->addRow(this->Perceived);
+  this->Rotation = MakeSlider(0, 90, 0);
+  plotForm->addRow("orientation: rotation", this->Rotation);
+  this->Variant = new QComboBox;
+  this->Variant->addItems({ "corrugated", "isosurface" });
+  this->Variant->setCurrentText(QString::fromStdString(this->Options.variant));
+  plotForm->addRow("normals: surface", this->Variant);
+  connect(this->Variant, QOverload<int>::of(&QComboBox::activated), this, [this] {
+    this->Options.variant = this->Variant->currentText().toStdString();
+    if (this->Current.name == "normals")
+    {
+      this->ReloadScene();
+    }
+  });
+  this->ThetaL = MakeSlider(0, 89, 45);
+  plotForm->addRow("brdf: light angle", this->ThetaL);
+  this->Shininess = MakeSlider(1, 200, 32);
+  plotForm->addRow("brdf: shininess n", this->Shininess);
+  this->Roughness = MakeSlider(5, 100, 30);
+  plotForm->addRow("brdf: roughness m x 100", this->Roughness);
+  layout->addWidget(plotBox);
+  connect(this->ProfileTool, &QCheckBox::toggled, this,
+    [this](bool on) { this->View->SetProfileTool(on); });
+  connect(this->Perceived, &QCheckBox::toggled, this->ProfileChart,
+    &widgets::ProfilePlot::SetShowPerceived);
+  connect(this->Rotation, &QSlider::valueChanged, this, [this](int degrees) {
+    this->Options.rotation = degrees;
+    if (!this->Updating && this->Current.name == "orientation")
+    {
+      this->ReloadScene();
+    }
+  });
+  for (QSlider* slider : { this->ThetaL, this->Shininess, this->Roughness })
+  {
+    connect(slider, &QSlider::valueChanged, this, &MainWindow::UpdateBrdfPlot);
+  }
+  layout->addStretch(1);
+  return root;
+}
+
+} // namespace shadinglab::gui

@@ -11,25 +11,28 @@ namespace shadinglab::render
 namespace
 {
 
-/// Fitted coefficients of eq. 4.1 (a, b, c) per mode and the 95th
-/// percentile of the fit's log residuals; written by
-/// scripts/fit-auto-mode.py from `shadinglab accuracy` (CPU rows, area
-/// normals, Blinn-Phong and Cook-Torrance). See docs/model.md section 4.
+/// Fitted coefficients of eq. 4.1 (a, b, c, d) per mode and a margin, the
+/// median of the fit's log residuals (so the prediction is the fit's median
+/// error); written by `scripts/fit-auto-mode.py accuracy.csv 0.5` from
+/// `shadinglab accuracy` (CPU rows, area normals, Blinn-Phong and
+/// Cook-Torrance). See docs/model.md section 4.
 struct Fit
 {
   double a, b, c, d, margin;
 };
 // Fit of 2026-11-25 (320x240, 2 threads; 73-78 rows per mode with mean
-// error >= 0.02/255; R^2 0.965, 0.936, 0.885): flat converges to first
+// error >= 0.02/255; R^2 0.970, 0.942, 0.888): flat converges to first
 // order in the spread (b ~ 1), Gouraud and Phong faster (b ~ 1.6-1.7; the
 // silhouette and the light's terminator keep them below 2); a sharper lobe
 // lights fewer pixels, so the mean error falls with it (c < 0).
-constexpr Fit kFlat = { 4.8929, 0.9813, -0.3157, 0.1855, 0.2505 };
-constexpr Fit kGouraud = { 4.5525, 1.6408, -0.1637, 0.2732, 0.4553 };
-constexpr Fit kPhong = { 4.3713, 1.7187, -0.2050, 0.2002, 0.7137 };
+constexpr Fit kFlat = { 4.8929, 0.9813, -0.3157, 0.1855, -0.0661 };
+constexpr Fit kGouraud = { 4.5525, 1.6408, -0.1637, 0.2732, -0.1119 };
+constexpr Fit kPhong = { 4.3713, 1.7187, -0.2050, 0.2002, -0.2543 };
 
 /// eq. 4.2's coefficients (ms, ms per 1000 triangles, ms per 1000 front
-/// pixels) per mode, for Blinn-Phong-like models and for Cook-Torrance.
+/// pixels) per mode, for Blinn-Phong-like models and for Cook-Torrance
+/// (least squares on the same rows; rms 1.0-1.5 ms, Gouraud with
+/// Cook-Torrance 10.7 ms: per-vertex conductor Fresnel on 1M triangles).
 struct CostFit
 {
   double a, b, c;

@@ -57,7 +57,7 @@ struct ModeChoice
 /**
  * Predicted mean error (1/255) of `mode` (eq. 4.1):
  *   E = exp(a_M) (spread)^b_M (1 + sharpness)^c_M (peak)^d_M
- * with a margin (a percentile of the fit's residuals) when `conservative`.
+ * plus a margin (the median of the fit's residuals) when `conservative`.
  */
 double PredictError(ShadingMode mode, const ViewPredictors& view, double sharpness, double peak,
   bool conservative);
@@ -73,8 +73,8 @@ double LightScale(const Lighting<double>& lighting);
 double PredictCost(ShadingMode mode, const ViewPredictors& view, const Material<double>& material);
 
 /// Of flat, Gouraud and Phong, the one of least predicted cost whose
-/// conservative error prediction, times LightScale, is <= maxError; Phong
-/// (the most accurate) when none is.
+/// error prediction (with the margin), times LightScale, is <= maxError;
+/// Phong (the most accurate) when none is.
 ModeChoice ChooseMode(const Mesh& mesh, const std::vector<float>& normals, const Camera& camera,
   const Lighting<double>& lighting, const Material<double>& material, int width, int height,
   double maxError);

@@ -488,6 +488,8 @@ TEST(CliTest, AutoModeChoosesByTheErrorBudgetAndSaysWhy)
     ASSERT_NE(at, std::string::npos) << r.out;
     *mode = r.out.substr(at + 8, r.out.find('"', at + 8) - at - 8);
     EXPECT_NE(r.out.find("\"auto\":\"normal spread"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("\"skipped\":"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("\"overdraw\":"), std::string::npos) << r.out;
   }
   // A loose budget takes a cheap mode; one below what any mode can promise
   // takes the most accurate and says so.

@@ -302,6 +302,14 @@ void ValidateMesh(vtkPolyData* mesh, const std::string& what)
   for (vtkCellArray* cells : { mesh->GetVerts(), mesh->GetLines(), mesh->GetPolys(), mesh->GetStrips() })
   {
     const bool polys = cells == mesh->GetPolys();
+    // Offsets that do not fit the connectivity (a legacy file declaring
+    // more cells than it lists) would make every cell access overflow:
+    // found by fuzz/MeshReaderFuzzer.
+    if (cells->GetNumberOfCells() > 0 && !cells->IsValid())
+    {
+      throw MeshError("malformed cells in '" + what + "': their offsets do not match their "
+                      "connectivity (truncated or corrupt)");
+    }
     for (vtkIdType c = 0; c < cells->GetNumberOfCells(); ++c)
     {
       cells->GetCellAtId(c, ids);
@@ -423,6 +431,7 @@ vtkPolyData* ReadMesh(const std::string& path)
     vtkSmartPointer<vtkDataSet> data;
     if (ext == "vtk")
     {
+      PrecheckLegacyVtk(path);
       auto reader = vtkSmartPointer<vtkDataSetReader>::New();
       reader->SetFileName(path.c_str());
       reader->Update();

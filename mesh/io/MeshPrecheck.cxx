@@ -4,6 +4,7 @@
 #include "MeshIO.h"
 
 #include <cerrno>
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -42,7 +43,8 @@ bool ParseInteger(const std::string& token, long long& value)
   errno = 0;
   char* end = nullptr;
   value = std::strtoll(token.c_str(), &end, 10);
-  return errno == 0 && end && *end == '\0';
+  // The whole token: an embedded NUL would end c_str() early (fuzzer find).
+  return errno == 0 && end == token.c_str() + token.size() && end != token.c_str();
 }
 
 bool ParseReal(const std::string& token, double& value)
@@ -53,7 +55,7 @@ bool ParseReal(const std::string& token, double& value)
   }
   char* end = nullptr;
   value = std::strtod(token.c_str(), &end);
-  return end && *end == '\0';
+  return end == token.c_str() + token.size() && end != token.c_str();
 }
 
 std::ifstream Open(const std::string& path, std::ios::openmode mode = std::ios::in)
@@ -74,6 +76,7 @@ void PrecheckObj(const std::string& path)
   std::string line;
   long long number = 0, vertices = 0;
   long long largestIndex = 0, largestIndexLine = 0;
+  bool firstHasColour = false;
   while (std::getline(in, line))
   {
     ++number;
@@ -88,18 +91,46 @@ void PrecheckObj(const std::string& path)
     tokens >> keyword;
     if (keyword == "v")
     {
-      for (int c = 0; c < 3; ++c)
+      int count = 0;
+      std::string token;
+      while (tokens >> token)
       {
-        std::string token;
         double value = 0;
-        if (!(tokens >> token) || !ParseReal(token, value))
+        if (!ParseReal(token, value))
         {
-          throw MeshError(Where(path, number) + ": a vertex needs three numbers");
+          if (count < 3)
+          {
+            throw MeshError(Where(path, number) + ": a vertex needs three numbers");
+          }
+          break; // a comment or trailing text after the numbers
         }
-        if (!std::isfinite(value))
+        if (count < 3 && !std::isfinite(value))
         {
           throw MeshError(Where(path, number) + ": non-finite (NaN or Inf) vertex coordinate");
         }
+        ++count;
+      }
+      if (count < 3)
+      {
+        throw MeshError(Where(path, number) + ": a vertex needs three numbers");
+      }
+      // x y z, x y z w, or x y z r g b: VTK's reader takes six numbers as a
+      // colour and crashes when only some vertices have one (found by
+      // fuzz/MeshReaderFuzzer).
+      const bool colour = count >= 6;
+      if (count == 5 || count > 7)
+      {
+        throw MeshError(Where(path, number) + ": a vertex has " + std::to_string(count) +
+          " numbers (expected x y z [w] or x y z r g b)");
+      }
+      if (vertices == 0)
+      {
+        firstHasColour = colour;
+      }
+      else if (colour != firstHasColour)
+      {
+        throw MeshError(Where(path, number) + ": vertex colours on some vertices only (VTK's "
+                                              "OBJ reader needs them on all or none)");
       }
       ++vertices;
     }
@@ -229,6 +260,15 @@ void PrecheckPly(const std::string& path)
     {
       line.pop_back();
     }
+    if (std::any_of(line.begin(), line.end(), [](char c) {
+          return static_cast<unsigned char>(c) < 0x20 && c != '\t';
+        }))
+    {
+      // VTK's header parser stops at a NUL and reads what follows as the
+      // data's shape (a double free found by fuzz/MeshReaderFuzzer).
+      throw MeshError(bad + "a control character in the header (line '" +
+        line.substr(0, line.find('\0')) + "')");
+    }
     std::istringstream tokens(line);
     std::string keyword;
     tokens >> keyword;
@@ -284,6 +324,12 @@ void PrecheckPly(const std::string& path)
       }
       elements.back().properties.push_back(p);
     }
+    else if (!keyword.empty() && keyword != "comment" && keyword != "obj_info")
+    {
+      // VTK's reader skips a line it does not know and then misreads the
+      // data (a crash found by fuzz/MeshReaderFuzzer): refuse it.
+      throw MeshError(bad + "unknown header line '" + line.substr(0, 40) + "'");
+    }
   }
   if (!ended)
   {
@@ -310,6 +356,16 @@ void PrecheckPly(const std::string& path)
   {
     throw MeshError(bad + "no vertex element");
   }
+  for (const PlyElement& e : elements)
+  {
+    if (e.name == "face" && e.count > 0 &&
+      std::none_of(e.properties.begin(), e.properties.end(), [](const PlyProperty& p) {
+        return p.list && (p.name == "vertex_indices" || p.name == "vertex_index");
+      }))
+    {
+      throw MeshError(bad + "the face element has no 'vertex_indices' list");
+    }
+  }
   auto checkIndex = [&](long long index, long long row) {
     if (index < 0 || index >= vertexCount)
     {
@@ -326,7 +382,9 @@ void PrecheckPly(const std::string& path)
     {
       for (long long row = 0; row < e.count; ++row)
       {
-        if (!std::getline(in, line))
+        // A row without its end of line is cut off (VTK's reader asserts
+        // on it: found by fuzz/MeshReaderFuzzer).
+        if (!std::getline(in, line) || in.eof())
         {
           throw MeshError(bad + "data ends in element '" + e.name + "' at row " +
             std::to_string(row) + " of " + std::to_string(e.count) + " (truncated?)");
@@ -505,6 +563,77 @@ void PrecheckStl(const std::string& path)
   if (vertices != 3 * ends || facets != ends || !closed)
   {
     throw MeshError("malformed STL '" + path + "': incomplete facets or no 'endsolid' (truncated?)");
+  }
+}
+
+void PrecheckLegacyVtk(const std::string& path)
+{
+  std::ifstream in = Open(path, std::ios::in | std::ios::binary);
+  in.seekg(0, std::ios::end);
+  const long long fileSize = static_cast<long long>(in.tellg());
+  in.seekg(0);
+  const std::string bad = "malformed VTK file '" + path + "': ";
+  std::string line;
+  bool binary = false;
+  for (long long number = 1; std::getline(in, line); ++number)
+  {
+    if (number == 3)
+    {
+      binary = line.rfind("BINARY", 0) == 0;
+    }
+    std::istringstream tokens(line);
+    std::string keyword, a, b;
+    tokens >> keyword >> a >> b;
+    // The keywords whose counts size an allocation, and the values each
+    // counted item holds: points 3, cell lists their size, offsets and
+    // connectivity (file format 5) one each.
+    long long items = -1;
+    int bytesPerValue = 4;
+    if (keyword == "POINTS")
+    {
+      long long n = 0;
+      if (!ParseInteger(a, n) || n < 0)
+      {
+        throw MeshError(bad + "line " + std::to_string(number) + ": POINTS count '" + a + "'");
+      }
+      items = 3 * n;
+      bytesPerValue = b == "double" ? 8 : 4;
+    }
+    else if (keyword == "POLYGONS" || keyword == "LINES" || keyword == "VERTICES" ||
+      keyword == "TRIANGLE_STRIPS" || keyword == "CELLS")
+    {
+      long long n = 0, size = 0;
+      if (!ParseInteger(a, n) || !ParseInteger(b, size) || n < 0 || size < 0)
+      {
+        throw MeshError(bad + "line " + std::to_string(number) + ": " + keyword + " counts '" +
+          a + " " + b + "'");
+      }
+      items = size;
+    }
+    else if (keyword == "OFFSETS" || keyword == "CONNECTIVITY")
+    {
+      bytesPerValue = a.find("64") != std::string::npos ? 8 : 4;
+      continue; // their counts are the cell block's, checked above
+    }
+    if (items < 0)
+    {
+      continue;
+    }
+    // Each value takes at least 2 bytes as text ("0 ") and its type's size
+    // in binary: a count the file cannot hold is refused before reading.
+    const long long minimum = items * (binary ? bytesPerValue : 2);
+    if (items > (1LL << 40) || minimum > fileSize)
+    {
+      throw MeshError(bad + "line " + std::to_string(number) + ": " + keyword + " " + a +
+        " needs at least " + std::to_string(minimum) + " bytes; the file has " +
+        std::to_string(fileSize) + " (truncated or corrupt)");
+    }
+    if (binary)
+    {
+      // Skip the binary block (it may contain newlines that look like text).
+      in.seekg(std::min<long long>(fileSize, static_cast<long long>(in.tellg()) +
+        items * bytesPerValue));
+    }
   }
 }
 

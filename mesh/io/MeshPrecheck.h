@@ -25,5 +25,10 @@ void PrecheckPly(const std::string& path);
 /// STL: binary files hold exactly 84 + 50 n bytes for their n triangles;
 /// ASCII files have complete facets and end with `endsolid`.
 void PrecheckStl(const std::string& path);
+/// Legacy .vtk: every count of the structure (POINTS, POLYGONS, CELLS,
+/// OFFSETS, ...) fits in the file before VTK allocates for it (an 84-byte
+/// file claiming 2e9 points made VTK allocate gigabytes: found by
+/// fuzz/MeshReaderFuzzer).
+void PrecheckLegacyVtk(const std::string& path);
 
 } // namespace shadinglab

@@ -33,6 +33,9 @@ write('obj_empty_face.obj', TRI + 'f\n')
 write('obj_two_vertex_face.obj', TRI + 'f 1 2\n')
 write('obj_no_faces.obj', TRI)
 write('obj_garbage_index.obj', TRI + 'f 1 2 x\n')
+# Found by fuzz/MeshReaderFuzzer (VTK's OBJ reader crashed on both).
+write('obj_vertex_five_numbers.obj', TRI + 'v 1 1 0 0 0.5\nf 1 2 3\n')
+write('obj_colour_on_some_vertices.obj', 'v 0 0 0\nv 1 0 0 1 0 0\nv 0 1 0\nf 1 2 3\n')
 # OFF (our own parser).
 write('off_index_too_large.off', 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 5\n')
 write('off_negative_index.off', 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 -1 2\n')
@@ -49,6 +52,11 @@ write('ply_truncated_header.ply', 'ply\nformat ascii 1.0\nelement vertex 3\nprop
 write('ply_no_xyz.ply', PLY_HEAD.replace('property float x\nproperty float y\nproperty float z\n', 'property float u\n') + '0\n1\n2\n3 0 1 2\n')
 write('ply_negative_count.ply', PLY_HEAD.replace('element vertex 3', 'element vertex -3') + '3 0 1 2\n')
 write('ply_nan.ply', PLY_HEAD + '0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n')
+# Found by fuzz/MeshReaderFuzzer (crash, assertion and double free in
+# VTK's PLY reader).
+write('ply_unknown_header_line.ply', PLY_HEAD.replace('property list', 'rop0perty list') + '0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n')
+write('ply_last_row_unterminated.ply', PLY_HEAD + '0 0 0\n1 0 0\n0 1 0\n3 0 1 2')
+write('ply_nul_in_header.ply', PLY_HEAD.replace('element face 1', 'element face\0\0 1') + '0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n')
 binary = ('ply\nformat binary_little_endian 1.0\nelement vertex 2000000000\nproperty float x\n'
           'property float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n')
 write('ply_binary_huge_count.ply', binary.encode() + struct.pack('<9f', 0, 0, 0, 1, 0, 0, 0, 1, 0))
@@ -61,6 +69,11 @@ write('vtk_truncated_points.vtk', VTK_HEAD + 'POINTS 3 float\n0 0 0 1 0\n')
 write('vtk_huge_counts.vtk', VTK_HEAD + 'POINTS 2000000000 float\n0 0 0\n')
 write('vtk_truncated_polygons.vtk', VTK_HEAD + 'POINTS 3 float\n0 0 0 1 0 0 0 1 0\nPOLYGONS 1 4\n3 0\n')
 write('vtk_garbage.vtk', '# vtk DataFile Version 3.0\n' + 'x' * 100)
+# Found by fuzz/MeshReaderFuzzer: more cells declared than the (format 5)
+# offsets list, which overflowed every cell access.
+write('vtk_more_cells_than_offsets.vtk', '# vtk DataFile Version 5.1\nbad\nASCII\nDATASET POLYDATA\n'
+      'POINTS 3 float\n0 0 0 1 0 0 0 1 0\nPOLYGONS 70 3\nOFFSETS vtktypeint64\n0 3\n'
+      'CONNECTIVITY vtktypeint64\n0 1 2\n')
 # STL.
 write('stl_ascii_truncated.stl', 'solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n')
 tri = struct.pack('<12fH', 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0)

@@ -41,6 +41,26 @@ double Median(std::vector<double> v)
   return v.empty() ? 0.0 : v[v.size() / 2];
 }
 
+/// One warm-up frame (buffers, shader variant), then `frames` timed ones:
+/// the median in ms; `image` gets the first timed frame.
+double TimedFrames(render::Renderer& renderer, const render::Scene& scene,
+  const render::RenderOptions& options, int frames, render::Image& image)
+{
+  renderer.Render(scene, options);
+  std::vector<double> times;
+  for (int f = 0; f < frames; ++f)
+  {
+    const auto t0 = Clock::now();
+    const render::Image& out = renderer.Render(scene, options);
+    times.push_back(Milliseconds(t0, Clock::now()));
+    if (f == 0)
+    {
+      image = out;
+    }
+  }
+  return Median(times);
+}
+
 struct Shape
 {
   std::string name;
@@ -309,19 +329,8 @@ std::vector<StudyRow> RunStudy(
             ro.height = options.height;
             ro.threads = options.threads;
             ro.background = background;
-            renderer->Render(scene, ro); // warm-up: buffers, shader variant
-            std::vector<double> times;
             render::Image image;
-            for (int f = 0; f < options.frames; ++f)
-            {
-              const auto t0 = Clock::now();
-              const render::Image& out = renderer->Render(scene, ro);
-              times.push_back(Milliseconds(t0, Clock::now()));
-              if (f == 0)
-              {
-                image = out;
-              }
-            }
+            const double frameMs = TimedFrames(*renderer, scene, ro, options.frames, image);
             StudyRow row;
             row.shape = shape.name;
             row.level = level;
@@ -336,7 +345,7 @@ std::vector<StudyRow> RunStudy(
               : options.threads > 0 ? options.threads
                                     : static_cast<int>(std::thread::hardware_concurrency());
             row.prepareMs = Median(prepTimes);
-            row.frameMs = Median(times);
+            row.frameMs = frameMs;
             Measure(image, ref->second, row);
             row.normalSpreadDeg = view.normalSpread * 180.0 / kPi<double>;
             row.trianglePixels = view.trianglePixels;
@@ -441,22 +450,11 @@ std::vector<AutoCase> ValidateAutoMode(
         ro.threads = options.threads;
         ro.background = Vec3<float>(0, 0, 0);
         const render::Scene scene{ &mesh, camera, lighting, material };
-        renderer.Render(scene, ro);
-        std::vector<double> times;
         render::Image image;
-        for (int f = 0; f < options.frames; ++f)
-        {
-          const auto t0 = Clock::now();
-          const render::Image& out = renderer.Render(scene, ro);
-          times.push_back(Milliseconds(t0, Clock::now()));
-          if (f == 0)
-          {
-            image = out;
-          }
-        }
+        const double frameMs = TimedFrames(renderer, scene, ro, options.frames, image);
         StudyRow row;
         Measure(image, exact, row);
-        measured[render::ShadingModeName(mode)] = { row.mean255, Median(times) };
+        measured[render::ShadingModeName(mode)] = { row.mean255, frameMs };
       }
       for (double budget : budgets)
       {

@@ -64,6 +64,9 @@ MaterialEditor::MaterialEditor(QWidget* parent)
   this->AddRow("albedo R", 0.0, 1.0, false, &this->Value.diffuseColor.x);
   this->AddRow("albedo G", 0.0, 1.0, false, &this->Value.diffuseColor.y);
   this->AddRow("albedo B", 0.0, 1.0, false, &this->Value.diffuseColor.z);
+  this->AddRow("specular R", 0.0, 1.0, false, &this->Value.specularColor.x);
+  this->AddRow("specular G", 0.0, 1.0, false, &this->Value.specularColor.y);
+  this->AddRow("specular B", 0.0, 1.0, false, &this->Value.specularColor.z);
   this->AddRow("ambient", 0.0, 0.5, false, &this->Value.ambient.x);
   for (const Row& row : this->Rows)
   {

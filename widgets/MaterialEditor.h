@@ -2,7 +2,8 @@
 // Presets and a slider for every parameter of the model's Material: kd, ks
 // (kd + ks <= 1 enforced as either moves), shininess, the Beckmann mixture
 // (one or two lobes: roughness and weight), eta and k per channel, the
-// Cook-Torrance 1982 / Walter 2007 variant, ambient, albedo.
+// Cook-Torrance 1982 / Walter 2007 variant, albedo, the (Blinn-)Phong
+// specular colour, ambient.
 #pragma once
 
 #include "shadinglab/model/Shading.h"

@@ -178,10 +178,15 @@ void ComparisonWidget::RenderAll()
     ++this->FitRetries;
     QTimer::singleShot(0, this, &ComparisonWidget::RenderAll);
   }
+  this->RenderPanels(nullptr);
+}
+
+void ComparisonWidget::RenderPanels(const ShadingPanel* alreadyDrawn)
+{
   // References first, then the heat maps that read them.
   for (ShadingPanel* panel : this->Panels)
   {
-    if (!panel->GetReference())
+    if (panel != alreadyDrawn && !panel->GetReference())
     {
       panel->Render();
     }
@@ -199,22 +204,7 @@ void ComparisonWidget::RenderAll()
 void ComparisonWidget::OnCameraMoved(ShadingPanel* source)
 {
   // A GPU source has drawn itself (its interactor renders as it moves).
-  for (ShadingPanel* panel : this->Panels)
-  {
-    const bool drawn = panel == source && source->Backend() == render::Backend::GPU;
-    if (!drawn && !panel->GetReference())
-    {
-      panel->Render();
-    }
-  }
-  for (ShadingPanel* panel : this->Panels)
-  {
-    if (panel->GetReference())
-    {
-      panel->Render();
-    }
-  }
-  emit this->rendered();
+  this->RenderPanels(source->Backend() == render::Backend::GPU ? source : nullptr);
 }
 
 void ComparisonWidget::SetProfileLine(const ProfileLine& line)

@@ -72,6 +72,8 @@ signals:
 
 private:
   void OnCameraMoved(ShadingPanel* source);
+  /// Every panel but `alreadyDrawn` (may be null), heat maps last.
+  void RenderPanels(const ShadingPanel* alreadyDrawn);
   void RenderPanelAndDependents(int index);
 
   bool FitCamera();

@@ -293,6 +293,27 @@ bool MainWindow::OpenMesh(const std::string& path, std::string& error)
   return true;
 }
 
+void MainWindow::OnRotation(int degrees)
+{
+  this->Options.rotation = degrees;
+  if (this->Updating || this->Current.name != "orientation")
+  {
+    return;
+  }
+  const Scene rotated = MakeScene("orientation", this->Options);
+  for (int i = 0; i < this->View->PanelCount() && i < static_cast<int>(rotated.panels.size()); ++i)
+  {
+    // The user's settings of the panel stay; the quad and its title change.
+    widgets::PanelSpec spec = this->View->Panel(i)->Spec();
+    spec.mesh = rotated.panels[i].mesh;
+    spec.title = rotated.panels[i].title;
+    this->View->SetPanelSpec(i, spec);
+    this->Current.panels[i] = spec;
+  }
+  this->CurrentStudy.marker = degrees;
+  this->UpdatePlot();
+}
+
 void MainWindow::OnPanelSelected(int index)
 {
   if (index < 0 || index >= this->View->PanelCount())

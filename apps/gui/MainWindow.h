@@ -68,6 +68,9 @@ private:
   void UpdatePlot();
   void UpdateBrdfPlot();
   void ReloadScene();
+  /// orientation: new quads in the same panels (the study and the widgets
+  /// stay; only the panels re-render and the plot's marker moves).
+  void OnRotation(int degrees);
 
   SceneOptions Options;
   vtkSmartPointer<vtkPolyData> Input;

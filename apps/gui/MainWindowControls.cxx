@@ -161,13 +161,7 @@ QWidget* MainWindow::BuildControls()
     [this](bool on) { this->View->SetProfileTool(on); });
   connect(this->Perceived, &QCheckBox::toggled, this->ProfileChart,
     &widgets::ProfilePlot::SetShowPerceived);
-  connect(this->Rotation, &QSlider::valueChanged, this, [this](int degrees) {
-    this->Options.rotation = degrees;
-    if (!this->Updating && this->Current.name == "orientation")
-    {
-      this->ReloadScene();
-    }
-  });
+  connect(this->Rotation, &QSlider::valueChanged, this, &MainWindow::OnRotation);
   for (QSlider* slider : { this->ThetaL, this->Shininess, this->Roughness })
   {
     connect(slider, &QSlider::valueChanged, this, &MainWindow::UpdateBrdfPlot);

@@ -222,8 +222,7 @@ void BM_CpuHalfOutside(benchmark::State& state)
   render::Camera camera = scene.camera;
   if (state.range(1))
   {
-    const sl::Vec3d forward = sl::NormalizeOr(camera.focalPoint - camera.position, sl::Vec3d(0, 0, -1));
-    const sl::Vec3d right = sl::NormalizeOr(sl::Cross(forward, camera.viewUp), sl::Vec3d(1, 0, 0));
+    const sl::Vec3d right = render::BasisOf(camera).right;
     const double halfWidth = sl::Length(camera.focalPoint - camera.position) *
       std::tan(0.5 * camera.viewAngle * sl::kPi<double> / 180.0) * kWidth / kHeight;
     camera.position += right * halfWidth;

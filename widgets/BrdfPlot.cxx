@@ -3,6 +3,8 @@
 
 #include "ChartStyle.h"
 
+#include "shadinglab/render/Image.h"
+
 #include <QtCharts/QCategoryAxis>
 #include <QtCharts/QChartView>
 #include <QtCharts/QLegendMarker>
@@ -26,8 +28,7 @@ double BrdfInPlane(const Material<double>& material, double thetaL, double theta
   const Vec3<double> L(-std::sin(l), 0.0, std::cos(l));
   const Vec3<double> V(std::sin(v), 0.0, std::cos(v));
   const Vec3<double> N(0.0, 0.0, 1.0);
-  const Vec3<double> f = EvaluateBrdf(material, material.diffuseColor, N, L, V);
-  return 0.2126 * f.x + 0.7152 * f.y + 0.0722 * f.z;
+  return render::Luminance(EvaluateBrdf(material, material.diffuseColor, N, L, V));
 }
 
 std::vector<BrdfLobe> DefaultLobes(double shininess, double roughness)

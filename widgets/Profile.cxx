@@ -9,7 +9,7 @@ namespace shadinglab::widgets
 
 double Luminance(const float* rgb)
 {
-  return 0.2126 * rgb[0] + 0.7152 * rgb[1] + 0.0722 * rgb[2];
+  return render::Luminance(Vec3<double>(rgb[0], rgb[1], rgb[2]));
 }
 
 Profile SampleProfile(const render::Image& image, const ProfileLine& line)

@@ -26,7 +26,7 @@ struct Profile
   std::vector<double> pixelX, pixelY; ///< the pixel each sample reads
 };
 
-/// Rec. 709 / sRGB luminance weights of linear RGB.
+/// render::Luminance of one pixel of an Image's rgb.
 double Luminance(const float* rgb);
 
 /**

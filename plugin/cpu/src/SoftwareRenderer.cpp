@@ -28,10 +28,11 @@ namespace
 
 void SetupTransforms(Frame& frame)
 {
-  const Vec3<double> eye = frame.Cam.position, focal = frame.Cam.focalPoint;
-  const Vec3<double> forward = NormalizeOr(focal - eye, Vec3<double>(0, 0, -1));
-  const Vec3<double> right = NormalizeOr(Cross(forward, frame.Cam.viewUp), Vec3<double>(1, 0, 0));
-  const Vec3<double> up = Cross(right, forward);
+  const Vec3<double> eye = frame.Cam.position;
+  const render::CameraBasis basis = render::BasisOf(frame.Cam);
+  const Vec3<double>& forward = basis.forward;
+  const Vec3<double>& right = basis.right;
+  const Vec3<double>& up = basis.up;
   raster::Matrix4 view{};
   const Vec3<double> rows[3] = { right, up, -forward };
   for (int r = 0; r < 3; ++r)

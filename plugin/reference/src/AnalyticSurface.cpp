@@ -217,9 +217,10 @@ render::Image RayCast(const AnalyticSurface& surface, const render::Camera& came
   image.height = height;
   image.rgb.assign(static_cast<size_t>(width) * height * 3, 0.0f);
   image.covered.assign(static_cast<size_t>(width) * height, 0);
-  const V3 forward = NormalizeOr(camera.focalPoint - camera.position, V3(0, 0, -1));
-  const V3 right = NormalizeOr(Cross(forward, camera.viewUp), V3(1, 0, 0));
-  const V3 up = Cross(right, forward);
+  const render::CameraBasis basis = render::BasisOf(camera);
+  const V3& forward = basis.forward;
+  const V3& right = basis.right;
+  const V3& up = basis.up;
   const double aspect = static_cast<double>(width) / height;
   const double tanHalf = std::tan(0.5 * camera.viewAngle * kPi<double> / 180.0);
   for (int j = 0; j < height; ++j)

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "shadinglab/render/AutoMode.h"
 
+#include "shadinglab/render/Image.h"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -78,9 +80,10 @@ ViewPredictors PredictorsOf(const Mesh& mesh, const std::vector<float>& normals,
   const Camera& camera, int width, int height)
 {
   ViewPredictors out;
-  const Vec3<double> forward = NormalizeOr(camera.focalPoint - camera.position, Vec3<double>(0, 0, -1));
-  const Vec3<double> right = NormalizeOr(Cross(forward, camera.viewUp), Vec3<double>(1, 0, 0));
-  const Vec3<double> up = Cross(right, forward);
+  const CameraBasis basis = BasisOf(camera);
+  const Vec3<double>& forward = basis.forward;
+  const Vec3<double>& right = basis.right;
+  const Vec3<double>& up = basis.up;
   const double aspect = static_cast<double>(width) / height;
   const double tanHalf = std::tan(0.5 * camera.viewAngle * kPi<double> / 180.0);
   // Pixel coordinates of a point, false behind the camera.
@@ -195,8 +198,7 @@ double LobeSharpness(const Material<double>& material)
 double LobePeak(const Material<double>& material)
 {
   const Vec3<double> N(0, 0, 1);
-  const Vec3<double> f = EvaluateBrdf(material, material.diffuseColor, N, N, N);
-  return std::max(0.2126 * f.x + 0.7152 * f.y + 0.0722 * f.z, kMinPeak);
+  return std::max(Luminance(EvaluateBrdf(material, material.diffuseColor, N, N, N)), kMinPeak);
 }
 
 double PredictError(ShadingMode mode, const ViewPredictors& view, double sharpness, double peak,

@@ -83,12 +83,19 @@ void ToLocal(const WorldFrame& frame, Lighting<double>& lighting)
   }
 }
 
+CameraBasis BasisOf(const Camera& camera)
+{
+  CameraBasis b;
+  b.forward = NormalizeOr(camera.focalPoint - camera.position, Vec3<double>(0, 0, -1));
+  b.right = NormalizeOr(Cross(b.forward, camera.viewUp), Vec3<double>(1, 0, 0));
+  b.up = Cross(b.right, b.forward);
+  return b;
+}
+
 Light<double> KeyLight(const Camera& camera, double intensity)
 {
-  const Vec3<double> toEye =
-    NormalizeOr(camera.position - camera.focalPoint, Vec3<double>(0, 0, 1));
-  const Vec3<double> right = NormalizeOr(Cross(camera.viewUp, toEye), Vec3<double>(1, 0, 0));
-  const Vec3<double> up = Cross(toEye, right);
+  const CameraBasis b = BasisOf(camera);
+  const Vec3<double> toEye = -b.forward, right = b.right, up = b.up;
   Light<double> key;
   key.type = LightType::Directional;
   key.vector = NormalizeOr(toEye + up * 0.5 - right * 0.4, toEye);
@@ -99,10 +106,8 @@ Light<double> KeyLight(const Camera& camera, double intensity)
 Light<double> CameraLight(
   const Camera& camera, double azimuthDeg, double elevationDeg, double intensity)
 {
-  const Vec3<double> toEye =
-    NormalizeOr(camera.position - camera.focalPoint, Vec3<double>(0, 0, 1));
-  const Vec3<double> right = NormalizeOr(Cross(camera.viewUp, toEye), Vec3<double>(1, 0, 0));
-  const Vec3<double> up = Cross(toEye, right);
+  const CameraBasis b = BasisOf(camera);
+  const Vec3<double> toEye = -b.forward, right = b.right, up = b.up;
   const double az = azimuthDeg * kPi<double> / 180.0, el = elevationDeg * kPi<double> / 180.0;
   Light<double> light;
   light.type = LightType::Directional;

@@ -10,6 +10,13 @@
 namespace shadinglab::render
 {
 
+/// Rec. 709 / sRGB luminance of linear RGB (the weights of BT.709).
+template <typename T>
+T Luminance(const Vec3<T>& rgb)
+{
+  return T(0.2126) * rgb.x + T(0.7152) * rgb.y + T(0.0722) * rgb.z;
+}
+
 /// Linear RGB image, row 0 at the top.
 struct Image
 {

@@ -68,6 +68,16 @@ struct Camera
 Camera FitCamera(const double bounds[6], double azimuthDeg, double elevationDeg, double zoom,
   double aspect, bool parallel);
 
+/// The camera's orthonormal frame in world coordinates: `forward` from the
+/// position toward the focal point, `right` = forward x viewUp, `up` =
+/// right x forward (what the image's x and y follow). Degenerate cameras
+/// fall back to looking down -z with +x right.
+struct CameraBasis
+{
+  Vec3<double> forward, right, up;
+};
+CameraBasis BasisOf(const Camera& camera);
+
 /// One key light above-left of the camera, in world coordinates: the default
 /// light of every front end (CLI, explorer, VTK classes).
 Light<double> KeyLight(const Camera& camera, double intensity = 1.0);

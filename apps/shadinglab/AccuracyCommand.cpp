@@ -131,18 +131,18 @@ int RunAccuracy(int argc, char** argv)
   {
     throw UsageError("--backend must be cpu or all (got '" + backend + "')");
   }
-  std::string why;
-  options.gpu = backend == "all" && gl::GpuAvailable(why);
-  if (backend == "all" && !options.gpu)
-  {
-    std::cerr << "shadinglab accuracy: notice: CPU only (" << why << ")\n";
-  }
   const std::filesystem::path dir(args.Get("out"));
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec || !std::filesystem::is_directory(dir))
   {
     throw UsageError("cannot create directory " + dir.string());
+  }
+  std::string why;
+  options.gpu = backend == "all" && gl::GpuAvailable(why);
+  if (backend == "all" && !options.gpu)
+  {
+    std::cerr << "shadinglab accuracy: notice: CPU only (" << why << ")\n";
   }
   std::vector<StudyRow> rows = RunStudy(options, [](const StudyRow& r) {
     std::cerr << r.shape << " " << r.level << " (" << r.triangles << " tri) " << r.backend << " "

@@ -4,7 +4,10 @@ checks the promise: exit status 2, exactly one line on stderr, no crash or
 hang, the input file unchanged. Prints one line per failure and a summary;
 exit status 1 when anything failed.
 
-    python3 tests/badinput/run_corpus.py SHADINGLAB CORPUS_DIR WORK_DIR
+    python3 tests/badinput/run_corpus.py SHADINGLAB CORPUS_DIR WORK_DIR [SHADINGLAB_GUI]
+
+With SHADINGLAB_GUI, the explorer too (without a display it reads INPUT
+first, so a bad file must give its one-line error, not the display's).
 """
 import hashlib
 import os
@@ -13,12 +16,18 @@ import subprocess
 import sys
 
 cli, corpus, work = sys.argv[1:4]
+gui = sys.argv[4] if len(sys.argv) > 4 else None
 os.makedirs(work, exist_ok=True)
 commands = [
     ['render', '{in}', '--backend', 'cpu', '--size', '64x48', '--out', '{work}/r.png'],
     ['compare', '{in}', '--backend', 'cpu', '--size', '48x36', '--out', '{work}/c.png'],
     ['normals', '{in}', '--out', '{work}/n.vtp'],
+    ['render', '{in}', '--backend', 'cpu', '--mode', 'auto', '--max-error', '1', '--size',
+     '64x48', '--out', '{work}/a.png'],
 ]
+programs = [(cli, command) for command in commands]
+if gui:
+    programs.append((gui, ['--scene', 'modes', '{in}', '--screenshot', '{work}/g.png']))
 TIMEOUT = 60  # seconds; none of these inputs needs more than a second
 counts = {'ok': 0, 'crash': 0, 'hang': 0, 'exit': 0, 'lines': 0, 'modified': 0}
 env = {k: v for k, v in os.environ.items() if k != 'DISPLAY'}
@@ -32,9 +41,9 @@ def digest(path):
 for name in sorted(os.listdir(corpus)):
     path = os.path.join(corpus, name)
     before = digest(path)
-    for command in commands:
-        args = [cli] + [a.format(**{'in': path, 'work': work}) for a in command]
-        label = '%s %s' % (command[0], name)
+    for program, command in programs:
+        args = [program] + [a.format(**{'in': path, 'work': work}) for a in command]
+        label = '%s %s %s' % (os.path.basename(program), command[0], name)
         try:
             run = subprocess.run(args, capture_output=True, timeout=TIMEOUT, env=env)
         except subprocess.TimeoutExpired:

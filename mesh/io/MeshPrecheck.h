@@ -25,10 +25,12 @@ void PrecheckPly(const std::string& path);
 /// STL: binary files hold exactly 84 + 50 n bytes for their n triangles;
 /// ASCII files have complete facets and end with `endsolid`.
 void PrecheckStl(const std::string& path);
-/// Legacy .vtk: every count of the structure (POINTS, POLYGONS, CELLS,
-/// OFFSETS, ...) fits in the file before VTK allocates for it (an 84-byte
-/// file claiming 2e9 points made VTK allocate gigabytes: found by
-/// fuzz/MeshReaderFuzzer).
+/// Legacy .vtk (LegacyVtkCheck.cxx): the whole file walked the way
+/// vtkDataReader reads it; every section complete, every value of its type,
+/// cells well formed with indices within the points, attribute arrays as
+/// long as the points or cells they describe (VTK's reader crashed on a
+/// value that failed to parse and allocated gigabytes for an 84-byte file
+/// claiming 2e9 points: both found by fuzz/MeshReaderFuzzer).
 void PrecheckLegacyVtk(const std::string& path);
 
 } // namespace shadinglab

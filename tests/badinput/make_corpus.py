@@ -74,6 +74,31 @@ write('vtk_garbage.vtk', '# vtk DataFile Version 3.0\n' + 'x' * 100)
 write('vtk_more_cells_than_offsets.vtk', '# vtk DataFile Version 5.1\nbad\nASCII\nDATASET POLYDATA\n'
       'POINTS 3 float\n0 0 0 1 0 0 0 1 0\nPOLYGONS 70 3\nOFFSETS vtktypeint64\n0 3\n'
       'CONNECTIVITY vtktypeint64\n0 1 2\n')
+# Found by fuzz/MeshReaderFuzzer in CI: a NUL byte in the DATASET line and
+# a word among the POINTS values left VTK's reader with a half-built
+# dataset it then dereferenced (SEGV in vtkPolyDataReader::ReadMeshSimple).
+write('vtk_nul_in_header.vtk', b'# vtk DataFile Version 5.1\nvtk output\nASCII\nDATASET\0 POLYDATA\n'
+      b'POINTS 3 double\n0 0 0 1 0 0 0 1 0\n')
+write('vtk_word_in_points.vtk', VTK_HEAD + 'POINTS 3 double\n0 0 0 1 0 0 -0.FieldData 1\n')
+TRI3 = 'POINTS 3 float\n0 0 0 1 0 0 0 1 0\n'
+write('vtk_point_data_short.vtk', VTK_HEAD + TRI3 + 'POLYGONS 1 4\n3 0 1 2\nPOINT_DATA 2\n'
+      'SCALARS s float\nLOOKUP_TABLE default\n0 1\n')
+write('vtk_cell_data_long.vtk', VTK_HEAD + TRI3 + 'POLYGONS 1 4\n3 0 1 2\nCELL_DATA 5\n'
+      'SCALARS s float\nLOOKUP_TABLE default\n0 1 2 3 4\n')
+write('vtk_string_array.vtk', VTK_HEAD + TRI3 + 'POLYGONS 1 4\n3 0 1 2\nPOINT_DATA 3\n'
+      'FIELD f 1\nnames 1 3 string\na\nb\nc\n')
+write('vtk_metadata_information.vtk', VTK_HEAD + TRI3 + 'METADATA\nINFORMATION 1\n'
+      'NAME L2_NORM_RANGE LOCATION vtkDataArray\nDATA -5 1 1\n\nPOLYGONS 1 4\n3 0 1 2\n')
+UG_HEAD = '# vtk DataFile Version 4.2\nbad\nASCII\nDATASET UNSTRUCTURED_GRID\n'
+write('vtk_ug_type_mismatch.vtk', UG_HEAD + TRI3 + 'CELLS 1 4\n3 0 1 2\nCELL_TYPES 1\n12\n')
+write('vtk_ug_no_cell_types.vtk', UG_HEAD + TRI3 + 'CELLS 1 4\n3 0 1 2\n')
+write('vtk_ug_polyhedron.vtk', UG_HEAD + TRI3 + 'CELLS 1 4\n3 0 1 2\nCELL_TYPES 1\n42\n')
+write('vtk_huge_dimensions.vtk', '# vtk DataFile Version 4.2\nbad\nASCII\nDATASET STRUCTURED_POINTS\n'
+      'DIMENSIONS 100000 100000 100000\nSPACING 1 1 1\nORIGIN 0 0 0\n')
+write('vtk_binary_truncated.vtk', b'# vtk DataFile Version 4.2\nbad\nBINARY\nDATASET POLYDATA\n'
+      b'POINTS 3 float\n' + struct.pack('>5f', 0, 0, 0, 1, 0))
+write('vtk_offsets_decreasing.vtk', '# vtk DataFile Version 5.1\nbad\nASCII\nDATASET POLYDATA\n'
+      + TRI3 + 'POLYGONS 3 3\nOFFSETS vtktypeint64\n0 3 1\nCONNECTIVITY vtktypeint64\n0 1 2\n')
 # STL.
 write('stl_ascii_truncated.stl', 'solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n')
 tri = struct.pack('<12fH', 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0)

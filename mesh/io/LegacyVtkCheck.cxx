@@ -227,6 +227,18 @@ public:
     {
       this->In.Fail("CELLS without CELL_TYPES");
     }
+    // vtkDataSetSurfaceFilter reads the geometry of a structured dataset
+    // without checking it is there (a rectilinear grid without Y and Z
+    // coordinates was a null read: fuzz/MeshReaderFuzzer).
+    if (this->Kind != "polydata" && this->Kind != "unstructured_grid" && this->Dimensions < 0)
+    {
+      this->In.Fail("a " + this->Kind + " without DIMENSIONS");
+    }
+    if (this->Kind == "rectilinear_grid" &&
+      !(this->Coordinates[0] && this->Coordinates[1] && this->Coordinates[2]))
+    {
+      this->In.Fail("a rectilinear grid without all of X_, Y_ and Z_COORDINATES");
+    }
   }
 
 private:
@@ -303,10 +315,14 @@ private:
       this->Kind == "rectilinear_grid")
     {
       const int axis = key[0] - 'x';
+      this->Require(this->Dimensions >= 0, token + " before DIMENSIONS");
+      this->Require(!this->Coordinates[axis], "a second " + token);
+      this->Coordinates[axis] = true;
       const long long n = this->In.Count(token + " count");
-      if (this->Axes[axis] >= 0 && n != this->Axes[axis])
+      if (n != this->Axes[axis])
       {
-        this->In.Fail(token + " " + std::to_string(n) + " differs from DIMENSIONS");
+        this->In.Fail(token + " " + std::to_string(n) + " differs from DIMENSIONS' " +
+          std::to_string(this->Axes[axis]));
       }
       this->In.Values(token, n, this->In.Type(token));
     }
@@ -641,6 +657,7 @@ private:
   int Major = 0;
   long long Points = -1, Cells = 0, Dimensions = -1, Tuples = -1;
   long long Axes[3] = { -1, -1, -1 };
+  bool Coordinates[3] = { false, false, false };
   std::vector<int> CellSizes;
   bool TypesRead = false;
   std::set<std::string> Blocks; // the polydata cell sections read

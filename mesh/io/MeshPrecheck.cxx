@@ -408,8 +408,16 @@ void PrecheckPly(const std::string& path)
             }
             continue;
           }
+          // Range first: converting NaN or 1e300 to an integer is undefined
+          // (UBSan, fuzz/MeshReaderFuzzer).
+          if (!(value >= 0 && value <= static_cast<double>(kMaxListLength)) ||
+            value != std::floor(value))
+          {
+            throw MeshError(bad + "element '" + e.name + "' row " + std::to_string(row) +
+              ": list length '" + token + "'");
+          }
           const long long n = static_cast<long long>(value);
-          if (n != value || n < 0 || n > kMaxListLength)
+          if (n < 0)
           {
             throw MeshError(bad + "element '" + e.name + "' row " + std::to_string(row) +
               ": list length '" + token + "'");

@@ -61,39 +61,6 @@ constexpr long long kMaxInformationLength = 1 << 20;
 /// Arrays in one FIELD block (a corrupt count would loop for long).
 constexpr long long kMaxFieldArrays = 100000;
 
-/// Points per cell of the VTK cell types the surface filter handles; -1 for
-/// a variable-size type (its least count in `minimum`); -2 for a type
-/// refused (polyhedra, higher-order Lagrange and Bezier cells).
-int FixedPoints(long long type, int& minimum)
-{
-  minimum = 0;
-  switch (type)
-  {
-    case 0: return 0;                      // VTK_EMPTY_CELL
-    case 1: return 1;                      // VTK_VERTEX
-    case 2: minimum = 1; return -1;        // VTK_POLY_VERTEX
-    case 3: return 2;                      // VTK_LINE
-    case 4: minimum = 2; return -1;        // VTK_POLY_LINE
-    case 5: return 3;                      // VTK_TRIANGLE
-    case 6: minimum = 3; return -1;        // VTK_TRIANGLE_STRIP
-    case 7: minimum = 3; return -1;        // VTK_POLYGON
-    case 8: case 9: case 10: return 4;     // PIXEL, QUAD, TETRA
-    case 11: case 12: return 8;            // VOXEL, HEXAHEDRON
-    case 13: return 6;                     // WEDGE
-    case 14: return 5;                     // PYRAMID
-    case 15: return 10;                    // PENTAGONAL_PRISM
-    case 16: return 12;                    // HEXAGONAL_PRISM
-    case 21: return 3;                     // QUADRATIC_EDGE
-    case 22: return 6;                     // QUADRATIC_TRIANGLE
-    case 23: return 8;                     // QUADRATIC_QUAD
-    case 24: return 10;                    // QUADRATIC_TETRA
-    case 25: return 20;                    // QUADRATIC_HEXAHEDRON
-    case 26: return 15;                    // QUADRATIC_WEDGE
-    case 27: return 13;                    // QUADRATIC_PYRAMID
-    default: return -2;
-  }
-}
-
 /// The keys of a METADATA INFORMATION block, as vtkDataReader::ReadInformation
 /// reads them: each key is a "NAME n LOCATION l" line whose DATA layout
 /// depends on the type of the key VTK finds under that name (looked up here
@@ -500,18 +467,10 @@ private:
     this->Require(!this->TypesRead, "a second CELL_TYPES section");
     this->TypesRead = true;
     this->In.Values("CELL_TYPES", n, kInt, [&](long long i, long long type) {
-      int minimum = 0;
-      const int fixed = FixedPoints(type, minimum);
-      const int points = this->CellSizes[static_cast<size_t>(i)];
-      if (fixed == -2)
+      const std::string problem = CheckCellType(type, this->CellSizes[static_cast<size_t>(i)]);
+      if (!problem.empty())
       {
-        this->In.Fail("cell " + std::to_string(i) + " has type " + std::to_string(type) +
-          " (polyhedra and higher-order cells are not read)");
-      }
-      if ((fixed >= 0 && points != fixed) || (fixed == -1 && points < minimum))
-      {
-        this->In.Fail("cell " + std::to_string(i) + " of type " + std::to_string(type) +
-          " has " + std::to_string(points) + " points");
+        this->In.Fail("cell " + std::to_string(i) + ": " + problem);
       }
     });
   }
@@ -664,6 +623,58 @@ private:
 };
 
 } // namespace
+
+/// Points per cell of the VTK cell types the surface filter handles; -1 for
+/// a variable-size type (its least count in `minimum`); -2 for a type
+/// refused (polyhedra, higher-order Lagrange and Bezier cells).
+namespace
+{
+int FixedPoints(long long type, int& minimum)
+{
+  minimum = 0;
+  switch (type)
+  {
+    case 0: return 0;                      // VTK_EMPTY_CELL
+    case 1: return 1;                      // VTK_VERTEX
+    case 2: minimum = 1; return -1;        // VTK_POLY_VERTEX
+    case 3: return 2;                      // VTK_LINE
+    case 4: minimum = 2; return -1;        // VTK_POLY_LINE
+    case 5: return 3;                      // VTK_TRIANGLE
+    case 6: minimum = 3; return -1;        // VTK_TRIANGLE_STRIP
+    case 7: minimum = 3; return -1;        // VTK_POLYGON
+    case 8: case 9: case 10: return 4;     // PIXEL, QUAD, TETRA
+    case 11: case 12: return 8;            // VOXEL, HEXAHEDRON
+    case 13: return 6;                     // WEDGE
+    case 14: return 5;                     // PYRAMID
+    case 15: return 10;                    // PENTAGONAL_PRISM
+    case 16: return 12;                    // HEXAGONAL_PRISM
+    case 21: return 3;                     // QUADRATIC_EDGE
+    case 22: return 6;                     // QUADRATIC_TRIANGLE
+    case 23: return 8;                     // QUADRATIC_QUAD
+    case 24: return 10;                    // QUADRATIC_TETRA
+    case 25: return 20;                    // QUADRATIC_HEXAHEDRON
+    case 26: return 15;                    // QUADRATIC_WEDGE
+    case 27: return 13;                    // QUADRATIC_PYRAMID
+    default: return -2;
+  }
+}
+
+} // namespace
+
+std::string CheckCellType(long long type, long long points)
+{
+  int minimum = 0;
+  const int fixed = FixedPoints(type, minimum);
+  if (fixed == -2)
+  {
+    return "type " + std::to_string(type) + " (polyhedra and higher-order cells are not read)";
+  }
+  if ((fixed >= 0 && points != fixed) || (fixed == -1 && points < minimum))
+  {
+    return "type " + std::to_string(type) + " with " + std::to_string(points) + " points";
+  }
+  return {};
+}
 
 void PrecheckLegacyVtk(const std::string& path)
 {

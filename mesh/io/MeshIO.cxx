@@ -405,6 +405,7 @@ vtkPolyData* ReadMesh(const std::string& path)
       throw MeshError("cannot read '" + path + "': not a VTK XML PolyData file (malformed, "
                                                "truncated or another type)");
     }
+    PrecheckXmlVtk(path, "PolyData");
     mesh = ReadWith<vtkXMLPolyDataReader>(path);
   }
   else if (ext == "ply")
@@ -449,6 +450,7 @@ vtkPolyData* ReadMesh(const std::string& path)
         throw MeshError("cannot read '" + path + "': not a VTK XML UnstructuredGrid file "
                                                  "(malformed, truncated or another type)");
       }
+      PrecheckXmlVtk(path, "UnstructuredGrid");
       reader->SetFileName(path.c_str());
       reader->Update();
       if (reader->GetErrorCode() != 0)

@@ -33,4 +33,15 @@ void PrecheckStl(const std::string& path);
 /// claiming 2e9 points: both found by fuzz/MeshReaderFuzzer).
 void PrecheckLegacyVtk(const std::string& path);
 
+/// VTK XML .vtp/.vtu (XmlVtkCheck.cxx): well-formed XML of the `type`
+/// ("PolyData", "UnstructuredGrid"); every DataArray's header (size or
+/// compression blocks) matches its piece and the bytes present; offsets,
+/// connectivity and cell types decoded and consistent.
+void PrecheckXmlVtk(const std::string& path, const std::string& type);
+
+/// Empty when a VTK cell of `type` may have `points` points; otherwise what
+/// is wrong (a fixed-size type with another count, or a type not read:
+/// polyhedra and higher-order cells).
+std::string CheckCellType(long long type, long long points);
+
 } // namespace shadinglab

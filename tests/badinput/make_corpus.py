@@ -110,6 +110,40 @@ write('stl_nan.stl', 'solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nver
 # XML.
 write('vtp_garbage.vtp', '<VTKFile type="PolyData"><PolyData><Piece NumberOfPoints="3"')
 write('vtu_garbage.vtu', 'not xml at all')
+# VTK XML: the block headers VTK's XML reader trusts (sizes, compression
+# blocks), and the cell arrays it sizes its allocations from.
+def vtp_ascii(offsets, connectivity, points='0 0 0 1 0 0 0 1 0', n_points=3, n_polys=1):
+    return ('<?xml version="1.0"?>\n<VTKFile type="PolyData" version="1.0" byte_order="LittleEndian">'
+            '<PolyData><Piece NumberOfPoints="%d" NumberOfPolys="%d"><Points>'
+            '<DataArray type="Float32" NumberOfComponents="3" format="ascii">%s</DataArray></Points>'
+            '<Polys><DataArray type="Int64" Name="connectivity" format="ascii">%s</DataArray>'
+            '<DataArray type="Int64" Name="offsets" format="ascii">%s</DataArray></Polys>'
+            '</Piece></PolyData></VTKFile>\n' % (n_points, n_polys, points, connectivity, offsets))
+
+
+write('vtp_index_out_of_range.vtp', vtp_ascii('3', '0 1 7'))
+write('vtp_offsets_decreasing.vtp', vtp_ascii('3 2', '0 1 2', n_polys=2))
+write('vtp_last_offset_huge.vtp', vtp_ascii('2000000000', '0 1 2'))
+write('vtp_too_few_points.vtp', vtp_ascii('3', '0 1 2', points='0 0 0 1 0'))
+
+
+def vtp_appended(points_header, payload, compressor=''):
+    head = ('<?xml version="1.0"?>\n<VTKFile type="PolyData" version="1.0" byte_order="LittleEndian" '
+            'header_type="UInt32"%s><PolyData><Piece NumberOfPoints="3" NumberOfPolys="1"><Points>'
+            '<DataArray type="Float32" NumberOfComponents="3" format="appended" offset="0"/>'
+            '</Points><Polys><DataArray type="Int64" Name="connectivity" format="ascii">0 1 2</DataArray>'
+            '<DataArray type="Int64" Name="offsets" format="ascii">3</DataArray></Polys>'
+            '</Piece></PolyData><AppendedData encoding="raw">\n_' % compressor)
+    return head.encode() + points_header + payload + b'\n</AppendedData></VTKFile>\n'
+
+
+coords = struct.pack('<9f', 0, 0, 0, 1, 0, 0, 0, 1, 0)
+write('vtp_size_header_too_large.vtp', vtp_appended(struct.pack('<I', 4000000000), coords))
+write('vtp_truncated_appended.vtp', vtp_appended(struct.pack('<I', 36), coords[:20]))
+write('vtp_compression_blocks_huge.vtp', vtp_appended(struct.pack('<4I', 0x7fffffff, 32768, 36, 30),
+                                                       b'x' * 30, ' compressor="vtkZLibDataCompressor"'))
+write('vtp_compressed_garbage.vtp', vtp_appended(struct.pack('<4I', 1, 32768, 36, 30), b'x' * 30,
+                                                  ' compressor="vtkZLibDataCompressor"'))
 # Random bytes with every extension.
 noise = bytes((i * 131 + 7) % 256 for i in range(512))
 for ext in ['obj', 'off', 'ply', 'vtk', 'stl', 'vtp', 'vtu']:

@@ -32,6 +32,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 namespace
 {
 
@@ -108,9 +110,13 @@ std::vector<Case> Cases()
   return cases;
 }
 
+/// A file name of its own per test and process: ctest runs the tests of
+/// this suite in parallel processes, which must not share a file.
 std::string Write(const Case& c, bool binary, int version)
 {
-  const std::string path = ::testing::TempDir() + "/shadinglab_legacy_" + c.name +
+  const std::string path = ::testing::TempDir() + "/shadinglab_legacy_" +
+    ::testing::UnitTest::GetInstance()->current_test_info()->name() + "_" +
+    std::to_string(getpid()) + "_" + c.name +
     (binary ? "_binary_" : "_ascii_") + std::to_string(version) + ".vtk";
   vtkNew<vtkDataSetWriter> writer;
   writer->SetInputData(c.data);
@@ -219,7 +225,8 @@ TEST(LegacyVtkTest, InconsistentSectionsAreNamed)
   };
   for (const auto& c : cases)
   {
-    const std::string path = ::testing::TempDir() + "/shadinglab_legacy_bad.vtk";
+    const std::string path =
+      ::testing::TempDir() + "/shadinglab_legacy_bad_" + std::to_string(getpid()) + ".vtk";
     std::ofstream(path, std::ios::binary | std::ios::trunc) << head << c.tail;
     std::string error;
     try

@@ -25,6 +25,8 @@
 #include <iterator>
 #include <string>
 
+#include <unistd.h>
+
 namespace
 {
 
@@ -53,7 +55,9 @@ template <typename Writer>
 std::string Write(vtkDataObject* data, const std::string& name, Mode mode, int compressor,
   bool header64)
 {
-  const std::string path = ::testing::TempDir() + "/shadinglab_xml_" + name;
+  // Own names per process: ctest runs these tests in parallel processes.
+  const std::string path = ::testing::TempDir() + "/shadinglab_xml_" +
+    std::to_string(getpid()) + "_" + name;
   vtkNew<Writer> writer;
   writer->SetInputData(data);
   writer->SetFileName(path.c_str());

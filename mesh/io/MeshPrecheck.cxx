@@ -58,6 +58,59 @@ bool ParseReal(const std::string& token, double& value)
   return end == token.c_str() + token.size() && end != token.c_str();
 }
 
+struct ObjAttributeIndices
+{
+  long long texture = 0, normal = 0; // the largest positive index of each
+};
+
+/// The form of an OBJ element vertex: "v", "v/t", "v//n" or "v/t/n".
+std::string ObjVertexForm(const std::string& token, const std::string& path, long long line)
+{
+  const size_t first = token.find('/');
+  if (first == std::string::npos)
+  {
+    return "v";
+  }
+  const size_t second = token.find('/', first + 1);
+  const bool texture = second == std::string::npos ? first + 1 < token.size() : second > first + 1;
+  const bool normal = second != std::string::npos && second + 1 < token.size();
+  if ((!texture && !normal) || (second != std::string::npos && !normal) ||
+    token.find('/', second == std::string::npos ? token.size() : second + 1) !=
+      std::string::npos)
+  {
+    throw MeshError(Where(path, line) + ": '" + token +
+      "' is not v, v/vt, v//vn or v/vt/vn");
+  }
+  return texture ? (normal ? "v/t/n" : "v/t") : "v//n";
+}
+
+/// The vt and vn indices after a vertex index's first '/': non-zero,
+/// relative ones within the lines read so far; positive ones are checked
+/// against the totals at the end (OBJ allows forward references).
+void CheckObjAttributeIndices(const std::string& rest, long long textures, long long normals,
+  const std::string& path, long long line, ObjAttributeIndices& largest)
+{
+  const size_t slash = rest.find('/');
+  const std::string parts[2] = { rest.substr(0, slash),
+    slash == std::string::npos ? std::string() : rest.substr(slash + 1) };
+  const long long counts[2] = { textures, normals };
+  long long* largestOf[2] = { &largest.texture, &largest.normal };
+  for (int k = 0; k < 2; ++k)
+  {
+    if (parts[k].empty())
+    {
+      continue;
+    }
+    long long index = 0;
+    if (!ParseInteger(parts[k], index) || index == 0 || (index < 0 && -index > counts[k]))
+    {
+      throw MeshError(Where(path, line) + ": " + (k == 0 ? "texture coordinate" : "normal") +
+        " index '" + parts[k] + "' out of range");
+    }
+    *largestOf[k] = std::max(*largestOf[k], index);
+  }
+}
+
 std::ifstream Open(const std::string& path, std::ios::openmode mode = std::ios::in)
 {
   std::ifstream in(path, mode);
@@ -76,6 +129,8 @@ void PrecheckObj(const std::string& path)
   std::string line;
   long long number = 0, vertices = 0;
   long long largestIndex = 0, largestIndexLine = 0;
+  long long textureCoordinates = 0, normals = 0;
+  ObjAttributeIndices largestAttribute;
   bool firstHasColour = false;
   while (std::getline(in, line))
   {
@@ -134,14 +189,47 @@ void PrecheckObj(const std::string& path)
       }
       ++vertices;
     }
+    else if (keyword == "vt" || keyword == "vn")
+    {
+      // VTK reads two texture coordinates or three normal components.
+      const int needed = keyword == "vt" ? 2 : 3;
+      std::string token;
+      for (int c = 0; c < needed; ++c)
+      {
+        double value = 0;
+        if (!(tokens >> token) || !ParseReal(token, value) || !std::isfinite(value))
+        {
+          throw MeshError(Where(path, number) + ": a '" + keyword + "' needs " +
+            std::to_string(needed) + " finite numbers");
+        }
+      }
+      ++(keyword == "vt" ? textureCoordinates : normals);
+    }
     else if (keyword == "f" || keyword == "l" || keyword == "p")
     {
       int count = 0;
-      std::string token;
+      std::string token, form;
       while (tokens >> token)
       {
+        // v, v/vt, v//vn or v/vt/vn, the same form for every vertex of the
+        // element, each index within what it refers to: VTK's reader
+        // dereferenced a null texture-coordinate array for "2/" (a
+        // trailing slash and no vt lines: fuzz/MeshReaderFuzzer).
+        const size_t slash = token.find('/');
+        const std::string thisForm = ObjVertexForm(token, path, number);
+        if (count > 0 && thisForm != form)
+        {
+          throw MeshError(Where(path, number) + ": '" + token +
+            "' mixes index forms within one element");
+        }
+        form = thisForm;
+        if (slash != std::string::npos)
+        {
+          CheckObjAttributeIndices(token.substr(slash + 1), textureCoordinates, normals, path,
+            number, largestAttribute);
+        }
         long long index = 0;
-        if (!ParseInteger(token.substr(0, token.find('/')), index))
+        if (!ParseInteger(token.substr(0, slash), index))
         {
           throw MeshError(Where(path, number) + ": '" + token + "' is not a vertex index");
         }
@@ -168,6 +256,13 @@ void PrecheckObj(const std::string& path)
           std::to_string(needed) + " vertices (has " + std::to_string(count) + ")");
       }
     }
+  }
+  if (largestAttribute.texture > textureCoordinates || largestAttribute.normal > normals)
+  {
+    throw MeshError("'" + path + "': a face refers to texture coordinate " +
+      std::to_string(largestAttribute.texture) + " or normal " +
+      std::to_string(largestAttribute.normal) + " beyond the file's " +
+      std::to_string(textureCoordinates) + " vt and " + std::to_string(normals) + " vn lines");
   }
   if (largestIndex > vertices)
   {

@@ -57,6 +57,11 @@ write('ply_nan.ply', PLY_HEAD + '0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n')
 write('ply_unknown_header_line.ply', PLY_HEAD.replace('property list', 'rop0perty list') + '0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n')
 write('ply_last_row_unterminated.ply', PLY_HEAD + '0 0 0\n1 0 0\n0 1 0\n3 0 1 2')
 write('ply_nul_in_header.ply', PLY_HEAD.replace('element face 1', 'element face\0\0 1') + '0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n')
+# Found by fuzz/MeshReaderFuzzer: "2/" (a slash and no texture index) made
+# VTK's OBJ reader dereference its null texture-coordinate array.
+write('obj_trailing_slash.obj', 'f 1 2/ 3\n' + TRI)
+write('obj_texture_index_out_of_range.obj', TRI + 'vt 0 0\nf 1/1 2/2 3/1\n')
+write('obj_mixed_index_forms.obj', TRI + 'vt 0 0\nf 1/1 2 3\n')
 binary = ('ply\nformat binary_little_endian 1.0\nelement vertex 2000000000\nproperty float x\n'
           'property float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n')
 write('ply_binary_huge_count.ply', binary.encode() + struct.pack('<9f', 0, 0, 0, 1, 0, 0, 0, 1, 0))

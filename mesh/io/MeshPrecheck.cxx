@@ -5,6 +5,7 @@
 
 #include <cerrno>
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -24,6 +25,11 @@ namespace
 /// mesh this tool renders in its 24 GiB budget; a larger count is a corrupt
 /// header.
 constexpr long long kMaxElements = (1LL << 31) - 1;
+
+/// The share of non-text bytes among the first 256 from which VTK's STL
+/// reader takes a file for binary (vtksys::SystemTools::DetectFileType's
+/// default percent_bin, 0.05).
+constexpr double kStlBinaryFraction = 0.05;
 
 /// Largest polygon accepted in a PLY face list: 1e6 vertices per face is
 /// far beyond any real polygon and keeps a corrupt count from allocating.
@@ -622,17 +628,35 @@ void PrecheckStl(const std::string& path)
   in.seekg(0, std::ios::end);
   const long long size = static_cast<long long>(in.tellg());
   in.seekg(0);
-  if (size >= 84)
+  // VTK decides ASCII or binary the way vtksys::SystemTools::DetectFileType
+  // does: binary when 5 % or more of the first 256 bytes are neither
+  // printable nor white space. Decide the same way, or a file we checked as
+  // ASCII is read as binary with a header count of billions (an 11 GB
+  // allocation: fuzz/MeshReaderFuzzer).
   {
-    unsigned char header[84];
-    in.read(reinterpret_cast<char*>(header), 84);
-    const long long count = ReadInteger(header + 80, 4, false, false);
-    if (84 + 50 * count == size)
+    char head[256];
+    in.read(head, sizeof head);
+    const std::streamsize n = in.gcount();
+    int binary = 0;
+    for (std::streamsize k = 0; k < n; ++k)
     {
+      const int c = static_cast<unsigned char>(head[k]);
+      binary += !std::isprint(c) && !std::isspace(c);
+    }
+    in.clear();
+    in.seekg(0);
+    if (n > 0 && static_cast<double>(binary) / static_cast<double>(n) >= kStlBinaryFraction)
+    {
+      unsigned char header[84];
+      if (size < 84 || !in.read(reinterpret_cast<char*>(header), 84) ||
+        84 + 50 * ReadInteger(header + 80, 4, false, false) != size)
+      {
+        throw MeshError("malformed STL '" + path + "': a binary STL of " + std::to_string(size) +
+          " bytes whose triangle count does not match its size (truncated or miscounted?)");
+      }
       return; // a consistent binary STL
     }
   }
-  in.seekg(0);
   std::string first;
   in >> first;
   if (first != "solid")

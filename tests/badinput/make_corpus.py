@@ -111,6 +111,9 @@ write('stl_ascii_truncated.stl', 'solid t\nfacet normal 0 0 1\nouter loop\nverte
 tri = struct.pack('<12fH', 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0)
 write('stl_binary_count_too_large.stl', b'\0' * 80 + struct.pack('<I', 1000) + tri)
 write('stl_binary_count_too_small.stl', b'\0' * 80 + struct.pack('<I', 1) + tri * 3)
+# Found by fuzz/MeshReaderFuzzer: text that reads as an empty ASCII STL but
+# that VTK takes for binary (NUL bytes) with a header count of billions.
+write('stl_ascii_with_nul_bytes.stl', b'solid t\n' + b'\0' * 76 + b'\xff\xff\xff\x7f' + b'endsolid t\n')
 write('stl_nan.stl', 'solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex nan 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid t\n')
 # XML.
 write('vtp_garbage.vtp', '<VTKFile type="PolyData"><PolyData><Piece NumberOfPoints="3"')

@@ -629,8 +629,8 @@ void PrecheckStl(const std::string& path)
   const long long size = static_cast<long long>(in.tellg());
   in.seekg(0);
   // VTK decides ASCII or binary the way vtksys::SystemTools::DetectFileType
-  // does: binary when 5 % or more of the first 256 bytes are neither
-  // printable nor white space. Decide the same way, or a file we checked as
+  // does: binary when 5 % or more of the first 256 bytes are outside
+  // 0x20-0x7F, newline, carriage return and tab (a form feed is binary). Decide the same way, or a file we checked as
   // ASCII is read as binary with a header count of billions (an 11 GB
   // allocation: fuzz/MeshReaderFuzzer).
   {
@@ -641,7 +641,7 @@ void PrecheckStl(const std::string& path)
     for (std::streamsize k = 0; k < n; ++k)
     {
       const int c = static_cast<unsigned char>(head[k]);
-      binary += !std::isprint(c) && !std::isspace(c);
+      binary += !((c >= 0x20 && c <= 0x7F) || c == '\n' || c == '\r' || c == '\t');
     }
     in.clear();
     in.seekg(0);

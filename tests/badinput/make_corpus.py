@@ -114,6 +114,7 @@ write('stl_binary_count_too_small.stl', b'\0' * 80 + struct.pack('<I', 1) + tri 
 # Found by fuzz/MeshReaderFuzzer: text that reads as an empty ASCII STL but
 # that VTK takes for binary (NUL bytes) with a header count of billions.
 write('stl_ascii_with_nul_bytes.stl', b'solid t\n' + b'\0' * 76 + b'\xff\xff\xff\x7f' + b'endsolid t\n')
+write('stl_ascii_with_form_feeds.stl', b'solid t\n' + b'\x0c' * 76 + b'\xff\xff\xff\x7f' + b'endsolid t\n')
 write('stl_nan.stl', 'solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex nan 0 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid t\n')
 # XML.
 write('vtp_garbage.vtp', '<VTKFile type="PolyData"><PolyData><Piece NumberOfPoints="3"')

@@ -12,7 +12,9 @@
 
 #include "Frame.h"
 
+#include <atomic>
 #include <limits>
+#include <memory>
 
 namespace shadinglab::cpu
 {
@@ -35,6 +37,10 @@ struct RasterBuffers
   std::vector<ScreenVertex> Screen;
   std::vector<uint8_t> Behind;            ///< vertex outside the near plane
   std::vector<std::vector<int64_t>> Bins; ///< [worker * Threads + thread]: polygon ids
+  /// Vertex used by a polygon that can reach a pixel: only these are shaded
+  /// (set by several binning workers at once, hence atomic).
+  std::unique_ptr<std::atomic<uint8_t>[]> Needed;
+  int64_t NeededCapacity = 0;
 };
 
 template<typename StageT>
@@ -47,6 +53,7 @@ public:
     , Screen(buffers.Screen)
     , Behind(buffers.Behind)
     , Bins(buffers.Bins)
+    , Buffers(buffers)
   {
   }
 
@@ -54,7 +61,7 @@ public:
   /// found degenerate before any row was known.
   int64_t Run(std::vector<ThreadState>& states)
   {
-    this->ProjectVertices();
+    this->ProjectPositions();
     const int T = F.Threads;
     this->Bins.resize(static_cast<size_t>(T) * T);
     for (auto& list : this->Bins)
@@ -70,6 +77,7 @@ public:
       T,
       [&](int64_t begin, int64_t end, int worker)
       { zeroRowDegenerate[worker] = this->BinPolygons(begin, end, worker); });
+    this->ShadeVertices();
     ParallelFor(T,
       T,
       [&](int64_t b, int64_t e, int)
@@ -88,21 +96,30 @@ public:
   }
 
 private:
-  /// The vertex stage: clip coordinates, screen positions and the stage's
-  /// attributes of every vertex (in parallel).
-  void ProjectVertices()
+  /// The vertex stage, first half: clip coordinates and screen positions of
+  /// every vertex (in parallel). The stage's attributes (for Gouraud, the
+  /// whole lighting model) wait for ShadeVertices, after binning has marked
+  /// the vertices of the polygons that can reach a pixel: a mesh half
+  /// outside the view lights half its vertices.
+  void ProjectPositions()
   {
     const auto& mesh = *F.MeshData;
     const int64_t nv = mesh.NumberOfPoints();
     this->Screen.resize(static_cast<size_t>(nv));
     this->Behind.resize(static_cast<size_t>(nv));
+    if (this->Buffers.NeededCapacity < nv)
+    {
+      this->Buffers.Needed.reset(new std::atomic<uint8_t>[static_cast<size_t>(nv)]);
+      this->Buffers.NeededCapacity = nv;
+    }
+    std::atomic<uint8_t>* needed = this->Buffers.Needed.get();
     ParallelFor(nv,
       F.Threads,
       [&](int64_t b, int64_t e, int)
       {
-        float raw[kMaxAttributes] = {};
         for (int64_t v = b; v < e; ++v)
         {
+          needed[v].store(0, std::memory_order_relaxed);
           const double p[3] = {
             mesh.points[3 * v], mesh.points[3 * v + 1], mesh.points[3 * v + 2]
           };
@@ -113,8 +130,35 @@ private:
           {
             continue; // such vertices are only used through clipping
           }
+          this->ProjectVertex(clip, nullptr, this->Screen[v]);
+        }
+      });
+  }
+
+  /// The vertex stage, second half: the stage's attributes of the vertices
+  /// binning marked, scaled by the 1/w their position stored (the same
+  /// float ProjectVertex used: the image is bit-identical).
+  void ShadeVertices()
+  {
+    const std::atomic<uint8_t>* needed = this->Buffers.Needed.get();
+    ParallelFor(F.MeshData->NumberOfPoints(),
+      F.Threads,
+      [&](int64_t b, int64_t e, int)
+      {
+        float raw[kMaxAttributes] = {};
+        for (int64_t v = b; v < e; ++v)
+        {
+          if (this->Behind[v] || !needed[v].load(std::memory_order_relaxed))
+          {
+            continue;
+          }
           this->Stage.Vertex(v, raw);
-          this->ProjectVertex(clip, raw, this->Screen[v]);
+          ScreenVertex& out = this->Screen[v];
+          const float scale = out.a[kAttrInvW];
+          for (int k = 0; k < F.NumAttributes; ++k)
+          {
+            out.a[kAttrFirst + k] = raw[k] * scale;
+          }
         }
       });
   }
@@ -129,7 +173,7 @@ private:
     // 1/w is pinned to 1, so the per-pixel divide is a no-op.
     const float scale = F.Perspective ? static_cast<float>(invW) : 1.0f;
     out.a[kAttrInvW] = scale;
-    for (int k = 0; k < F.NumAttributes; ++k)
+    for (int k = 0; raw && k < F.NumAttributes; ++k)
     {
       out.a[kAttrFirst + k] = raw[k] * scale;
     }
@@ -189,12 +233,16 @@ private:
       }
       bool anyBehind = false;
       float ymin = std::numeric_limits<float>::infinity(), ymax = -ymin;
+      float xmin = ymin, xmax = -ymin, zmin = ymin;
       for (int k = 0; k < n; ++k)
       {
         const int64_t v = conn[first + k];
         anyBehind |= this->Behind[v] != 0;
         ymin = std::min(ymin, this->Screen[v].y);
         ymax = std::max(ymax, this->Screen[v].y);
+        xmin = std::min(xmin, this->Screen[v].x);
+        xmax = std::max(xmax, this->Screen[v].x);
+        zmin = std::min(zmin, this->Screen[v].a[kAttrZ]);
       }
       if (anyBehind)
       {
@@ -219,6 +267,17 @@ private:
         }
         degenerate += !(std::abs(area) * 0.5 >= kDegenerateArea);
         continue;
+      }
+      // Left, right or beyond the far plane: DrawPolygon's trivial reject
+      // (same test, same floats) would drop it without counting it, so it
+      // is not binned and its vertices need no shading.
+      if (xmax < 0 || xmin > F.Width || zmin > 1.0f)
+      {
+        continue;
+      }
+      for (int k = 0; k < n; ++k)
+      {
+        this->Buffers.Needed[conn[first + k]].store(1, std::memory_order_relaxed);
       }
       const int b0 = j0 / kBandRows, b1 = (j1 - 1) / kBandRows;
       if (b1 - b0 + 1 >= T)
@@ -431,6 +490,7 @@ private:
   std::vector<ScreenVertex>& Screen;
   std::vector<uint8_t>& Behind;
   std::vector<std::vector<int64_t>>& Bins;
+  RasterBuffers& Buffers;
 };
 
 } // namespace shadinglab::cpu

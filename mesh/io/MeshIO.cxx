@@ -220,7 +220,7 @@ vtkSmartPointer<vtkPolyData> ReadOff(const std::string& path)
   {
     mesh->GetPointData()->SetNormals(normalArray);
   }
-  if (colours)
+  if (colours && !colourValues.empty()) // no vertices, no colours (UBSan: fuzz finding)
   {
     // Colours are 0..255 integers or 0..1 reals: the largest value tells.
     const double largest = *std::max_element(colourValues.begin(), colourValues.end());

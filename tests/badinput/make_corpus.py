@@ -106,6 +106,9 @@ write('vtk_offsets_decreasing.vtk', '# vtk DataFile Version 5.1\nbad\nASCII\nDAT
       + TRI3 + 'POLYGONS 3 3\nOFFSETS vtktypeint64\n0 3 1\nCONNECTIVITY vtktypeint64\n0 1 2\n')
 write('vtk_rectilinear_without_y.vtk', '# vtk DataFile Version 4.2\nbad\nASCII\n'
       'DATASET RECTILINEAR_GRID\nDIMENSIONS 3 4 2\nX_COORDINATES 3 double\n0 0.0 0.5\n')
+# Found by fuzz/MeshReaderFuzzer: a coloured OFF without vertices (the
+# largest colour value of none).
+write('off_coloured_without_vertices.off', 'CNOFF\n0 0 2\n')
 # STL.
 write('stl_ascii_truncated.stl', 'solid t\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\n')
 tri = struct.pack('<12fH', 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, 0, 0)

@@ -116,8 +116,8 @@ std::string Write(const Case& c, bool binary, int version)
 {
   const std::string path = ::testing::TempDir() + "/shadinglab_legacy_" +
     ::testing::UnitTest::GetInstance()->current_test_info()->name() + "_" +
-    std::to_string(getpid()) + "_" + c.name +
-    (binary ? "_binary_" : "_ascii_") + std::to_string(version) + ".vtk";
+    std::to_string(getpid()) + "_" + c.name + (binary ? "_binary_" : "_ascii_") +
+    std::to_string(version) + ".vtk";
   vtkNew<vtkDataSetWriter> writer;
   writer->SetInputData(c.data);
   writer->SetFileName(path.c_str());
@@ -180,8 +180,8 @@ TEST(LegacyVtkTest, EveryTruncationIsRefusedOrValid)
       for (int cut = 0; cut < 64; ++cut)
       {
         const size_t length = whole.size() * static_cast<size_t>(cut) / 64;
-        std::ofstream(path, std::ios::binary | std::ios::trunc).write(whole.data(),
-          static_cast<std::streamsize>(length));
+        std::ofstream(path, std::ios::binary | std::ios::trunc)
+          .write(whole.data(), static_cast<std::streamsize>(length));
         try
         {
           vtkSmartPointer<vtkPolyData> mesh;
@@ -190,7 +190,8 @@ TEST(LegacyVtkTest, EveryTruncationIsRefusedOrValid)
           // Accepted: the cut must fall between two sections, where a
           // shorter file is indeed complete.
           const size_t next = whole.find_first_not_of(" \n", length);
-          EXPECT_TRUE(next < whole.size() && std::isupper(static_cast<unsigned char>(whole[next])) &&
+          EXPECT_TRUE(next < whole.size() &&
+            std::isupper(static_cast<unsigned char>(whole[next])) &&
             (length == 0 || whole[length - 1] == '\n' || whole[length] == '\n'))
             << path << " cut at " << length << ": '" << whole.substr(length, 40) << "'";
         }

@@ -51,20 +51,27 @@ enum class Mode
 
 /// Writes the sphere (.vtp) or its unstructured copy (.vtu) in one flavour;
 /// small blocks so that compressed arrays span several.
-template <typename Writer>
-std::string Write(vtkDataObject* data, const std::string& name, Mode mode, int compressor,
+template<typename Writer>
+std::string Write(vtkDataObject* data,
+  const std::string& name,
+  Mode mode,
+  int compressor,
   bool header64)
 {
   // Own names per process: ctest runs these tests in parallel processes.
-  const std::string path = ::testing::TempDir() + "/shadinglab_xml_" +
-    std::to_string(getpid()) + "_" + name;
+  const std::string path =
+    ::testing::TempDir() + "/shadinglab_xml_" + std::to_string(getpid()) + "_" + name;
   vtkNew<Writer> writer;
   writer->SetInputData(data);
   writer->SetFileName(path.c_str());
   switch (mode)
   {
-    case Mode::Ascii: writer->SetDataModeToAscii(); break;
-    case Mode::Binary: writer->SetDataModeToBinary(); break;
+    case Mode::Ascii:
+      writer->SetDataModeToAscii();
+      break;
+    case Mode::Binary:
+      writer->SetDataModeToBinary();
+      break;
     case Mode::AppendedRaw:
     case Mode::AppendedBase64:
       writer->SetDataModeToAppended();
@@ -99,8 +106,10 @@ std::string ErrorOf(const std::string& path)
   return {};
 }
 
-constexpr int kCompressors[] = { vtkXMLWriterBase::NONE, vtkXMLWriterBase::ZLIB,
-  vtkXMLWriterBase::LZ4, vtkXMLWriterBase::LZMA };
+constexpr int kCompressors[] = { vtkXMLWriterBase::NONE,
+  vtkXMLWriterBase::ZLIB,
+  vtkXMLWriterBase::LZ4,
+  vtkXMLWriterBase::LZMA };
 
 } // namespace
 
@@ -121,8 +130,8 @@ TEST(XmlVtkTest, EveryWriterFlavourIsRead)
           std::to_string(compressor) + (header64 ? "_64" : "_32");
         for (const std::string& path :
           { Write<vtkXMLPolyDataWriter>(sphere, tag + ".vtp", mode, compressor, header64),
-            Write<vtkXMLUnstructuredGridWriter>(append->GetOutput(), tag + ".vtu", mode,
-              compressor, header64) })
+            Write<vtkXMLUnstructuredGridWriter>(
+              append->GetOutput(), tag + ".vtu", mode, compressor, header64) })
         {
           SCOPED_TRACE(path);
           vtkSmartPointer<vtkPolyData> mesh;
@@ -147,16 +156,16 @@ TEST(XmlVtkTest, EveryTruncationIsRefused)
   {
     for (int compressor : kCompressors)
     {
-      const std::string path = Write<vtkXMLPolyDataWriter>(sphere, "cut.vtp", mode, compressor,
-        false);
+      const std::string path =
+        Write<vtkXMLPolyDataWriter>(sphere, "cut.vtp", mode, compressor, false);
       const std::string whole = Contents(path);
       for (int cut = 0; cut < 48; ++cut)
       {
         std::ofstream(path, std::ios::binary | std::ios::trunc)
           .write(whole.data(), static_cast<std::streamsize>(whole.size() * cut / 48));
         const std::string error = ErrorOf(path);
-        EXPECT_FALSE(error.empty()) << "mode " << static_cast<int>(mode) << " compressor "
-                                    << compressor << " cut " << cut;
+        EXPECT_FALSE(error.empty())
+          << "mode " << static_cast<int>(mode) << " compressor " << compressor << " cut " << cut;
         EXPECT_EQ(error.find('\n'), std::string::npos) << error;
       }
       std::remove(path.c_str());
@@ -172,8 +181,8 @@ TEST(XmlVtkTest, CorruptBlockHeadersAreNamed)
   auto sphere = Sphere();
   for (int compressor : kCompressors)
   {
-    const std::string path = Write<vtkXMLPolyDataWriter>(sphere, "corrupt.vtp",
-      Mode::AppendedRaw, compressor, false);
+    const std::string path =
+      Write<vtkXMLPolyDataWriter>(sphere, "corrupt.vtp", Mode::AppendedRaw, compressor, false);
     std::string bytes = Contents(path);
     const size_t data = bytes.find('_', bytes.find("<AppendedData"));
     ASSERT_NE(data, std::string::npos);
@@ -181,8 +190,8 @@ TEST(XmlVtkTest, CorruptBlockHeadersAreNamed)
     std::memcpy(&bytes[data + 1], huge, 4);
     std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
     const std::string error = ErrorOf(path);
-    EXPECT_NE(error.find(compressor == vtkXMLWriterBase::NONE ? "its header says"
-                                                              : "compression header"),
+    EXPECT_NE(
+      error.find(compressor == vtkXMLWriterBase::NONE ? "its header says" : "compression header"),
       std::string::npos)
       << error;
     std::remove(path.c_str());

@@ -47,10 +47,7 @@ using namespace legacy_vtk;
 /// boundary surface is already 1.6M quads.
 constexpr long long kMaxImplicitPoints = 1LL << 27;
 
-/// Components per tuple in a FIELD array: VTK's writer never exceeds the
-/// 9 of a tensor in practice; 1024 keeps a corrupt count from multiplying
-/// a tuple count into an allocation.
-constexpr long long kMaxComponents = 1024;
+using precheck::kMaxComponents;
 
 /// Keys in one METADATA INFORMATION block, and values of one vector key:
 /// VTK's writer stores a handful of keys with a few values each (the
@@ -95,21 +92,24 @@ void WalkInformation(Walker& in, long long keys)
       continue; // unknown to VTK too: it skips the name line only
     }
     const std::string what = std::string("INFORMATION ") + location + "::" + name;
-    auto data = [&]() {
+    auto data = [&]()
+    {
       if (in.Expect(what.c_str()).rfind("DATA", 0) != 0)
       {
         in.Fail(what + ": no DATA after the NAME line");
       }
     };
-    auto number = [&](bool integer) {
+    auto number = [&](bool integer)
+    {
       const std::string value = in.Expect(what.c_str());
       long long ignored = 0;
-      if (integer ? !Walker::ParseInt(value, ignored) : !Walker::IsReal(value))
+      if (integer ? !ParseInteger(value, ignored) : !Walker::IsReal(value))
       {
         in.Fail(what + ": '" + value + "' is not a number of the key's type");
       }
     };
-    auto length = [&]() {
+    auto length = [&]()
+    {
       const long long n = in.Count(what + " length", 0, kMaxInformationLength);
       return n;
     };
@@ -254,8 +254,8 @@ private:
       this->In.Values("POINTS", 3 * this->Points, this->In.Type("POINTS"));
       this->MetaData(3);
     }
-    else if (poly && (key == "vertices" || key == "lines" || key == "polygons" ||
-                       key == "triangle_strips"))
+    else if (poly &&
+      (key == "vertices" || key == "lines" || key == "polygons" || key == "triangle_strips"))
     {
       this->Require(this->Blocks.insert(key).second, "a second " + token + " section");
       this->Cells += this->CellBlock(token, nullptr);
@@ -352,9 +352,9 @@ private:
     long long points = 1;
     for (int axis = 0; axis < 3; ++axis)
     {
-      this->Axes[axis] = this->In.Count("DIMENSIONS", 1, kMaxCount);
+      this->Axes[axis] = this->In.Count("DIMENSIONS", 1, kMaxElementCount);
       points *= this->Axes[axis];
-      if (points > kMaxCount)
+      if (points > kMaxElementCount)
       {
         this->In.Fail("DIMENSIONS give more than 2^31 points");
       }
@@ -381,7 +381,8 @@ private:
     this->Require(this->Points >= 0, token + " before POINTS");
     const long long n = this->In.Count(token + " count");
     const long long size = this->In.Count(token + " size");
-    auto index = [&](long long value) {
+    auto index = [&](long long value)
+    {
       if (value < 0 || value >= this->Points)
       {
         this->In.Fail(token + ": point index " + std::to_string(value) + " outside [0, " +
@@ -397,23 +398,27 @@ private:
       const ValueType& offsetType = this->In.Type("OFFSETS");
       this->Require(offsetType.integer, "OFFSETS are not integers");
       long long previous = 0;
-      this->In.Values("OFFSETS", n, offsetType, [&](long long i, long long offset) {
-        if ((i == 0 && offset != 0) || offset < previous || offset > size)
+      this->In.Values("OFFSETS",
+        n,
+        offsetType,
+        [&](long long i, long long offset)
         {
-          this->In.Fail("OFFSETS value " + std::to_string(offset) + " at " + std::to_string(i) +
-            " (offsets start at 0, never decrease, and end at the connectivity size " +
-            std::to_string(size) + ")");
-        }
-        if (sizes && i > 0)
-        {
-          sizes->push_back(static_cast<int>(std::min<long long>(offset - previous, 1 << 30)));
-        }
-        previous = offset;
-      });
+          if ((i == 0 && offset != 0) || offset < previous || offset > size)
+          {
+            this->In.Fail("OFFSETS value " + std::to_string(offset) + " at " + std::to_string(i) +
+              " (offsets start at 0, never decrease, and end at the connectivity size " +
+              std::to_string(size) + ")");
+          }
+          if (sizes && i > 0)
+          {
+            sizes->push_back(static_cast<int>(std::min<long long>(offset - previous, 1 << 30)));
+          }
+          previous = offset;
+        });
       if (n > 0 && previous != size)
       {
-        this->In.Fail("OFFSETS end at " + std::to_string(previous) +
-          " but CONNECTIVITY has " + std::to_string(size) + " entries");
+        this->In.Fail("OFFSETS end at " + std::to_string(previous) + " but CONNECTIVITY has " +
+          std::to_string(size) + " entries");
       }
       this->Require(n > 0 || size == 0, token + " has connectivity but no offsets");
       if (Lower(this->In.Expect("CONNECTIVITY")) != "connectivity")
@@ -422,35 +427,39 @@ private:
       }
       const ValueType& connectivityType = this->In.Type("CONNECTIVITY");
       this->Require(connectivityType.integer, "CONNECTIVITY is not integers");
-      this->In.Values("CONNECTIVITY", size, connectivityType,
-        [&](long long, long long value) { index(value); });
+      this->In.Values(
+        "CONNECTIVITY", size, connectivityType, [&](long long, long long value) { index(value); });
       return std::max(n - 1, 0LL);
     }
     // Legacy layout: 4-byte ints in a binary file.
     long long cells = 0, remaining = 0;
-    this->In.Values(token, size, kInt, [&](long long, long long value) {
-      if (remaining > 0)
+    this->In.Values(token,
+      size,
+      kInt,
+      [&](long long, long long value)
       {
-        index(value);
-        --remaining;
-        return;
-      }
-      if (value < 0 || value > size || cells == n)
-      {
-        this->In.Fail(token + ": cell " + std::to_string(cells) + " of " + std::to_string(n) +
-          " has point count " + std::to_string(value) + " (counts and indices disagree)");
-      }
-      remaining = value;
-      ++cells;
-      if (sizes)
-      {
-        sizes->push_back(static_cast<int>(value));
-      }
-    });
+        if (remaining > 0)
+        {
+          index(value);
+          --remaining;
+          return;
+        }
+        if (value < 0 || value > size || cells == n)
+        {
+          this->In.Fail(token + ": cell " + std::to_string(cells) + " of " + std::to_string(n) +
+            " has point count " + std::to_string(value) + " (counts and indices disagree)");
+        }
+        remaining = value;
+        ++cells;
+        if (sizes)
+        {
+          sizes->push_back(static_cast<int>(value));
+        }
+      });
     if (cells != n || remaining != 0)
     {
-      this->In.Fail(token + " declares " + std::to_string(n) + " cells in " +
-        std::to_string(size) + " integers but they hold " + std::to_string(cells) +
+      this->In.Fail(token + " declares " + std::to_string(n) + " cells in " + std::to_string(size) +
+        " integers but they hold " + std::to_string(cells) +
         (remaining ? " and the last is cut short" : ""));
     }
     return n;
@@ -466,13 +475,18 @@ private:
     }
     this->Require(!this->TypesRead, "a second CELL_TYPES section");
     this->TypesRead = true;
-    this->In.Values("CELL_TYPES", n, kInt, [&](long long i, long long type) {
-      const std::string problem = CheckCellType(type, this->CellSizes[static_cast<size_t>(i)]);
-      if (!problem.empty())
+    this->In.Values("CELL_TYPES",
+      n,
+      kInt,
+      [&](long long i, long long type)
       {
-        this->In.Fail("cell " + std::to_string(i) + ": " + problem);
-      }
-    });
+        const std::string problem =
+          precheck::CheckCellType(type, this->CellSizes[static_cast<size_t>(i)]);
+        if (!problem.empty())
+        {
+          this->In.Fail("cell " + std::to_string(i) + ": " + problem);
+        }
+      });
   }
 
   /// A FIELD block; inside POINT_DATA/CELL_DATA (`tuples` >= 0) every array
@@ -488,8 +502,8 @@ private:
       {
         continue;
       }
-      const long long components = this->In.Count("components of '" + name + "'", 1,
-        kMaxComponents);
+      const long long components =
+        this->In.Count("components of '" + name + "'", 1, kMaxComponents);
       const long long n = this->In.Count("tuples of '" + name + "'");
       if (tuples >= 0 && n != tuples)
       {
@@ -512,8 +526,7 @@ private:
       const std::string rest = this->In.RestOfLine();
       components = 1;
       if (rest.find_first_not_of(" \t") != std::string::npos &&
-        (std::sscanf(rest.c_str(), "%lld", &components) != 1 || components < 1 ||
-          components > 4))
+        (std::sscanf(rest.c_str(), "%lld", &components) != 1 || components < 1 || components > 4))
       {
         this->In.Fail("SCALARS '" + name + "': component count '" + rest + "' (1 to 4)");
       }
@@ -527,29 +540,29 @@ private:
     else if (key == "color_scalars")
     {
       components = this->In.Count("COLOR_SCALARS components", 1, 4);
-      this->In.Values("COLOR_SCALARS '" + name + "'", n * components,
-        this->In.Binary ? kUnsignedChar : kFloat);
+      this->In.Values(
+        "COLOR_SCALARS '" + name + "'", n * components, this->In.Binary ? kUnsignedChar : kFloat);
     }
     else if (key == "lookup_table")
     {
       this->In.Expect("a lookup table name");
       const long long size = this->In.Count("LOOKUP_TABLE size");
-      this->In.Values("LOOKUP_TABLE", 4 * size,
-        this->In.Binary ? kUnsignedChar : kFloat);
+      this->In.Values("LOOKUP_TABLE", 4 * size, this->In.Binary ? kUnsignedChar : kFloat);
       return;
     }
     else if (key == "vectors" || key == "normals" || key == "tensors" || key == "tensors6" ||
       key == "global_ids" || key == "pedigree_ids")
     {
-      components = key == "tensors" ? 9 : key == "tensors6" ? 6 : key == "vectors" ||
-          key == "normals" ? 3 : 1;
+      components = key == "tensors"            ? 9
+        : key == "tensors6"                    ? 6
+        : key == "vectors" || key == "normals" ? 3
+                                               : 1;
       this->In.Values(token + " '" + name + "'", n * components, this->In.Type(token));
     }
     else if (key == "texture_coordinates")
     {
       components = this->In.Count("TEXTURE_COORDINATES dimension", 1, 3);
-      this->In.Values("TEXTURE_COORDINATES '" + name + "'", n * components,
-        this->In.Type(token));
+      this->In.Values("TEXTURE_COORDINATES '" + name + "'", n * components, this->In.Type(token));
     }
     else
     {
@@ -623,58 +636,6 @@ private:
 };
 
 } // namespace
-
-/// Points per cell of the VTK cell types the surface filter handles; -1 for
-/// a variable-size type (its least count in `minimum`); -2 for a type
-/// refused (polyhedra, higher-order Lagrange and Bezier cells).
-namespace
-{
-int FixedPoints(long long type, int& minimum)
-{
-  minimum = 0;
-  switch (type)
-  {
-    case 0: return 0;                      // VTK_EMPTY_CELL
-    case 1: return 1;                      // VTK_VERTEX
-    case 2: minimum = 1; return -1;        // VTK_POLY_VERTEX
-    case 3: return 2;                      // VTK_LINE
-    case 4: minimum = 2; return -1;        // VTK_POLY_LINE
-    case 5: return 3;                      // VTK_TRIANGLE
-    case 6: minimum = 3; return -1;        // VTK_TRIANGLE_STRIP
-    case 7: minimum = 3; return -1;        // VTK_POLYGON
-    case 8: case 9: case 10: return 4;     // PIXEL, QUAD, TETRA
-    case 11: case 12: return 8;            // VOXEL, HEXAHEDRON
-    case 13: return 6;                     // WEDGE
-    case 14: return 5;                     // PYRAMID
-    case 15: return 10;                    // PENTAGONAL_PRISM
-    case 16: return 12;                    // HEXAGONAL_PRISM
-    case 21: return 3;                     // QUADRATIC_EDGE
-    case 22: return 6;                     // QUADRATIC_TRIANGLE
-    case 23: return 8;                     // QUADRATIC_QUAD
-    case 24: return 10;                    // QUADRATIC_TETRA
-    case 25: return 20;                    // QUADRATIC_HEXAHEDRON
-    case 26: return 15;                    // QUADRATIC_WEDGE
-    case 27: return 13;                    // QUADRATIC_PYRAMID
-    default: return -2;
-  }
-}
-
-} // namespace
-
-std::string CheckCellType(long long type, long long points)
-{
-  int minimum = 0;
-  const int fixed = FixedPoints(type, minimum);
-  if (fixed == -2)
-  {
-    return "type " + std::to_string(type) + " (polyhedra and higher-order cells are not read)";
-  }
-  if ((fixed >= 0 && points != fixed) || (fixed == -1 && points < minimum))
-  {
-    return "type " + std::to_string(type) + " with " + std::to_string(points) + " points";
-  }
-  return {};
-}
 
 void PrecheckLegacyVtk(const std::string& path)
 {

@@ -8,6 +8,7 @@
 #pragma once
 
 #include "MeshIO.h"
+#include "PrecheckCommon.h"
 
 #include <algorithm>
 #include <cctype>
@@ -27,9 +28,8 @@ namespace legacy_vtk
 /// the rest read as the next keyword, so the walk would no longer match.
 constexpr size_t kMaxTokenLength = 255;
 
-/// Largest count accepted for points, cells or tuples: VTK's legacy reader
-/// keeps several of them in int, so 2^31 - 1 is the most it can address.
-constexpr long long kMaxCount = (1LL << 31) - 1;
+using precheck::kMaxElementCount;
+using precheck::ParseInteger;
 
 struct ValueType
 {
@@ -40,18 +40,29 @@ struct ValueType
 
 /// The numeric types vtkDataReader::ReadArray reads, with their size in a
 /// binary file (big-endian; "long" is 8 bytes on LP64 Linux).
-constexpr ValueType kValueTypes[] = { { "unsigned_char", 1, true }, { "char", 1, true },
-  { "signed_char", 1, true }, { "unsigned_short", 2, true }, { "short", 2, true },
-  { "unsigned_int", 4, true }, { "int", 4, true }, { "unsigned_long", 8, true },
-  { "long", 8, true }, { "vtktypeint64", 8, true }, { "vtktypeuint64", 8, true },
-  { "vtkidtype", 8, true }, { "float", 4, false }, { "double", 8, false } };
+constexpr ValueType kValueTypes[] = { { "unsigned_char", 1, true },
+  { "char", 1, true },
+  { "signed_char", 1, true },
+  { "unsigned_short", 2, true },
+  { "short", 2, true },
+  { "unsigned_int", 4, true },
+  { "int", 4, true },
+  { "unsigned_long", 8, true },
+  { "long", 8, true },
+  { "vtktypeint64", 8, true },
+  { "vtktypeuint64", 8, true },
+  { "vtkidtype", 8, true },
+  { "float", 4, false },
+  { "double", 8, false } };
 constexpr const ValueType& kUnsignedChar = kValueTypes[0];
 constexpr const ValueType& kInt = kValueTypes[6];
 constexpr const ValueType& kFloat = kValueTypes[12];
 
 inline std::string Lower(std::string s)
 {
-  std::transform(s.begin(), s.end(), s.begin(),
+  std::transform(s.begin(),
+    s.end(),
+    s.begin(),
     [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return s;
 }
@@ -118,8 +129,8 @@ public:
       const int c = this->Get();
       if (c == '\0' || token.size() == kMaxTokenLength)
       {
-        this->Fail(c == '\0' ? "a NUL byte in a keyword or value"
-                             : "a token longer than 255 characters");
+        this->Fail(
+          c == '\0' ? "a NUL byte in a keyword or value" : "a token longer than 255 characters");
       }
       token.push_back(static_cast<char>(c));
     }
@@ -172,11 +183,11 @@ public:
     return line;
   }
 
-  long long Count(const std::string& what, long long low = 0, long long high = kMaxCount)
+  long long Count(const std::string& what, long long low = 0, long long high = kMaxElementCount)
   {
     const std::string token = this->Expect(what.c_str());
     long long value = 0;
-    if (!ParseInt(token, value) || value < low || value > high)
+    if (!ParseInteger(token, value) || value < low || value > high)
     {
       this->Fail(what + " '" + token + "' (an integer in [" + std::to_string(low) + ", " +
         std::to_string(high) + "] expected)");
@@ -201,7 +212,7 @@ public:
 
   /// `count` values of `type`. In a binary file the block follows the rest
   /// of the header line; `visit` sees each value when it is an integer.
-  template <typename Visit>
+  template<typename Visit>
   void Values(const std::string& what, long long count, const ValueType& type, Visit visit)
   {
     if (this->Binary)
@@ -226,7 +237,7 @@ public:
         {
           item[b] = static_cast<unsigned char>(this->Get());
         }
-        visit(i, BigEndian(item, type.size, type.name[0] != 'u'));
+        visit(i, precheck::ReadInteger(item, type.size, type.name[0] != 'u', true));
       }
       return;
     }
@@ -248,10 +259,9 @@ public:
       if (type.integer)
       {
         long long value = 0;
-        if (!ParseInt(token, value))
+        if (!ParseInteger(token, value))
         {
-          this->Fail(what + ": value " + std::to_string(i) + " '" + token +
-            "' is not an integer");
+          this->Fail(what + ": value " + std::to_string(i) + " '" + token + "' is not an integer");
         }
         visit(i, value);
       }
@@ -265,25 +275,6 @@ public:
   void Values(const std::string& what, long long count, const ValueType& type)
   {
     this->Values(what, count, type, [](long long, long long) {});
-  }
-
-  static bool ParseInt(const std::string& token, long long& value)
-  {
-    size_t i = token[0] == '+' || token[0] == '-' ? 1 : 0;
-    if (i == token.size() || token.size() > 20)
-    {
-      return false;
-    }
-    for (size_t k = i; k < token.size(); ++k)
-    {
-      if (!std::isdigit(static_cast<unsigned char>(token[k])))
-      {
-        return false;
-      }
-    }
-    errno = 0;
-    value = std::strtoll(token.c_str(), nullptr, 10);
-    return errno == 0;
   }
 
   /// What `istream >> double` reads whole: [+-] digits [. digits] [e [+-] digits].
@@ -324,20 +315,6 @@ public:
     return i == t.size();
   }
 
-  static long long BigEndian(const unsigned char* p, int size, bool isSigned)
-  {
-    unsigned long long v = 0;
-    for (int b = 0; b < size; ++b)
-    {
-      v = (v << 8) | p[b];
-    }
-    if (isSigned && size < 8 && (v >> (8 * size - 1)) != 0)
-    {
-      v |= ~0ULL << (8 * size);
-    }
-    return static_cast<long long>(v);
-  }
-
   std::string Path;
   FILE* File = nullptr;
   std::vector<char> Buffer;
@@ -354,7 +331,8 @@ private:
       {
         return;
       }
-      const long long step = std::min<long long>(bytes, static_cast<long long>(this->Length - this->Pos));
+      const long long step =
+        std::min<long long>(bytes, static_cast<long long>(this->Length - this->Pos));
       this->Pos += static_cast<size_t>(step);
       bytes -= step;
     }

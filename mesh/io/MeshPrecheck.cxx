@@ -2,6 +2,7 @@
 #include "MeshPrecheck.h"
 
 #include "MeshIO.h"
+#include "PrecheckCommon.h"
 
 #include <cerrno>
 #include <algorithm>
@@ -20,11 +21,9 @@ namespace shadinglab
 namespace
 {
 
-/// Largest element count accepted in a header: 2^31 - 1 elements is the
-/// largest that vtkIdType-indexed VTK arrays of ints address, and beyond any
-/// mesh this tool renders in its 24 GiB budget; a larger count is a corrupt
-/// header.
-constexpr long long kMaxElements = (1LL << 31) - 1;
+using precheck::kMaxElementCount;
+using precheck::ParseInteger;
+using precheck::ReadInteger;
 
 /// The share of non-text bytes among the first 256 from which VTK's STL
 /// reader takes a file for binary (vtksys::SystemTools::DetectFileType's
@@ -40,19 +39,6 @@ std::string Where(const std::string& path, long long line)
   return "'" + path + "' line " + std::to_string(line);
 }
 
-bool ParseInteger(const std::string& token, long long& value)
-{
-  if (token.empty())
-  {
-    return false;
-  }
-  errno = 0;
-  char* end = nullptr;
-  value = std::strtoll(token.c_str(), &end, 10);
-  // The whole token: an embedded NUL would end c_str() early (fuzzer find).
-  return errno == 0 && end == token.c_str() + token.size() && end != token.c_str();
-}
-
 bool ParseReal(const std::string& token, double& value)
 {
   if (token.empty())
@@ -64,57 +50,51 @@ bool ParseReal(const std::string& token, double& value)
   return end == token.c_str() + token.size() && end != token.c_str();
 }
 
-struct ObjAttributeIndices
+/// An OBJ element vertex split at its slashes: v, v/vt, v//vn or v/vt/vn.
+struct ObjVertexRef
 {
-  long long texture = 0, normal = 0; // the largest positive index of each
+  std::string parts[3]; ///< vertex, texture coordinate, normal (may be empty)
+  int slashes = 0;
+
+  /// "v", "v/t", "v//n" or "v/t/n": every vertex of an element has one form.
+  std::string Form() const
+  {
+    if (this->slashes == 0)
+    {
+      return "v";
+    }
+    return this->parts[1].empty() ? "v//n" : (this->parts[2].empty() ? "v/t" : "v/t/n");
+  }
 };
 
-/// The form of an OBJ element vertex: "v", "v/t", "v//n" or "v/t/n".
-std::string ObjVertexForm(const std::string& token, const std::string& path, long long line)
+ObjVertexRef SplitObjVertex(const std::string& token, const std::string& path, long long line)
 {
-  const size_t first = token.find('/');
-  if (first == std::string::npos)
+  ObjVertexRef ref;
+  size_t begin = 0;
+  for (size_t slash = token.find('/'); slash != std::string::npos; slash = token.find('/', begin))
   {
-    return "v";
-  }
-  const size_t second = token.find('/', first + 1);
-  const bool texture = second == std::string::npos ? first + 1 < token.size() : second > first + 1;
-  const bool normal = second != std::string::npos && second + 1 < token.size();
-  if ((!texture && !normal) || (second != std::string::npos && !normal) ||
-    token.find('/', second == std::string::npos ? token.size() : second + 1) !=
-      std::string::npos)
-  {
-    throw MeshError(Where(path, line) + ": '" + token +
-      "' is not v, v/vt, v//vn or v/vt/vn");
-  }
-  return texture ? (normal ? "v/t/n" : "v/t") : "v//n";
-}
-
-/// The vt and vn indices after a vertex index's first '/': non-zero,
-/// relative ones within the lines read so far; positive ones are checked
-/// against the totals at the end (OBJ allows forward references).
-void CheckObjAttributeIndices(const std::string& rest, long long textures, long long normals,
-  const std::string& path, long long line, ObjAttributeIndices& largest)
-{
-  const size_t slash = rest.find('/');
-  const std::string parts[2] = { rest.substr(0, slash),
-    slash == std::string::npos ? std::string() : rest.substr(slash + 1) };
-  const long long counts[2] = { textures, normals };
-  long long* largestOf[2] = { &largest.texture, &largest.normal };
-  for (int k = 0; k < 2; ++k)
-  {
-    if (parts[k].empty())
+    if (ref.slashes == 2)
     {
-      continue;
+      ref.slashes = 3; // too many
+      break;
     }
-    long long index = 0;
-    if (!ParseInteger(parts[k], index) || index == 0 || (index < 0 && -index > counts[k]))
-    {
-      throw MeshError(Where(path, line) + ": " + (k == 0 ? "texture coordinate" : "normal") +
-        " index '" + parts[k] + "' out of range");
-    }
-    *largestOf[k] = std::max(*largestOf[k], index);
+    ref.parts[ref.slashes++] = token.substr(begin, slash - begin);
+    begin = slash + 1;
   }
+  if (ref.slashes < 3)
+  {
+    ref.parts[ref.slashes] = token.substr(begin);
+  }
+  // A slash must be followed by an index: "2/" and "2/1/" are not OBJ
+  // ("2/" made VTK's reader dereference a null texture-coordinate array:
+  // fuzz/MeshReaderFuzzer); "2//" names neither.
+  const bool ok = ref.slashes <= 2 && !ref.parts[ref.slashes].empty() &&
+    !(ref.slashes == 2 && ref.parts[1].empty() && ref.parts[2].empty());
+  if (!ok)
+  {
+    throw MeshError(Where(path, line) + ": '" + token + "' is not v, v/vt, v//vn or v/vt/vn");
+  }
+  return ref;
 }
 
 std::ifstream Open(const std::string& path, std::ios::openmode mode = std::ios::in)
@@ -136,7 +116,7 @@ void PrecheckObj(const std::string& path)
   long long number = 0, vertices = 0;
   long long largestIndex = 0, largestIndexLine = 0;
   long long textureCoordinates = 0, normals = 0;
-  ObjAttributeIndices largestAttribute;
+  long long largestTexture = 0, largestNormal = 0; // largest positive vt, vn indices
   bool firstHasColour = false;
   while (std::getline(in, line))
   {
@@ -217,25 +197,35 @@ void PrecheckObj(const std::string& path)
       std::string token, form;
       while (tokens >> token)
       {
-        // v, v/vt, v//vn or v/vt/vn, the same form for every vertex of the
-        // element, each index within what it refers to: VTK's reader
-        // dereferenced a null texture-coordinate array for "2/" (a
-        // trailing slash and no vt lines: fuzz/MeshReaderFuzzer).
-        const size_t slash = token.find('/');
-        const std::string thisForm = ObjVertexForm(token, path, number);
-        if (count > 0 && thisForm != form)
+        const ObjVertexRef ref = SplitObjVertex(token, path, number);
+        if (count > 0 && ref.Form() != form)
         {
           throw MeshError(Where(path, number) + ": '" + token +
             "' mixes index forms within one element");
         }
-        form = thisForm;
-        if (slash != std::string::npos)
+        form = ref.Form();
+        // vt and vn indices: non-zero, relative ones within the lines read
+        // so far; positive ones against the totals at the end (OBJ allows
+        // forward references).
+        for (int k = 1; k <= 2; ++k)
         {
-          CheckObjAttributeIndices(token.substr(slash + 1), textureCoordinates, normals, path,
-            number, largestAttribute);
+          long long index = 0;
+          const long long lines = k == 1 ? textureCoordinates : normals;
+          if (ref.parts[k].empty())
+          {
+            continue;
+          }
+          if (!ParseInteger(ref.parts[k], index) || index == 0 || (index < 0 && -index > lines))
+          {
+            throw MeshError(Where(path, number) + ": " +
+              (k == 1 ? "texture coordinate" : "normal") + " index '" + ref.parts[k] +
+              "' out of range");
+          }
+          (k == 1 ? largestTexture : largestNormal) =
+            std::max(k == 1 ? largestTexture : largestNormal, index);
         }
         long long index = 0;
-        if (!ParseInteger(token.substr(0, slash), index))
+        if (!ParseInteger(ref.parts[0], index))
         {
           throw MeshError(Where(path, number) + ": '" + token + "' is not a vertex index");
         }
@@ -263,11 +253,10 @@ void PrecheckObj(const std::string& path)
       }
     }
   }
-  if (largestAttribute.texture > textureCoordinates || largestAttribute.normal > normals)
+  if (largestTexture > textureCoordinates || largestNormal > normals)
   {
     throw MeshError("'" + path + "': a face refers to texture coordinate " +
-      std::to_string(largestAttribute.texture) + " or normal " +
-      std::to_string(largestAttribute.normal) + " beyond the file's " +
+      std::to_string(largestTexture) + " or normal " + std::to_string(largestNormal) + " beyond the file's " +
       std::to_string(textureCoordinates) + " vt and " + std::to_string(normals) + " vn lines");
   }
   if (largestIndex > vertices)
@@ -325,21 +314,6 @@ bool PlyType(const std::string& type, int& size, bool& integer, bool& isSigned)
   return false;
 }
 
-/// Reads an integer of `size` bytes at `p` (little- or big-endian).
-long long ReadInteger(const unsigned char* p, int size, bool isSigned, bool bigEndian)
-{
-  uint64_t v = 0;
-  for (int i = 0; i < size; ++i)
-  {
-    const int shift = 8 * (bigEndian ? size - 1 - i : i);
-    v |= static_cast<uint64_t>(p[i]) << shift;
-  }
-  if (isSigned && size < 8 && (v >> (8 * size - 1)) & 1)
-  {
-    v |= ~uint64_t(0) << (8 * size); // sign extension
-  }
-  return static_cast<long long>(v);
-}
 
 } // namespace
 
@@ -387,7 +361,7 @@ void PrecheckPly(const std::string& path)
       PlyElement e;
       std::string count;
       tokens >> e.name >> count;
-      if (!ParseInteger(count, e.count) || e.count < 0 || e.count > kMaxElements)
+      if (!ParseInteger(count, e.count) || e.count < 0 || e.count > kMaxElementCount)
       {
         throw MeshError(bad + "element '" + e.name + "' has count '" + count +
           "' (expected 0 to 2^31-1)");

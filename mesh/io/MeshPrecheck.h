@@ -39,9 +39,5 @@ void PrecheckLegacyVtk(const std::string& path);
 /// connectivity and cell types decoded and consistent.
 void PrecheckXmlVtk(const std::string& path, const std::string& type);
 
-/// Empty when a VTK cell of `type` may have `points` points; otherwise what
-/// is wrong (a fixed-size type with another count, or a type not read:
-/// polyhedra and higher-order cells).
-std::string CheckCellType(long long type, long long points);
 
 } // namespace shadinglab

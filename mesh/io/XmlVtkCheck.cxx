@@ -13,6 +13,7 @@
 #include "MeshPrecheck.h"
 
 #include "MeshIO.h"
+#include "PrecheckCommon.h"
 
 #include <vtkBase64Utilities.h>
 #include <vtkDataCompressor.h>
@@ -41,17 +42,12 @@ namespace shadinglab
 namespace
 {
 
-/// Largest count of points, cells or values accepted: VTK addresses its
-/// arrays with vtkIdType but the XML readers keep piece sizes in int.
-constexpr long long kMaxCount = (1LL << 31) - 1;
+using precheck::kMaxComponents;
+using precheck::kMaxElementCount;
 
 /// Largest uncompressed block of a compressed array: VTK's writer uses
 /// 32 KiB blocks by default and at most 2^31 - 1 bytes (int sizes inside).
 constexpr long long kMaxBlockSize = (1LL << 31) - 1;
-
-/// Components per tuple: 1024 is far beyond any array VTK writes (a 3x3
-/// tensor has 9) and keeps tuples x components x 8 bytes within 64 bits.
-constexpr long long kMaxComponents = 1024;
 
 struct WordType
 {
@@ -61,10 +57,16 @@ struct WordType
   bool isSigned;
 };
 
-constexpr WordType kWordTypes[] = { { "Int8", 1, true, true }, { "UInt8", 1, true, false },
-  { "Int16", 2, true, true }, { "UInt16", 2, true, false }, { "Int32", 4, true, true },
-  { "UInt32", 4, true, false }, { "Int64", 8, true, true }, { "UInt64", 8, true, false },
-  { "Float32", 4, false, true }, { "Float64", 8, false, true } };
+constexpr WordType kWordTypes[] = { { "Int8", 1, true, true },
+  { "UInt8", 1, true, false },
+  { "Int16", 2, true, true },
+  { "UInt16", 2, true, false },
+  { "Int32", 4, true, true },
+  { "UInt32", 4, true, false },
+  { "Int64", 8, true, true },
+  { "UInt64", 8, true, false },
+  { "Float32", 4, false, true },
+  { "Float64", 8, false, true } };
 
 class XmlCheck
 {
@@ -94,7 +96,7 @@ public:
     {
       this->Fail("no <" + this->Type + "> element");
     }
-    this->ReadFile();
+    this->FindAppendedData();
     for (int i = 0; i < data->GetNumberOfNestedElements(); ++i)
     {
       vtkXMLDataElement* child = data->GetNestedElement(i);
@@ -122,10 +124,8 @@ private:
     {
       return fallback;
     }
-    errno = 0;
-    char* end = nullptr;
-    const long long value = std::strtoll(text, &end, 10);
-    if (errno != 0 || end == text || *end != '\0' || value < 0 || value > kMaxCount)
+    long long value = 0;
+    if (!precheck::ParseInteger(text, value) || value < 0 || value > kMaxElementCount)
     {
       this->Fail(std::string(e->GetName()) + " " + name + "=\"" + text + "\"");
     }
@@ -166,7 +166,7 @@ private:
 
   /// Where the appended section's bytes start (past its '_') and how many
   /// the file has from there.
-  void ReadFile()
+  void FindAppendedData()
   {
     this->File.open(this->Path, std::ios::binary);
     this->File.seekg(0, std::ios::end);
@@ -205,8 +205,8 @@ private:
     long long cells = 0;
     for (const char* section : { "Verts", "Lines", "Strips", "Polys", "Cells" })
     {
-      const std::string count = section == std::string("Cells") ? "NumberOfCells"
-                                                                : std::string("NumberOf") + section;
+      const std::string count =
+        section == std::string("Cells") ? "NumberOfCells" : std::string("NumberOf") + section;
       const long long n = this->Attribute(piece, count.c_str(), 0);
       cells += n;
       if (vtkXMLDataElement* e = piece->FindNestedElementWithName(section))
@@ -261,8 +261,7 @@ private:
 
   /// Verts/Lines/Strips/Polys/Cells: offsets (one end offset per cell),
   /// connectivity (indices within the points) and, for cells, types.
-  void CellSection(vtkXMLDataElement* section, const char* name, long long cells,
-    long long points)
+  void CellSection(vtkXMLDataElement* section, const char* name, long long cells, long long points)
   {
     std::map<std::string, vtkXMLDataElement*> arrays;
     for (int i = 0; i < section->GetNumberOfNestedElements(); ++i)
@@ -284,38 +283,50 @@ private:
     long long previous = 0;
     std::vector<long long> sizes;
     const bool typed = std::strcmp(name, "Cells") == 0;
-    this->Values(arrays["offsets"], cells, true, [&](long long i, long long offset) {
-      if (offset < previous || offset > kMaxCount)
+    this->Values(arrays["offsets"],
+      cells,
+      true,
+      [&](long long i, long long offset)
       {
-        this->Fail(std::string(name) + " offset " + std::to_string(offset) + " at cell " +
-          std::to_string(i) + " (offsets never decrease)");
-      }
-      if (typed)
+        if (offset < previous || offset > kMaxElementCount)
+        {
+          this->Fail(std::string(name) + " offset " + std::to_string(offset) + " at cell " +
+            std::to_string(i) + " (offsets never decrease)");
+        }
+        if (typed)
+        {
+          sizes.push_back(offset - previous);
+        }
+        previous = offset;
+      });
+    this->Values(arrays["connectivity"],
+      previous,
+      true,
+      [&](long long, long long index)
       {
-        sizes.push_back(offset - previous);
-      }
-      previous = offset;
-    });
-    this->Values(arrays["connectivity"], previous, true, [&](long long, long long index) {
-      if (index < 0 || index >= points)
-      {
-        this->Fail(std::string(name) + ": point index " + std::to_string(index) +
-          " outside [0, " + std::to_string(points) + ")");
-      }
-    });
+        if (index < 0 || index >= points)
+        {
+          this->Fail(std::string(name) + ": point index " + std::to_string(index) +
+            " outside [0, " + std::to_string(points) + ")");
+        }
+      });
     if (typed)
     {
       if (!arrays.count("types"))
       {
         this->Fail("<Cells> without types");
       }
-      this->Values(arrays["types"], cells, true, [&](long long i, long long type) {
-        const std::string problem = CheckCellType(type, sizes[static_cast<size_t>(i)]);
-        if (!problem.empty())
+      this->Values(arrays["types"],
+        cells,
+        true,
+        [&](long long i, long long type)
         {
-          this->Fail("cell " + std::to_string(i) + ": " + problem);
-        }
-      });
+          const std::string problem = precheck::CheckCellType(type, sizes[static_cast<size_t>(i)]);
+          if (!problem.empty())
+          {
+            this->Fail("cell " + std::to_string(i) + ": " + problem);
+          }
+        });
     }
   }
 
@@ -339,30 +350,20 @@ private:
         return t;
       }
     }
-    this->Fail(this->Name(array) + ": type \"" + (type ? type : "") +
-      "\" is not read (numeric types only)");
+    this->Fail(
+      this->Name(array) + ": type \"" + (type ? type : "") + "\" is not read (numeric types only)");
   }
 
   long long Decode(const unsigned char* p, int size, bool isSigned) const
   {
-    unsigned long long v = 0;
-    for (int b = 0; b < size; ++b)
-    {
-      const int shift = 8 * (this->BigEndian ? size - 1 - b : b);
-      v |= static_cast<unsigned long long>(p[b]) << shift;
-    }
-    if (isSigned && size < 8 && (v >> (8 * size - 1)) != 0)
-    {
-      v |= ~0ULL << (8 * size);
-    }
-    return static_cast<long long>(v);
+    return precheck::ReadInteger(p, size, isSigned, this->BigEndian);
   }
 
   /// The bytes of a binary array, from the inline base64 text or the
   /// appended section, after its header: the header words are checked
   /// against `expected` bytes and against the bytes present; when `visit`
   /// is given the values are decoded (decompressed) and visited.
-  template <typename Visit>
+  template<typename Visit>
   void Values(vtkXMLDataElement* array, long long count, bool decode, Visit visit)
   {
     const WordType& word = this->Word(array);
@@ -385,8 +386,9 @@ private:
       {
         this->Fail(what + ": offset outside the appended data");
       }
-      source = { nullptr, this->AppendedSize - offset, this->AppendedBase64,
-        this->AppendedStart + offset };
+      source = {
+        nullptr, this->AppendedSize - offset, this->AppendedBase64, this->AppendedStart + offset
+      };
     }
     else if (format && std::strcmp(format, "binary") == 0)
     {
@@ -431,26 +433,19 @@ private:
     while (this->File.get(c) && std::isspace(static_cast<unsigned char>(c)))
     {
     }
+    // The data ends at its last non-space character before the '<' (base64
+    // text is followed by white space and the closing tag).
     const long long start = static_cast<long long>(this->File.tellg()) - 1;
-    long long size = 0;
+    long long size = 0, read = 0;
     while (this->File && c != '<')
     {
-      ++size;
+      ++read;
+      size = std::isspace(static_cast<unsigned char>(c)) ? size : read;
       this->File.get(c);
     }
     if (!this->File)
     {
       this->Fail(this->Name(array) + ": its inline data does not end (truncated?)");
-    }
-    // Base64 text ends in white space before the closing tag.
-    this->File.clear();
-    std::string tail(static_cast<size_t>(std::min<long long>(size, 4096)), '\0');
-    this->File.seekg(start + size - static_cast<long long>(tail.size()));
-    this->File.read(tail.data(), static_cast<std::streamsize>(tail.size()));
-    while (!tail.empty() && std::isspace(static_cast<unsigned char>(tail.back())))
-    {
-      tail.pop_back();
-      --size;
     }
     return { nullptr, size, true, start };
   }
@@ -472,7 +467,9 @@ private:
 
   /// `bytes` bytes of a source from `at` (in encoded characters for
   /// base64), decoded; advances `at`.
-  std::vector<unsigned char> Take(const Source& s, long long& at, long long bytes,
+  std::vector<unsigned char> Take(const Source& s,
+    long long& at,
+    long long bytes,
     const std::string& what)
   {
     const long long characters = s.base64 ? (bytes + 2) / 3 * 4 : bytes;
@@ -488,17 +485,15 @@ private:
     std::vector<unsigned char> out(static_cast<size_t>(bytes));
     if (s.base64)
     {
+      // Decoded straight into `out`: DecodeSafely stops when it is full.
       std::vector<char> text(static_cast<size_t>(characters));
       this->Read(s, at, characters, text.data());
-      std::vector<unsigned char> decoded(static_cast<size_t>(characters / 4 * 3));
       const size_t n = vtkBase64Utilities::DecodeSafely(
-        reinterpret_cast<const unsigned char*>(text.data()), text.size(), decoded.data(),
-        decoded.size());
+        reinterpret_cast<const unsigned char*>(text.data()), text.size(), out.data(), out.size());
       if (static_cast<long long>(n) < bytes)
       {
         this->Fail(what + ": corrupt base64 data");
       }
-      std::copy(decoded.begin(), decoded.begin() + bytes, out.begin());
     }
     else
     {
@@ -508,14 +503,15 @@ private:
     return out;
   }
 
-  std::vector<unsigned char> Block(const Source& s, long long expected, const std::string& what,
+  std::vector<unsigned char> Block(const Source& s,
+    long long expected,
+    const std::string& what,
     bool decode)
   {
     long long at = 0;
     const int h = this->HeaderSize;
-    auto word = [&](const std::vector<unsigned char>& b, size_t k) {
-      return this->Decode(b.data() + k * static_cast<size_t>(h), h, false);
-    };
+    auto word = [&](const std::vector<unsigned char>& b, size_t k)
+    { return this->Decode(b.data() + k * static_cast<size_t>(h), h, false); };
     if (!this->Compressor)
     {
       // Uncompressed: the size word and the data are one (base64) run.
@@ -585,15 +581,16 @@ private:
     // failed block but goes on with the array half filled); the values
     // are kept only when asked for, otherwise one block at a time.
     const std::vector<unsigned char> packed = this->Take(s, at, compressed, what);
-    std::vector<unsigned char> out(static_cast<size_t>(decode ? total : std::min(total, blockSize)));
+    std::vector<unsigned char> out(
+      static_cast<size_t>(decode ? total : std::min(total, blockSize)));
     long long in = 0;
     for (long long b = 0; b < blocks; ++b)
     {
       const long long size = word(sizes, static_cast<size_t>(3 + b));
       const long long want = b + 1 == blocks && last ? last : blockSize;
       unsigned char* target = out.data() + (decode ? b * blockSize : 0);
-      const size_t got = this->Compressor->Uncompress(packed.data() + in,
-        static_cast<size_t>(size), target, static_cast<size_t>(want));
+      const size_t got = this->Compressor->Uncompress(
+        packed.data() + in, static_cast<size_t>(size), target, static_cast<size_t>(want));
       if (static_cast<long long>(got) != want)
       {
         this->Fail(what + ": compressed block " + std::to_string(b) + " does not decompress");
@@ -607,7 +604,7 @@ private:
     return out;
   }
 
-  template <typename Visit>
+  template<typename Visit>
   void Ascii(vtkXMLDataElement* array, long long count, const WordType& word, Visit visit)
   {
     const Source source = this->InlineSource(array);
@@ -633,8 +630,8 @@ private:
         const long long v = std::strtoll(p, &end, 10);
         if (end == p || errno != 0 || (*end && !std::isspace(static_cast<unsigned char>(*end))))
         {
-          this->Fail(this->Name(array) + ": ascii value " + std::to_string(i) +
-            " is not an integer");
+          this->Fail(
+            this->Name(array) + ": ascii value " + std::to_string(i) + " is not an integer");
         }
         visit(i, v);
       }
@@ -643,8 +640,7 @@ private:
         std::strtod(p, &end);
         if (end == p || (*end && !std::isspace(static_cast<unsigned char>(*end))))
         {
-          this->Fail(this->Name(array) + ": ascii value " + std::to_string(i) +
-            " is not a number");
+          this->Fail(this->Name(array) + ": ascii value " + std::to_string(i) + " is not a number");
         }
       }
       p = end;
@@ -652,8 +648,8 @@ private:
     }
     if (i < count)
     {
-      this->Fail(this->Name(array) + ": " + std::to_string(i) + " ascii values of " +
-        std::to_string(count));
+      this->Fail(
+        this->Name(array) + ": " + std::to_string(i) + " ascii values of " + std::to_string(count));
     }
   }
 

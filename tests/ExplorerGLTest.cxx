@@ -117,6 +117,7 @@ private slots:
   void MachBandsProfiles();
   void PerspectiveProfiles();
   void MoonProfiles();
+  void MetalHighlightsKeepTheirColour();
   void OrientationDependsOnRotation();
   void LommelSeeligerOnGpuMatchesCpu();
 };
@@ -480,6 +481,38 @@ void ExplorerGLTest::MoonProfiles()
   QVERIFY2(hi - lo <= kOne255,
     qPrintable(QString("Lommel-Seeliger disk varies by %1/255").arg((hi - lo) * 255)));
   QVERIFY(std::abs(lo - kd) < kOne255); // equal to Lambert's centre (eq. 1.12)
+}
+
+void ExplorerGLTest::MetalHighlightsKeepTheirColour()
+{
+  // The scene's dim light reaches the panels: the metals' highlights stay
+  // below 1 in every channel (a clamped highlight is white, its Fresnel
+  // colour lost), and gold's is yellower (more green per red) than copper's.
+  auto window = Open("metal", render::Backend::CPU);
+  widgets::ComparisonWidget* view = window->Comparison();
+  QCOMPARE(view->PanelCount(), 4);
+  double greenPerRed[2] = { 0, 0 };
+  for (int p = 0; p < 2; ++p)
+  {
+    const render::Image image = view->Panel(p)->Snapshot();
+    size_t brightest = 0;
+    double best = -1;
+    for (size_t i = 0; i < image.covered.size(); ++i)
+    {
+      const float* c = &image.rgb[3 * i];
+      if (image.covered[i] && c[0] + c[1] + c[2] > best)
+      {
+        best = c[0] + c[1] + c[2];
+        brightest = i;
+      }
+    }
+    const float* c = &image.rgb[3 * brightest];
+    QVERIFY2(c[0] < 1.0f && c[1] < 1.0f && c[2] < 1.0f && c[0] > 0.2f,
+      qPrintable(QString("panel %1 highlight %2 %3 %4").arg(p).arg(c[0]).arg(c[1]).arg(c[2])));
+    greenPerRed[p] = c[1] / c[0];
+  }
+  QVERIFY2(greenPerRed[0] > greenPerRed[1] + 0.05,
+    qPrintable(QString("gold G/R %1, copper %2").arg(greenPerRed[0]).arg(greenPerRed[1])));
 }
 
 void ExplorerGLTest::OrientationDependsOnRotation()

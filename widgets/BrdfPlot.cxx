@@ -143,12 +143,16 @@ void BrdfPlot::Redraw()
     chart->legend()->markers(left).front()->setVisible(false);
   }
   radial->setRange(0, maxValue * 1.05);
+  radial->applyNiceNumbers(); // ticks at round values (0, 1, 2, ...) not 0.99
+  // The lobes' names are long ("Cook-Torrance 1982, m = 0.3"): beside the
+  // polar plot, which is square, they fit whole; below it they were cut.
+  chart->legend()->setAlignment(Qt::AlignRight);
   // The incident direction and its mirror direction.
   auto* incident = new QLineSeries;
   incident->setName(QString("light (%1 deg)").arg(this->ThetaL, 0, 'f', 0));
   incident->setPen(QPen(Qt::black, 2, Qt::DashLine));
   incident->append(360.0 - this->ThetaL, 0.0);
-  incident->append(360.0 - this->ThetaL, maxValue * 1.05);
+  incident->append(360.0 - this->ThetaL, radial->max());
   chart->addSeries(incident);
   incident->attachAxis(angular);
   incident->attachAxis(radial);
@@ -156,7 +160,7 @@ void BrdfPlot::Redraw()
   mirror->setName("mirror direction");
   mirror->setPen(QPen(Qt::gray, 1, Qt::DotLine));
   mirror->append(this->ThetaL, 0.0);
-  mirror->append(this->ThetaL, maxValue * 1.05);
+  mirror->append(this->ThetaL, radial->max());
   chart->addSeries(mirror);
   mirror->attachAxis(angular);
   mirror->attachAxis(radial);

@@ -419,18 +419,22 @@ Scene Metal(const SceneOptions& o)
   s.panels = { Panel("Cook-Torrance gold", sphere, ShadingMode::Phong, Preset("gold"), o.backend),
     Panel("Cook-Torrance copper", sphere, ShadingMode::Phong, Preset("copper"), o.backend),
     Panel("Phong plastic", sphere, ShadingMode::Phong, plastic, o.backend),
-    Panel("Gouraud gold: misses the highlight", sphere, ShadingMode::Gouraud,
+    Panel("Gouraud gold: a faceted highlight", sphere, ShadingMode::Gouraud,
       Preset("gold"), o.backend) };
   s.lightAzimuth = 70;
   s.lightElevation = 15;
-  // A dim light: the metals' highlights stay below 1, so their colour shows.
-  s.lightIntensity = 0.3;
-  s.line = { 0.5, 0.45, 0.98, 0.45 };
+  // A dim light: the metals' highlights stay below 1 (the peak, at grazing
+  // light, is ~14x the light's intensity for gold), so their colour shows.
+  s.lightIntensity = 0.06;
+  // Across the disk through the highlights (the plastic one sits a little lower).
+  s.line = { 0.25, 0.5, 0.8, 0.5 };
   s.explanation =
     "With the light nearly at right angles to the view, the highlight sits near the "
     "limb. A metal's Fresnel reflectance rises toward white at grazing angles, so the "
     "gold and copper highlights shift in colour; Phong's plastic highlight keeps the "
-    "light's colour. Gouraud on a 24 x 12 sphere misses a highlight narrower than a face.";
+    "light's colour. Gouraud on a 24 x 12 sphere lights the vertices only: the "
+    "highlight takes the shape of the faces around it, and one narrower than a face "
+    "would be missed altogether.";
   s.formula = "R<sub>s</sub> = F(&theta;) D G / (&pi; (N&middot;L)(N&middot;V)), F with "
               "complex index &eta; + i k &nbsp; (eq. 1.5-1.10)";
   return s;

@@ -17,10 +17,12 @@
 #include <vtkPolyData.h>
 
 #include <QApplication>
+#include <QMimeData>
 #include <QMouseEvent>
 #include <QSlider>
 #include <QSurfaceFormat>
 #include <QTest>
+#include <QUrl>
 #include <QVTKOpenGLNativeWidget.h>
 
 #include <cmath>
@@ -118,6 +120,7 @@ private slots:
   void PerspectiveProfiles();
   void MoonProfiles();
   void MetalHighlightsKeepTheirColour();
+  void DroppedMeshIsShown();
   void OrientationDependsOnRotation();
   void LommelSeeligerOnGpuMatchesCpu();
 };
@@ -513,6 +516,32 @@ void ExplorerGLTest::MetalHighlightsKeepTheirColour()
   }
   QVERIFY2(greenPerRed[0] > greenPerRed[1] + 0.05,
     qPrintable(QString("gold G/R %1, copper %2").arg(greenPerRed[0]).arg(greenPerRed[1])));
+}
+
+void ExplorerGLTest::DroppedMeshIsShown()
+{
+  // A file dropped on the window becomes the mesh of the scenes that show
+  // the user's mesh (modes): every panel draws its 8-sided cylinder.
+  auto window = Open("modes", render::Backend::CPU);
+  const QString path = QString(SHADINGLAB_SOURCE_DIR) + "/datasets/cylinder_8.stl";
+  QMimeData mime;
+  mime.setUrls({ QUrl::fromLocalFile(path) });
+  QDragEnterEvent enter(QPoint(10, 10), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+  QApplication::sendEvent(window.get(), &enter);
+  QVERIFY(enter.isAccepted());
+  QDropEvent drop(QPointF(10, 10), Qt::CopyAction, &mime, Qt::LeftButton, Qt::NoModifier);
+  QApplication::sendEvent(window.get(), &drop);
+  Settle();
+  window->RefreshNow();
+  widgets::ComparisonWidget* view = window->Comparison();
+  QVERIFY(view->PanelCount() >= 2);
+  for (int p = 0; p < view->PanelCount(); ++p)
+  {
+    const vtkIdType polys = view->Panel(p)->Spec().mesh->GetNumberOfPolys();
+    // The STL's 8 side quads as 16 triangles and two 8-gon caps as 6 each.
+    QVERIFY2(polys == 28, qPrintable(QString("panel %1 has %2 polygons").arg(p).arg(polys)));
+    QVERIFY(view->Panel(p)->Snapshot().covered.size() > 0);
+  }
 }
 
 void ExplorerGLTest::OrientationDependsOnRotation()

@@ -15,10 +15,25 @@ void vtkShadingLabCompositePolyDataMapper::SetMaterial(const shadinglab::Materia
   this->Modified();
 }
 
+std::string vtkShadingLabCompositePolyDataMapper::GetAutoChoices()
+{
+  std::string out;
+  for (auto& m : this->BlockMappers)
+  {
+    vtkShadingLabPolyDataMapper* sm = m;
+    if (sm && !sm->GetAutoChoice().empty())
+    {
+      out += sm->GetAutoChoice() + "\n";
+    }
+  }
+  return out;
+}
+
 vtkPolyDataMapper* vtkShadingLabCompositePolyDataMapper::MakeAMapper()
 {
   auto* mapper = vtkShadingLabPolyDataMapper::New();
   mapper->SetShadingMode(this->ShadingMode);
+  mapper->SetMaxError(this->MaxError);
   mapper->SetPerspectiveCorrect(this->PerspectiveCorrect);
   mapper->SetFastPhongMaxSpread(this->FastPhongMaxSpread);
   mapper->SetNormalWeighting(this->NormalWeighting);
@@ -37,6 +52,7 @@ void vtkShadingLabCompositePolyDataMapper::Render(vtkRenderer* ren, vtkActor* ac
     if (vtkShadingLabPolyDataMapper* sm = m)
     {
       sm->SetShadingMode(this->ShadingMode);
+      sm->SetMaxError(this->MaxError);
       sm->SetPerspectiveCorrect(this->PerspectiveCorrect);
       sm->SetFastPhongMaxSpread(this->FastPhongMaxSpread);
       sm->SetNormalWeighting(this->NormalWeighting);
@@ -104,5 +120,6 @@ void vtkShadingLabCompositePolyDataMapper::PrintSelf(ostream& os, vtkIndent inde
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "ShadingMode: " << this->ShadingMode << "\n";
+  os << indent << "MaxError: " << this->MaxError << "\n";
   os << indent << "PerspectiveCorrect: " << this->PerspectiveCorrect << "\n";
 }

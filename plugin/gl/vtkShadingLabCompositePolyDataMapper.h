@@ -19,6 +19,7 @@
 #include <vtkCompositePolyDataMapper.h>
 #include <vtkWeakPointer.h>
 
+#include <string>
 #include <vector>
 
 
@@ -29,10 +30,16 @@ public:
   vtkTypeMacro(vtkShadingLabCompositePolyDataMapper, vtkCompositePolyDataMapper);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /// vtkShadingLabPolyDataMapper::Modes (default PHONG).
+  /// vtkShadingLabPolyDataMapper::Modes (default PHONG); with AUTO each
+  /// block chooses its own mode (per object and view).
   vtkSetClampMacro(ShadingMode, int, vtkShadingLabPolyDataMapper::FLAT,
-    vtkShadingLabPolyDataMapper::FAST_PHONG);
+    vtkShadingLabPolyDataMapper::AUTO);
   vtkGetMacro(ShadingMode, int);
+  /// AUTO's error budget (vtkShadingLabPolyDataMapper::SetMaxError).
+  vtkSetClampMacro(MaxError, double, 0.01, 255.0);
+  vtkGetMacro(MaxError, double);
+  /// AUTO: each drawn block's choice, one line per block ("" otherwise).
+  std::string GetAutoChoices();
   vtkSetMacro(PerspectiveCorrect, bool);
   vtkGetMacro(PerspectiveCorrect, bool);
   /// vtkShadingLabPolyDataMapper's normal settings (see there).
@@ -57,6 +64,7 @@ protected:
   void Render(vtkRenderer* ren, vtkActor* act) override;
 
   int ShadingMode = vtkShadingLabPolyDataMapper::PHONG;
+  double MaxError = 1.0;
   bool PerspectiveCorrect = true;
   double FastPhongMaxSpread = 30.0;
   int NormalWeighting = 1;

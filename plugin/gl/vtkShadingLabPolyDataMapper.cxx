@@ -2,9 +2,12 @@
 #include "vtkShadingLabPolyDataMapper.h"
 
 #include "MeshArrays.h"
+#include "PolyDataMesh.h"
 #include "VertexNormals.h"
+#include "VtkCamera.h"
 #include "vtkWeightedPolyDataNormals.h"
 #include "shadinglab/model/Materials.h"
+#include "shadinglab/render/AutoMode.h"
 #include "shadinglab/render/Renderer.h"
 #include "shadinglab_glsl.h"
 #include "shadinglab_glsl_defines.h"
@@ -51,6 +54,15 @@ struct vtkShadingLabPolyDataMapper::Internals
   std::array<double, 2> PreparedSettings{ -1.0, -1.0 }; ///< weighting, feature angle
   std::map<const vtkOpenGLHelper*, std::string> BuiltVariant;
   std::map<const vtkShaderProgram*, std::vector<float>> LastUniforms;
+  // AUTO: the input in its local frame with its normals (the input's, else
+  // area-weighted), re-made when the input changes, and the last choice.
+  sl::render::Mesh AutoMesh;
+  sl::render::WorldFrame AutoFrame;
+  std::vector<float> AutoNormals;
+  const vtkPolyData* AutoInput = nullptr;
+  vtkMTimeType AutoFrom = 0;
+  int Drawn = PHONG;
+  std::string AutoChoice;
 };
 
 vtkStandardNewMacro(vtkShadingLabPolyDataMapper);
@@ -91,10 +103,73 @@ const sl::Material<double>& vtkShadingLabPolyDataMapper::GetMaterial() const
   return this->Internal->Material;
 }
 
+int vtkShadingLabPolyDataMapper::GetDrawnMode() const
+{
+  return this->ShadingMode == AUTO ? this->Internal->Drawn : this->ShadingMode;
+}
+
+const std::string& vtkShadingLabPolyDataMapper::GetAutoChoice() const
+{
+  static const std::string none;
+  return this->ShadingMode == AUTO ? this->Internal->AutoChoice : none;
+}
+
 int vtkShadingLabPolyDataMapper::EffectiveMode() const
 {
-  const auto mode = static_cast<sl::render::ShadingMode>(this->ShadingMode);
-  return sl::render::SupportsModel(mode, this->Internal->Material.model) ? this->ShadingMode : PHONG;
+  const int drawn = this->GetDrawnMode();
+  const auto mode = static_cast<sl::render::ShadingMode>(drawn);
+  return sl::render::SupportsModel(mode, this->Internal->Material.model) ? drawn : PHONG;
+}
+
+void vtkShadingLabPolyDataMapper::ChooseAutoMode(vtkRenderer* ren, vtkPolyData* input)
+{
+  Internals& in = *this->Internal;
+  if (!input || input->GetNumberOfPolys() == 0)
+  {
+    in.Drawn = PHONG;
+    in.AutoChoice = "no polygons: phong";
+    return;
+  }
+  if (in.AutoInput != input || in.AutoFrom != input->GetMTime())
+  {
+    in.AutoMesh = sl::render::MeshFromPolyData(input, in.AutoFrame);
+    in.AutoNormals = in.AutoMesh.normals;
+    if (in.AutoNormals.size() != in.AutoMesh.points.size())
+    {
+      // What the mapper draws without normals: area-weighted (mesh/core).
+      sl::mesh::FlatPolygons polygons;
+      sl::mesh::FlatPolygonsFromPolyData(input, polygons);
+      std::vector<double> normals;
+      sl::mesh::ComputeVertexNormalsNoSplit(polygons, sl::mesh::NormalWeighting::Area, normals);
+      in.AutoNormals.assign(normals.begin(), normals.end());
+    }
+    in.AutoInput = input;
+    in.AutoFrom = input->GetMTime();
+  }
+  sl::render::Camera camera = sl::render::CameraFromVtk(ren->GetActiveCamera());
+  sl::render::ToLocal(in.AutoFrame, camera);
+  // The prediction reads only the lights' strength (render::LightScale):
+  // I_L = intensity x diffuse colour over the solid angle pi, as drawn.
+  sl::Lighting<double> lighting;
+  lighting.lightCount = 0; // (the default is one light)
+  vtkCollectionSimpleIterator it;
+  ren->GetLights()->InitTraversal(it);
+  while (vtkLight* light = ren->GetLights()->GetNextLight(it))
+  {
+    if (light->GetSwitch() && lighting.lightCount < sl::kMaxLights)
+    {
+      const double* c = light->GetDiffuseColor();
+      const double i = light->GetIntensity();
+      sl::Light<double>& l = lighting.lights[lighting.lightCount++];
+      l.intensity = sl::Vec3<double>(c[0] * i, c[1] * i, c[2] * i);
+      l.solidAngle = sl::kPi<double>;
+    }
+  }
+  const int* size = ren->GetSize();
+  const sl::render::ModeChoice choice = sl::render::ChooseMode(in.AutoMesh, in.AutoNormals,
+    camera, lighting, in.Material, std::max(size[0], 1), std::max(size[1], 1), this->MaxError);
+  in.Drawn = static_cast<int>(choice.mode);
+  in.AutoChoice = choice.why;
 }
 
 std::string vtkShadingLabPolyDataMapper::Variant(vtkRenderer* ren) const
@@ -147,7 +222,11 @@ bool vtkShadingLabPolyDataMapper::Substitute(
 void vtkShadingLabPolyDataMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
 {
   vtkPolyData* input = this->CurrentInput;
-  const bool flat = this->ShadingMode == FLAT;
+  if (this->ShadingMode == AUTO)
+  {
+    this->ChooseAutoMode(ren, input);
+  }
+  const bool flat = this->GetDrawnMode() == FLAT;
   const bool hasNormals = input && input->GetPointData()->GetNormals();
   // Flat mode uploads no point normals; the other modes need them, made
   // here when the input has none or on request.
@@ -222,7 +301,7 @@ void vtkShadingLabPolyDataMapper::ReplaceShaderValues(
   std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
 {
   ++this->ShaderBuildCount;
-  if (this->EffectiveMode() != this->ShadingMode)
+  if (this->EffectiveMode() != this->GetDrawnMode())
   {
     // Said once per shader build, not per frame: not a silent substitution.
     vtkWarningMacro("FAST_PHONG has no Cook-Torrance form (it expands N.L, N.H and N.V); "
@@ -238,7 +317,7 @@ void vtkShadingLabPolyDataMapper::ReplaceShaderValues(
   // Vertex shader: Gouraud lights here; flat and fast-phong pass the
   // provoking vertex's data.
   this->Substitute(vs, "//VTK::System::Dec", "//VTK::System::Dec\n" + variant +
-      (this->ShadingMode == GOURAUD ? library : std::string(sl_defines_glsl)));
+      (this->GetDrawnMode() == GOURAUD ? library : std::string(sl_defines_glsl)));
   this->Substitute(vs, "//VTK::Light::Dec", "//VTK::Light::Dec\n" + std::string(sl_mapper_vs_dec_glsl));
   this->Substitute(vs, "//VTK::Light::Impl", std::string(sl_mapper_vs_impl_glsl) + "\n//VTK::Light::Impl");
   // Fragment shader: the model replaces VTK's lighting.
@@ -433,7 +512,10 @@ void vtkShadingLabPolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "ShadingMode: "
-     << sl::render::ShadingModeName(static_cast<sl::render::ShadingMode>(this->ShadingMode)) << "\n";
+     << (this->ShadingMode == AUTO
+            ? std::string("auto (max error ") + std::to_string(this->MaxError) + "/255)"
+            : sl::render::ShadingModeName(static_cast<sl::render::ShadingMode>(this->ShadingMode)))
+     << "\n";
   os << indent << "ReflectanceModel: " << sl::ReflectanceModelName(this->Internal->Material.model)
      << "\n";
   os << indent << "PerspectiveCorrect: " << this->PerspectiveCorrect << "\n";

@@ -61,14 +61,33 @@ public:
     FLAT = 0,
     GOURAUD = 1,
     PHONG = 2,
-    FAST_PHONG = 3
+    FAST_PHONG = 3,
+    /// Not a render::ShadingMode: chosen per render among FLAT, GOURAUD and
+    /// PHONG as the cheapest predicted to keep the mean error under
+    /// MaxError (render::ChooseMode, docs/model.md eq. 4.1-4.2), from this
+    /// mapper's input, the renderer's camera, size and lights, and the
+    /// material.
+    AUTO = 4
   };
 
   ///@{
   /// Shading mode (default PHONG).
-  vtkSetClampMacro(ShadingMode, int, FLAT, FAST_PHONG);
+  vtkSetClampMacro(ShadingMode, int, FLAT, AUTO);
   vtkGetMacro(ShadingMode, int);
   ///@}
+
+  ///@{
+  /// AUTO's error budget: mean error in 1/255 of the display range
+  /// (default 1, range [0.01, 255]).
+  vtkSetClampMacro(MaxError, double, 0.01, 255.0);
+  vtkGetMacro(MaxError, double);
+  ///@}
+
+  /// The mode the last render drew: ShadingMode, or AUTO's choice.
+  int GetDrawnMode() const;
+  /// AUTO: the last choice's reasons (predictors, each mode's predicted
+  /// error and cost; render::ModeChoice::why); "" otherwise.
+  const std::string& GetAutoChoice() const;
 
   ///@{
   /// Perspective-correct interpolation (default on); off: screen-linear.
@@ -123,6 +142,7 @@ protected:
   void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
 
   int ShadingMode = PHONG;
+  double MaxError = 1.0;
   bool PerspectiveCorrect = true;
   double FastPhongMaxSpread = 30.0;
   int NormalWeighting = 1;
@@ -138,9 +158,11 @@ private:
   void operator=(const vtkShadingLabPolyDataMapper&) = delete;
 
   std::string Variant(vtkRenderer* ren) const;
-  /// The mode the shaders evaluate: ShadingMode, or PHONG where the
+  /// The mode the shaders evaluate: the drawn mode, or PHONG where the
   /// material's model has no form in it (render::SupportsModel).
   int EffectiveMode() const;
+  /// AUTO: chooses the drawn mode for `input` seen by `ren`.
+  void ChooseAutoMode(vtkRenderer* ren, vtkPolyData* input);
   bool Substitute(vtkShader* shader, const std::string& tag, const std::string& code);
 
   struct Internals;

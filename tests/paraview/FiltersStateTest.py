@@ -77,7 +77,7 @@ check(refined.GetPointData().GetNormals() is not None, 'limit normals')
 view = CreateView('RenderView')
 rep = Show(refine, view)
 rep.Representation = 'ShadingLab Surface'
-settings = {'ShadingMode': 'Gouraud', 'ReflectanceModel': 'Cook-Torrance', 'MaterialPreset': 'copper',
+settings = {'ShadingMode': 'Auto', 'MaxError': 2.5, 'ReflectanceModel': 'Cook-Torrance', 'MaterialPreset': 'copper',
             'Kd': 0.25, 'Ks': 0.5, 'Shininess': 77.0, 'AmbientReflectance': 0.1,
             'BeckmannRoughness': [0.2, 0.5, 0.0, 0.0], 'BeckmannWeights': [0.3, 0.7, 0.0, 0.0],
             'Eta': [0.2, 0.9, 1.1], 'Extinction': [3.0, 2.5, 2.2], 'SpecularVariant': 'Walter 2007',

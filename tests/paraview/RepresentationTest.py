@@ -154,6 +154,45 @@ for mode, cli_mode, model in cases:
           '%s/%s matches the standalone GL renderer: mean %.3f, p90 %.1f, p99 %.1f over %d pixels'
           % (mode, model, mean, p90, p99, mask.sum()))
 
+# 2b. Auto: per render, the cheapest mode predicted under Max Error. Its
+#     choice is the CLI's `--mode auto` choice for the same mesh, camera,
+#     light and size, and its picture is that mode's picture exactly.
+coarse_rep.Visibility = 0
+rep.Visibility = 1
+rep.ReflectanceModel = 'Blinn-Phong'
+fixed = {}
+for mode in ['Flat', 'Gouraud', 'Phong']:
+    rep.ShadingMode = mode
+    fixed[mode] = shot('auto_fixed_' + mode.lower())
+chosen = set()
+for budget in [0.05, 7.0, 60.0]:
+    rep.ShadingMode = 'Auto'
+    rep.MaxError = budget
+    image = shot('auto_%g' % budget)
+    rep.UpdatePropertyInformation()
+    why = rep.GetProperty('AutoChoice').GetData()
+    ours_mode = why.strip().split('-> ')[-1].split(',')[0].strip() if '-> ' in why else ''
+    stats = subprocess.run([cli, 'render', mesh, '--backend', 'cpu', '--mode', 'auto',
+                            '--max-error', '%g' % budget, '--stats',
+                            '--model', 'blinn-phong', '--kd', '0.7', '--ks', '0.3', '--shininess', '32',
+                            '--size', '%dx%d' % (W, H), '--camera-position', vector(pos),
+                            '--focal-point', vector(focal), '--view-up', vector(up),
+                            '--view-angle', '%.17g' % camera.GetViewAngle(),
+                            '--light', 'dir:' + vector(direction),
+                            '--out', os.path.join(outdir, 'cli_auto.png')],
+                           check=True, capture_output=True, text=True).stdout
+    cli_mode = stats.split('-> ')[-1].split(',')[0].split('"')[0].strip() if '-> ' in stats else '?'
+    check(ours_mode != '' and ours_mode == cli_mode,
+          'auto, max error %g: ParaView chose %r, the CLI %r (%s)' % (budget, ours_mode, cli_mode, why.strip()))
+    name = {'flat': 'Flat', 'gouraud': 'Gouraud', 'phong': 'Phong'}.get(ours_mode)
+    if name:
+        chosen.add(name)
+        d = numpy.abs(image.astype(float) - fixed[name].astype(float)).max()
+        check(d == 0, 'auto, max error %g: the picture is %s\'s (max difference %g)' % (budget, name, d))
+check(len(chosen) == 3, 'auto: the three budgets choose the three modes (%s)' % sorted(chosen))
+rep.ShadingMode = 'Phong'
+rep.MaxError = 1.0
+
 # 3. Normals made for data without normals: with a feature angle below the
 #    facets' dihedral angles every edge is a crease and Phong shading looks
 #    faceted; at 180 (the default) it is smooth.

@@ -15,6 +15,7 @@ struct vtkShadingLabSurfaceRepresentation::Internals
   std::string Preset;              ///< "" or "Custom": use Parameters
   sl::Material<double> Applied;    ///< the last valid material, on the mappers
   std::string Problem;
+  std::string AutoChoice; ///< GetAutoChoice's storage
   bool Dirty = true; ///< a material property changed since the last UpdateMaterial
 };
 
@@ -57,6 +58,20 @@ void vtkShadingLabSurfaceRepresentation::SetShadingMode(int mode)
   ForBothMappers(this->Mapper, this->LODMapper,
     [&](vtkShadingLabCompositePolyDataMapper* m) { m->SetShadingMode(mode); });
   this->Modified();
+}
+
+void vtkShadingLabSurfaceRepresentation::SetMaxError(double maxError)
+{
+  ForBothMappers(this->Mapper, this->LODMapper,
+    [&](vtkShadingLabCompositePolyDataMapper* m) { m->SetMaxError(maxError); });
+  this->Modified();
+}
+
+const char* vtkShadingLabSurfaceRepresentation::GetAutoChoice()
+{
+  auto* mapper = vtkShadingLabCompositePolyDataMapper::SafeDownCast(this->Mapper);
+  this->Internal->AutoChoice = mapper ? mapper->GetAutoChoices() : std::string();
+  return this->Internal->AutoChoice.c_str();
 }
 
 void vtkShadingLabSurfaceRepresentation::SetReflectanceModel(int model)

@@ -33,8 +33,13 @@ public:
   vtkTypeMacro(vtkShadingLabSurfaceRepresentation, vtkGeometryRepresentationWithFaces);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /// vtkShadingLabPolyDataMapper::Modes: 0 flat, 1 Gouraud, 2 Phong (default), 3 fast Phong.
+  /// vtkShadingLabPolyDataMapper::Modes: 0 flat, 1 Gouraud, 2 Phong (default), 3 fast Phong,
+  /// 4 auto (per block and render, the cheapest mode predicted under MaxError).
   void SetShadingMode(int mode);
+  /// Auto's error budget, mean error in 1/255 (default 1, [0.01, 255]).
+  void SetMaxError(double maxError);
+  /// Auto: the last render's choice per block, and why ("" in other modes).
+  const char* GetAutoChoice();
   /// shadinglab::ReflectanceModel: 0 Lambert, 1 Phong, 2 Blinn-Phong (default), 3 Cook-Torrance.
   void SetReflectanceModel(int model);
   /// 0 perspective-correct (default), 1 screen-space interpolation.

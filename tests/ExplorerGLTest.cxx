@@ -121,6 +121,7 @@ private slots:
   void MoonProfiles();
   void MetalHighlightsKeepTheirColour();
   void DroppedMeshIsShown();
+  void AutoPanelFollowsItsBudget();
   void OrientationDependsOnRotation();
   void LommelSeeligerOnGpuMatchesCpu();
 };
@@ -186,7 +187,7 @@ void ExplorerGLTest::MaterialSliderRerendersOnePanel()
 {
   auto window = Open("modes", render::Backend::GPU);
   widgets::ComparisonWidget* view = window->Comparison();
-  QCOMPARE(view->PanelCount(), 5);
+  QCOMPARE(view->PanelCount(), 6); // the five modes and an auto panel
   view->SetCurrentPanel(2);
   Settle();
   std::vector<int> before;
@@ -541,6 +542,43 @@ void ExplorerGLTest::DroppedMeshIsShown()
     // The STL's 8 side quads as 16 triangles and two 8-gon caps as 6 each.
     QVERIFY2(polys == 28, qPrintable(QString("panel %1 has %2 polygons").arg(p).arg(polys)));
     QVERIFY(view->Panel(p)->Snapshot().covered.size() > 0);
+  }
+}
+
+void ExplorerGLTest::AutoPanelFollowsItsBudget()
+{
+  // An auto panel draws flat under a generous budget and Phong under a
+  // tight one, pixel for pixel as the fixed modes, on both backends; its
+  // title names the choice.
+  for (render::Backend backend : { render::Backend::CPU, render::Backend::GPU })
+  {
+    auto window = Open("modes", backend);
+    widgets::ComparisonWidget* view = window->Comparison();
+    QCOMPARE(view->PanelCount(), 6);
+    widgets::ShadingPanel* autoPanel = view->Panel(5);
+    QVERIFY(autoPanel->Spec().autoMode);
+    const int fixed[2] = { 0, 2 }; // the flat and Phong panels
+    const double budgets[2] = { 255.0, 0.01 };
+    for (int k = 0; k < 2; ++k)
+    {
+      widgets::PanelSpec spec = autoPanel->Spec();
+      spec.maxError = budgets[k];
+      spec.material = view->Panel(fixed[k])->Spec().material;
+      autoPanel->SetSpec(spec);
+      Settle();
+      const render::ShadingMode want = view->Panel(fixed[k])->Spec().mode;
+      QVERIFY2(autoPanel->DrawnMode() == want,
+        qPrintable(QString("%1, budget %2: drew %3, want %4")
+                     .arg(render::BackendName(backend))
+                     .arg(budgets[k])
+                     .arg(render::ShadingModeName(autoPanel->DrawnMode()))
+                     .arg(render::ShadingModeName(want))));
+      QVERIFY(autoPanel->Title().contains(QString("auto: ") + render::ShadingModeName(want)));
+      const render::Image a = autoPanel->Snapshot(), b = view->Panel(fixed[k])->Snapshot();
+      QCOMPARE(a.width, b.width);
+      QCOMPARE(a.height, b.height);
+      QVERIFY(a.rgb == b.rgb);
+    }
   }
 }
 

@@ -6,6 +6,7 @@
 #include "PolyDataMesh.h"
 #include "VtkCamera.h"
 #include "shadinglab/cpu/SoftwareRenderer.h"
+#include "shadinglab/render/AutoMode.h"
 
 #include <vtkCamera.h>
 #include <vtkPolyData.h>
@@ -101,14 +102,28 @@ const render::Mesh& CpuMeshCache::Get(vtkPolyData* polydata)
   if (this->Source != polydata || this->Time != polydata->GetMTime())
   {
     this->Mesh = render::MeshFromPolyData(polydata, this->Frame);
+    this->AutoNormals.clear();
     this->Source = polydata;
     this->Time = polydata->GetMTime();
   }
   return this->Mesh;
 }
 
+const std::vector<float>& CpuMeshCache::Normals()
+{
+  if (!this->Mesh.normals.empty())
+  {
+    return this->Mesh.normals;
+  }
+  if (this->AutoNormals.empty())
+  {
+    this->AutoNormals = cpu::AreaWeightedNormals(this->Mesh); // what the renderer computes
+  }
+  return this->AutoNormals;
+}
+
 const render::Image& RenderOnCpu(cpu::SoftwareRenderer& renderer, CpuMeshCache& cache,
-  const PanelSpec& spec, const ViewState& view, int width, int height)
+  const PanelSpec& spec, const ViewState& view, int width, int height, render::ModeChoice* choice)
 {
   render::Scene scene;
   scene.mesh = &cache.Get(spec.mesh);
@@ -122,7 +137,18 @@ const render::Image& RenderOnCpu(cpu::SoftwareRenderer& renderer, CpuMeshCache& 
   const double distance = Length(scene.camera.position);
   scene.camera.nearClip = std::max(distance - 1.01, 1e-3 * (distance + 1.01));
   scene.camera.farClip = distance + 1.01;
-  return renderer.Render(scene, PanelOptions(spec, view, width, height));
+  render::RenderOptions options = PanelOptions(spec, view, width, height);
+  if (spec.autoMode)
+  {
+    const render::ModeChoice chosen = render::ChooseMode(*scene.mesh, cache.Normals(),
+      scene.camera, scene.lighting, spec.material, width, height, spec.maxError);
+    options.mode = chosen.mode;
+    if (choice)
+    {
+      *choice = chosen;
+    }
+  }
+  return renderer.Render(scene, options);
 }
 
 CpuPanel::CpuPanel(const PanelSpec& spec, ViewState* view, QWidget* parent)
@@ -161,8 +187,17 @@ bool CpuPanel::RenderView()
   const auto start = std::chrono::steady_clock::now();
   try
   {
+    render::ModeChoice choice;
     this->Last = RenderOnCpu(
-      *this->Renderer, this->Cache, this->SpecValue, *this->View, width, height);
+      *this->Renderer, this->Cache, this->SpecValue, *this->View, width, height, &choice);
+    if (this->SpecValue.autoMode)
+    {
+      this->SetAutoChoice(choice.mode, choice.why);
+    }
+    else
+    {
+      this->ClearAutoChoice();
+    }
   }
   catch (const std::exception& e)
   {

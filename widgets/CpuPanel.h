@@ -5,6 +5,7 @@
 #pragma once
 
 #include "ShadingPanel.h"
+#include "shadinglab/render/AutoMode.h"
 
 #include <QImage>
 
@@ -29,7 +30,10 @@ struct CpuMeshCache
   render::WorldFrame Frame;
   const void* Source = nullptr; ///< the vtkPolyData Mesh was made from
   unsigned long Time = 0;       ///< and its modification time then
+  std::vector<float> AutoNormals; ///< Mesh's normals, or area-weighted (auto mode)
   const render::Mesh& Get(vtkPolyData* polydata);
+  /// The vertex normals the auto mode reads (Mesh must be current).
+  const std::vector<float>& Normals();
 };
 
 /**
@@ -39,7 +43,8 @@ struct CpuMeshCache
  * Throws what Renderer::Render throws.
  */
 const render::Image& RenderOnCpu(cpu::SoftwareRenderer& renderer, CpuMeshCache& cache,
-  const PanelSpec& spec, const ViewState& view, int width, int height);
+  const PanelSpec& spec, const ViewState& view, int width, int height,
+  render::ModeChoice* choice = nullptr);
 
 class CpuPanel final : public ShadingPanel
 {

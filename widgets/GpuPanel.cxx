@@ -62,6 +62,12 @@ void GpuPanel::Configure()
   this->Mapper->SetInputData(this->SpecValue.mesh);
   const render::RenderOptions options = PanelOptions(this->SpecValue, *this->View, 1, 1);
   gl::ConfigureActor(options, this->SpecValue.material, this->Mapper, this->Actor);
+  if (this->SpecValue.autoMode)
+  {
+    // The mapper chooses at every render, from the camera, size and lights.
+    this->Mapper->SetShadingMode(vtkShadingLabPolyDataMapper::AUTO);
+    this->Mapper->SetMaxError(this->SpecValue.maxError);
+  }
 }
 
 void GpuPanel::OnSpecChanged()
@@ -94,6 +100,15 @@ void GpuPanel::OnRenderEnd(vtkObject*, unsigned long event, void*)
     return;
   }
   this->CountRender(Now() - this->StartTime);
+  if (this->SpecValue.autoMode)
+  {
+    this->SetAutoChoice(static_cast<render::ShadingMode>(this->Mapper->GetDrawnMode()),
+      this->Mapper->GetAutoChoice());
+  }
+  else
+  {
+    this->ClearAutoChoice();
+  }
 }
 
 bool GpuPanel::RenderView()

@@ -25,6 +25,11 @@ struct PanelSpec
   /// weightings) under the one camera.
   vtkSmartPointer<vtkPolyData> mesh;
   render::ShadingMode mode = render::ShadingMode::Phong;
+  /// Auto: at every render, the cheapest of flat, Gouraud and Phong
+  /// predicted to keep the mean error under maxError (1/255) for this mesh,
+  /// view and material (render::ChooseMode); `mode` is then unused.
+  bool autoMode = false;
+  double maxError = 1.0;
   Material<double> material;
   /// GPU by default; a GPU panel without OpenGL >= 3.2 becomes a CPU panel
   /// and says so in its title.

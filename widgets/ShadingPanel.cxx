@@ -60,6 +60,7 @@ ShadingPanel::ShadingPanel(const PanelSpec& spec, ViewState* view, QWidget* pare
   , SpecValue(spec)
   , View(view)
   , TitleLabel(new QLabel(this))
+  , Drawn(spec.mode)
 {
   auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(2, 2, 2, 2);
@@ -103,6 +104,10 @@ QString ShadingPanel::Title() const
     ? QString(render::BackendName(this->Backend())).toUpper()
     : this->Note;
   QString title = QString::fromStdString(this->SpecValue.title) + " [" + backend + "]";
+  if (!this->AutoNote.isEmpty())
+  {
+    title += " " + this->AutoNote;
+  }
   if (!this->Error.isEmpty())
   {
     title += " - error: " + this->Error;
@@ -127,6 +132,25 @@ void ShadingPanel::UpdateTitle()
   this->TitleLabel->setText(text);
   this->TitleLabel->setStyleSheet(
     this->Selected ? "background:#ffe9a8; color:#000;" : "color:#000;");
+}
+
+void ShadingPanel::SetAutoChoice(render::ShadingMode mode, const std::string& why)
+{
+  this->Drawn = mode;
+  this->AutoNote = QString("(auto: %1)").arg(render::ShadingModeName(mode));
+  this->TitleLabel->setToolTip(QString("Auto mode, max error %1/255: %2")
+                     .arg(this->SpecValue.maxError)
+                     .arg(QString::fromStdString(why)));
+}
+
+void ShadingPanel::ClearAutoChoice()
+{
+  this->Drawn = this->SpecValue.mode;
+  if (!this->AutoNote.isEmpty())
+  {
+    this->AutoNote.clear();
+    this->TitleLabel->setToolTip(QString());
+  }
 }
 
 void ShadingPanel::SetSpec(const PanelSpec& spec)

@@ -48,6 +48,8 @@ public:
   double LastRenderMilliseconds() const { return this->LastMilliseconds; }
   /// The title as shown (with the backend, and why when it fell back).
   QString Title() const;
+  /// Auto mode: the mode the last render drew (the spec's mode otherwise).
+  render::ShadingMode DrawnMode() const { return this->Drawn; }
   /// A colour swatch in the title that matches the panel's plot curves.
   void SetCurveColor(const QColor& color);
 
@@ -77,6 +79,10 @@ protected:
   /// Counts one frame drawn, taking `milliseconds`.
   void CountRender(double milliseconds);
   void UpdateTitle();
+  /// After an auto-mode render: the mode drawn and the one-line reasons
+  /// (shown in the title and its tooltip). ClearAutoChoice otherwise.
+  void SetAutoChoice(render::ShadingMode mode, const std::string& why);
+  void ClearAutoChoice();
 
   PanelSpec SpecValue;
   ViewState* View;
@@ -91,6 +97,8 @@ private:
   int Renders = 0;
   double LastMilliseconds = 0;
   bool Selected = false;
+  render::ShadingMode Drawn;
+  QString AutoNote; ///< "(auto: gouraud)" after an auto-mode render
 };
 
 } // namespace shadinglab::widgets

@@ -325,7 +325,10 @@ void MainWindow::OnPanelSelected(int index)
   const widgets::PanelSpec& spec = panel->Spec();
   this->Updating = true;
   this->PanelLabel->setText(QString("Panel %1: %2").arg(index + 1).arg(panel->Title()));
-  this->Mode->setCurrentIndex(this->Mode->findData(static_cast<int>(spec.mode)));
+  this->Mode->setCurrentIndex(
+    this->Mode->findData(spec.autoMode ? kAutoModeItem : static_cast<int>(spec.mode)));
+  this->MaxError->setValue(spec.maxError);
+  this->MaxError->setEnabled(spec.autoMode);
   this->Backend->setCurrentIndex(this->Backend->findData(static_cast<int>(spec.backend)));
   this->Interpolation->setCurrentIndex(
     this->Interpolation->findData(static_cast<int>(spec.interpolation)));
@@ -341,12 +344,19 @@ void MainWindow::OnPanelEdited()
   }
   const int index = this->View->CurrentPanel();
   widgets::PanelSpec spec = this->View->Panel(index)->Spec();
-  spec.mode = static_cast<render::ShadingMode>(this->Mode->currentData().toInt());
+  const int mode = this->Mode->currentData().toInt();
+  spec.autoMode = mode == kAutoModeItem;
+  if (!spec.autoMode)
+  {
+    spec.mode = static_cast<render::ShadingMode>(mode);
+  }
+  spec.maxError = this->MaxError->value();
+  this->MaxError->setEnabled(spec.autoMode);
   spec.interpolation =
     static_cast<render::InterpolationSpace>(this->Interpolation->currentData().toInt());
   spec.material = this->Editor->GetMaterial();
   const auto backend = static_cast<render::Backend>(this->Backend->currentData().toInt());
-  if (!render::SupportsModel(spec.mode, spec.material.model))
+  if (!spec.autoMode && !render::SupportsModel(spec.mode, spec.material.model))
   {
     this->statusBar()->showMessage(QString("%1 cannot evaluate %2; choose another mode")
                                      .arg(render::ShadingModeLabel(spec.mode))

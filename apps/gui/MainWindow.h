@@ -87,6 +87,9 @@ private:
   QTextBrowser* Explanation;
   QLabel* PanelLabel;
   QComboBox* Mode;
+  QDoubleSpinBox* MaxError; ///< auto mode's budget (enabled with auto)
+  /// The Mode box's item data for auto (not a render::ShadingMode).
+  static constexpr int kAutoModeItem = -1;
   QComboBox* Backend;
   QComboBox* Interpolation;
   QSlider* LightAzimuth;

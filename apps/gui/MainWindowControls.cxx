@@ -50,7 +50,18 @@ QWidget* MainWindow::BuildControls()
   {
     this->Mode->addItem(row.label, static_cast<int>(row.value));
   }
+  this->Mode->addItem("Auto (cheapest under the error budget)", kAutoModeItem);
   panelForm->addRow("Shading", this->Mode);
+  this->MaxError = new QDoubleSpinBox;
+  this->MaxError->setRange(0.01, 255.0);
+  this->MaxError->setDecimals(2);
+  this->MaxError->setSingleStep(0.5);
+  this->MaxError->setValue(1.0);
+  this->MaxError->setToolTip("Auto mode: the mean error allowed against exact shading, in 1/255 "
+                             "(docs/model.md eq. 4.1); the title shows the mode chosen.");
+  panelForm->addRow("Max error (1/255)", this->MaxError);
+  connect(this->MaxError, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
+    &MainWindow::OnPanelEdited);
   this->Backend = new QComboBox;
   this->Backend->addItem("GPU (ShadingLab mapper)", static_cast<int>(render::Backend::GPU));
   this->Backend->addItem("CPU (software renderer)", static_cast<int>(render::Backend::CPU));

@@ -99,7 +99,7 @@ PolyPtr InputOr(const SceneOptions& options, const std::function<PolyPtr()>& fal
 Scene Modes(const SceneOptions& o)
 {
   Scene s;
-  s.title = "The five shading modes";
+  s.title = "The five shading modes, and auto";
   s.usesInput = true;
   // The built-in torus is smooth (its 30-degree facets are not creases);
   // the normal weighting is the user's.
@@ -112,7 +112,10 @@ Scene Modes(const SceneOptions& o)
     Panel("Gouraud", mesh, ShadingMode::Gouraud, Plastic(), b),
     Panel("Phong", mesh, ShadingMode::Phong, Plastic(), b),
     Panel("Fast Phong (Bishop & Weimer)", mesh, ShadingMode::FastPhong, Plastic(), b),
-    Panel("Cook-Torrance (Phong mode)", mesh, ShadingMode::Phong, Preset("plastic"), b) };
+    Panel("Cook-Torrance (Phong mode)", mesh, ShadingMode::Phong, Preset("plastic"), b),
+    Panel("Auto: cheapest within 2/255", mesh, ShadingMode::Phong, Plastic(), b) };
+  s.panels.back().autoMode = true;
+  s.panels.back().maxError = 2.0;
   s.elevation = 35;
   s.azimuth = 15;
   s.explanation =
@@ -120,7 +123,9 @@ Scene Modes(const SceneOptions& o)
     "with the intensities interpolated (Gouraud), per pixel from interpolated normals "
     "(Phong), per pixel from a quadratic in screen space (fast Phong), and per pixel "
     "with a physically based BRDF (Cook-Torrance). Watch the highlight: Gouraud "
-    "smears or loses it, flat shows the facets.";
+    "smears or loses it, flat shows the facets. The last panel picks, at every view, "
+    "the cheapest mode predicted to stay within a mean error of 2/255 (eq. 4.1-4.2): "
+    "zoom in and out and watch its title.";
   s.formula = "I = R<sub>a</sub>I<sub>a</sub> + &Sigma;<sub>j</sub> I<sub>Lj</sub> "
               "(N&middot;L<sub>j</sub>) d&omega;<sub>j</sub> (k<sub>d</sub>R<sub>d</sub> + "
               "k<sub>s</sub>R<sub>s</sub>) &nbsp; (eq. 1.1; modes eq. 2.1-2.8)";

@@ -169,14 +169,26 @@ int RunAccuracy(int argc, char** argv)
   });
   std::ofstream autoCsv(dir / "auto.csv");
   autoCsv << "mesh,material,max_error,chosen,predicted,chosen_error,chosen_ms,cheapest,"
-             "cheapest_ms,met\n";
+             "cheapest_ms,met,flat_error,gouraud_error,phong_error,flat_ms,gouraud_ms,phong_ms,"
+             "spread,sharpness,peak,triangles,front_pixels,triangle_pixels\n";
   int feasible = 0, met = 0, withinCost = 0;
   std::vector<double> ratios;
   for (const AutoCase& c : cases)
   {
     autoCsv << c.mesh << ',' << c.material << ',' << c.maxError << ',' << c.chosen << ','
             << c.predicted << ',' << c.chosenError << ',' << c.chosenMs << ',' << c.cheapest << ','
-            << c.cheapestMs << ',' << (c.met ? 1 : 0) << '\n';
+            << c.cheapestMs << ',' << (c.met ? 1 : 0);
+    for (double e : c.modeError)
+    {
+      autoCsv << ',' << e;
+    }
+    for (double ms : c.modeMs)
+    {
+      autoCsv << ',' << ms;
+    }
+    autoCsv << ',' << c.choice.view.normalSpread << ',' << c.choice.sharpness << ','
+            << c.choice.peak << ',' << c.choice.view.triangles << ',' << c.choice.view.frontPixels
+            << ',' << c.choice.view.trianglePixels << '\n';
     if (c.cheapest.empty())
     {
       continue; // no mode meets E on this mesh: nothing to choose

@@ -174,6 +174,10 @@ std::vector<NormalsChoice> NormalChoices(bool quick)
 /// Subdivision is studied on meshes it keeps under this many triangles:
 /// beyond, a level costs more memory and time than the study should.
 constexpr long long kMaxSubdividedTriangles = 1100000;
+/// Rounds of the held-out check (one frame per mode per round): 15 frames
+/// of 0.5-5 ms put each median within a few percent on this 2-core machine
+/// (5 moved it by ~20%), for ~10 s in all.
+constexpr int kAutoRounds = 15;
 
 void Measure(const render::Image& image, const render::Image& exact, StudyRow& row)
 {
@@ -448,22 +452,43 @@ std::vector<AutoCase> ValidateAutoMode(
     {
       const render::Image exact = reference::RayCast(*h.exact, camera, lighting, material,
         options.width, options.height, Vec3<float>(0, 0, 0));
-      std::map<std::string, std::pair<double, double>> measured; // mode: error, ms
-      for (render::ShadingMode mode :
-        { render::ShadingMode::Flat, render::ShadingMode::Gouraud, render::ShadingMode::Phong })
+      // The three modes timed side by side, one frame of each per round, so
+      // that a change of the machine's load falls on all three alike (frames
+      // here take 0.5-5 ms: the medians of 5 separate frames moved by 20%).
+      const render::ShadingMode modes[3] = { render::ShadingMode::Flat,
+        render::ShadingMode::Gouraud, render::ShadingMode::Phong };
+      const render::Scene scene{ &mesh, camera, lighting, material };
+      std::vector<double> times[3];
+      double errors[3] = { 0, 0, 0 };
+      for (int round = -1; round < std::max(options.frames, kAutoRounds); ++round)
       {
-        render::RenderOptions ro;
-        ro.mode = mode;
-        ro.width = options.width;
-        ro.height = options.height;
-        ro.threads = options.threads;
-        ro.background = Vec3<float>(0, 0, 0);
-        const render::Scene scene{ &mesh, camera, lighting, material };
-        render::Image image;
-        const double frameMs = TimedFrames(renderer, scene, ro, options.frames, image);
-        StudyRow row;
-        Measure(image, exact, row);
-        measured[render::ShadingModeName(mode)] = { row.mean255, frameMs };
+        for (int k = 0; k < 3; ++k)
+        {
+          render::RenderOptions ro;
+          ro.mode = modes[k];
+          ro.width = options.width;
+          ro.height = options.height;
+          ro.threads = options.threads;
+          ro.background = Vec3<float>(0, 0, 0);
+          const auto t0 = Clock::now();
+          const render::Image& image = renderer.Render(scene, ro);
+          const double ms = Milliseconds(t0, Clock::now());
+          if (round < 0) // a warm-up frame, measured for its error only
+          {
+            StudyRow row;
+            Measure(image, exact, row);
+            errors[k] = row.mean255;
+          }
+          else
+          {
+            times[k].push_back(ms);
+          }
+        }
+      }
+      std::map<std::string, std::pair<double, double>> measured; // mode: error, ms
+      for (int k = 0; k < 3; ++k)
+      {
+        measured[render::ShadingModeName(modes[k])] = { errors[k], Median(times[k]) };
       }
       for (double budget : budgets)
       {
@@ -478,6 +503,12 @@ std::vector<AutoCase> ValidateAutoMode(
         c.chosenError = measured[c.chosen].first;
         c.chosenMs = measured[c.chosen].second;
         c.met = c.chosenError <= budget;
+        c.choice = choice;
+        for (int k = 0; k < 3; ++k)
+        {
+          c.modeError[k] = errors[k];
+          c.modeMs[k] = measured[render::ShadingModeName(modes[k])].second;
+        }
         for (const auto& [mode, m] : measured)
         {
           if (m.first <= budget && (c.cheapest.empty() || m.second < c.cheapestMs))

@@ -5,6 +5,7 @@
 // the surface ray-cast with its exact normal (plugin/reference).
 #pragma once
 
+#include "shadinglab/render/AutoMode.h"
 #include "shadinglab/render/Renderer.h"
 
 #include <functional>
@@ -63,6 +64,10 @@ struct AutoCase
   std::string cheapest;       ///< the cheapest mode that met E ("" if none)
   double cheapestMs = 0;
   bool met = false;           ///< chosenError <= E
+  /// Every mode as measured (flat, Gouraud, Phong): mean error (1/255) and
+  /// median frame time (ms), and the predictors the choice read.
+  double modeError[3] = { 0, 0, 0 }, modeMs[3] = { 0, 0, 0 };
+  render::ModeChoice choice;
 };
 
 /// Renders held-out meshes (a thin torus, a flattened ellipsoid, icospheres,

@@ -69,7 +69,8 @@ double LightScale(const Lighting<double>& lighting);
 
 /// Predicted CPU frame time (ms) of `mode` (eq. 4.2): a + b T + c A, T the
 /// triangles (thousands), A the front-facing screen area (thousands of
-/// pixels), per mode and per model class (Cook-Torrance or not).
+/// pixels), per mode and per model class (not Cook-Torrance; Cook-Torrance
+/// dielectric; Cook-Torrance conductor).
 double PredictCost(ShadingMode mode, const ViewPredictors& view, const Material<double>& material);
 
 /// Of flat, Gouraud and Phong, the one of least predicted cost whose

@@ -2,7 +2,9 @@
 # Extract Surface, ShadingLab Normals, ShadingLab Surface) in pvbatch on 1
 # and on 2 ranks must give the same normals at every point (partition
 # boundaries included) and the same image (mean <= 1/255); ShadingLab
-# Subdivision must put every point where the serial run puts it (no seam).
+# Subdivision must put every point where the serial run puts it (no seam);
+# ShadingLab Mesh Repair of a broken copy (every triangle on its own
+# points, every third one flipped) must weld and orient it as on one rank.
 #
 #   pvpython MpiTest.py PLUGIN MESH OUTDIR      (the driver; runs mpiexec)
 #   pvbatch MpiTest.py --worker PLUGIN MESH OUT (one run, on rank 0)
@@ -53,11 +55,63 @@ def worker(plugin, mesh, out):
     refine.Levels = 2
     refined = servermanager.Fetch(refine)
     numpy.save(out + '_sub.npy', vtk_to_numpy(refined.GetPoints().GetData()).astype(numpy.float64))
+    broken = ExtractSurface(Input=RedistributeDataSet(Input=OpenDataFile(mesh + '.broken.vtp')))
+    repair = ShadingLabMeshRepair(Input=broken)  # noqa: F821 (from the plugin)
+    repaired = servermanager.Fetch(repair)
+    numpy.save(out + '_repair.npy', oriented_triangles(repaired))
+
+
+def oriented_triangles(poly):
+    """Each triangle's corner coordinates (rounded to 1e-9), rotated to start
+    at its smallest corner: equal rows are the same triangle, same way round."""
+    import numpy
+    from vtkmodules.vtkCommonCore import vtkIdList
+    rows = []
+    ids = vtkIdList()
+    polys = poly.GetPolys()
+    polys.InitTraversal()
+    while polys.GetNextCell(ids):
+        corners = [tuple(round(x, 9) for x in poly.GetPoint(ids.GetId(k))) for k in range(ids.GetNumberOfIds())]
+        start = corners.index(min(corners))
+        rows.append(sum((list(c) for c in corners[start:] + corners[:start]), []))
+    return numpy.array(sorted(rows))
+
+
+def write_broken(mesh):
+    """`mesh` with every triangle on its own three points and every third
+    one reversed: what Mesh Repair must weld and orient (outward)."""
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLPolyDataWriter
+    from vtkmodules.vtkCommonDataModel import vtkPolyData, vtkCellArray
+    from vtkmodules.vtkCommonCore import vtkPoints, vtkIdList
+    reader = vtkXMLPolyDataReader()
+    reader.SetFileName(mesh)
+    reader.Update()
+    source = reader.GetOutput()
+    points, cells, ids = vtkPoints(), vtkCellArray(), vtkIdList()
+    polys = source.GetPolys()
+    polys.InitTraversal()
+    c = 0
+    while polys.GetNextCell(ids):
+        corner = [points.InsertNextPoint(source.GetPoint(ids.GetId(k))) for k in range(ids.GetNumberOfIds())]
+        cells.InsertNextCell(len(corner), corner[::-1] if c % 3 == 0 else corner)
+        c += 1
+    broken = vtkPolyData()
+    broken.SetPoints(points)
+    broken.SetPolys(cells)
+    writer = vtkXMLPolyDataWriter()
+    writer.SetFileName(mesh + '.broken.vtp')
+    writer.SetInputData(broken)
+    writer.Write()
 
 
 def driver(plugin, mesh, outdir):
     import numpy
     os.makedirs(outdir, exist_ok=True)
+    local_mesh = os.path.join(outdir, os.path.basename(mesh))
+    with open(mesh, 'rb') as src, open(local_mesh, 'wb') as dst:
+        dst.write(src.read())
+    mesh = local_mesh
+    write_broken(mesh)
     runs = {}
     for ranks in (1, 2):
         out = os.path.join(outdir, 'ranks%d' % ranks)
@@ -103,6 +157,25 @@ def driver(plugin, mesh, outdir):
     # 1e-9 of a unit-sized mesh: the same stencils summed in another order.
     if not farthest <= 1e-9:
         failures.append('subdivision opens a seam at the partition boundary')
+    # Repair: the same triangles, the same way round, on 1 and 2 ranks; and
+    # welded and outward (the serial result's triangles are those of the
+    # intact mesh, every one in its original orientation).
+    serial_rep = numpy.load(runs[1] + '_repair.npy')
+    parallel_rep = numpy.load(runs[2] + '_repair.npy')
+    same = serial_rep.shape == parallel_rep.shape and numpy.array_equal(serial_rep, parallel_rep)
+    print('repair: %d triangles on 1 rank, %d on 2 ranks, identical and equally oriented: %s'
+          % (len(serial_rep), len(parallel_rep), same))
+    if not same:
+        failures.append('mesh repair on 2 ranks differs from 1 rank')
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataReader
+    reader = vtkXMLPolyDataReader()
+    reader.SetFileName(mesh)
+    reader.Update()
+    intact = oriented_triangles(reader.GetOutput())
+    restored = intact.shape == serial_rep.shape and numpy.array_equal(intact, serial_rep)
+    print('repair: the serial result is the intact mesh, oriented as it was: %s' % restored)
+    if not restored:
+        failures.append('mesh repair did not restore the intact mesh')
     a, b = read_png(runs[1] + '.png'), read_png(runs[2] + '.png')
     mean = numpy.abs(a - b).mean()
     print('image: mean |1 rank - 2 ranks| = %.4f/255' % mean)

@@ -1,10 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkShadingLabRepair.h"
 
+#include "GatheredPolyData.h"
 #include "InnerFilter.h"
 #include "vtkMeshRepair.h"
 
 #include <vtkInformationVector.h>
+#include <vtkMultiProcessController.h>
+#include <vtkPointData.h>
 #include <vtkObjectFactory.h>
 
 vtkStandardNewMacro(vtkShadingLabRepair);
@@ -21,6 +24,24 @@ int vtkShadingLabRepair::RequestData(
   inner->SetFixOrientation(this->FixOrientation);
   inner->SetFixTJunctions(this->FixTJunctions);
   inner->SetTJunctionTolerance(this->TJunctionTolerance);
+  // Distributed data: repaired as a whole on rank 0 (GatheredPolyData.h),
+  // so that welds, T-junctions and orientation across partition boundaries
+  // come out as on one rank. Collective on all ranks.
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  if (controller && controller->GetNumberOfProcesses() > 1)
+  {
+    namespace pv = shadinglab::paraview;
+    vtkSmartPointer<vtkPolyData> whole = pv::GatherWithOwner(input, controller);
+    vtkNew<vtkPolyData> repaired;
+    const bool ok = !whole || pv::RunInnerFilter(this, inner, whole, repaired);
+    if (!pv::ScatterByOwner(repaired, ok, controller, output))
+    {
+      return 0;
+    }
+    // Point ids of the gathered mesh mean nothing on a rank.
+    output->GetPointData()->RemoveArray("OriginalPointIds");
+    return 1;
+  }
   return shadinglab::paraview::RunInnerFilter(this, inner, input, output) ? 1 : 0;
 }
 

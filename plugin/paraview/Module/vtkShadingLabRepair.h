@@ -8,8 +8,11 @@
  * (keeping seams where point data differ, when asked), removes degenerate
  * faces, orients each component consistently (outward when closed) and
  * splits edges at T-junctions. The input is not modified.
- * @warning On partitioned data each partition is repaired alone: welds and
- * T-junctions across partition boundaries are not found.
+ * On distributed data (several MPI ranks) the mesh is gathered on rank 0,
+ * repaired as a whole and handed back by owner (GatheredPolyData.h): the
+ * result is the one-rank result, partitioned as the input was; the
+ * OriginalPointIds array is then dropped (it would number the gathered
+ * mesh's points).
  */
 #ifndef vtkShadingLabRepair_h
 #define vtkShadingLabRepair_h

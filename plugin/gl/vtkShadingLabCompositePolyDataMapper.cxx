@@ -4,8 +4,16 @@
 #include "vtkShadingLabPolyDataMapper.h"
 
 #include <vtkActor.h>
+#include <vtkCompositeDataDisplayAttributes.h>
+#include <vtkCompositeDataPipeline.h>
+#include <vtkDataObjectTree.h>
+#include <vtkDataObjectTreeIterator.h>
+#include <vtkNew.h>
 #include <vtkObjectFactory.h>
+#include <vtkPolyData.h>
 #include <vtkProperty.h>
+
+#include <functional>
 
 vtkStandardNewMacro(vtkShadingLabCompositePolyDataMapper);
 
@@ -31,6 +39,14 @@ std::string vtkShadingLabCompositePolyDataMapper::GetAutoChoices()
 
 vtkPolyDataMapper* vtkShadingLabCompositePolyDataMapper::MakeAMapper()
 {
+  // The superclass makes one mapper per polydata leaf, in traversal order,
+  // and stamps InternalMappersBuildTime after the last: a stamp other than
+  // the one seen at the previous call starts a new build.
+  if (this->InternalMappersBuildTime.GetMTime() != this->BuildSeen)
+  {
+    this->BlockMappers.clear();
+    this->BuildSeen = this->InternalMappersBuildTime.GetMTime();
+  }
   auto* mapper = vtkShadingLabPolyDataMapper::New();
   mapper->SetShadingMode(this->ShadingMode);
   mapper->SetMaxError(this->MaxError);
@@ -44,63 +60,176 @@ vtkPolyDataMapper* vtkShadingLabCompositePolyDataMapper::MakeAMapper()
   return mapper;
 }
 
+void vtkShadingLabCompositePolyDataMapper::SetBlockAttributes(
+  vtkCompositeDataDisplayAttributes* attributes)
+{
+  this->BlockAttributes = attributes;
+  this->Modified();
+}
+
+void vtkShadingLabCompositePolyDataMapper::BuildIfNeeded()
+{
+  auto* executive = vtkCompositeDataPipeline::SafeDownCast(this->GetExecutive());
+  if (executive && executive->GetPipelineMTime() > this->InternalMappersBuildTime.GetMTime())
+  {
+    this->BuildPolyDataMapper();
+  }
+}
+
+std::vector<vtkShadingLabCompositePolyDataMapper::BlockLook>
+vtkShadingLabCompositePolyDataMapper::BlockLooks(vtkActor* act)
+{
+  // Each polydata leaf in the superclass's traversal order (depth first,
+  // children in order, empty nodes skipped), with the attributes of its
+  // nearest ancestor (itself included) that sets them, as
+  // vtkCompositePolyDataMapper2 inherits them; the actor's otherwise.
+  std::vector<BlockLook> looks;
+  vtkProperty* prop = act->GetProperty();
+  BlockLook root;
+  root.opacity = prop->GetOpacity();
+  vtkCompositeDataDisplayAttributes* attrs = this->BlockAttributes;
+  std::function<void(vtkDataObject*, BlockLook)> visit = [&](vtkDataObject* node, BlockLook look) {
+    if (!node)
+    {
+      return;
+    }
+    if (attrs && attrs->HasBlockVisibility(node))
+    {
+      look.visible = attrs->GetBlockVisibility(node);
+    }
+    if (attrs && attrs->HasBlockColor(node))
+    {
+      attrs->GetBlockColor(node, look.color);
+      look.colorSet = true;
+    }
+    if (attrs && attrs->HasBlockOpacity(node))
+    {
+      look.opacity = attrs->GetBlockOpacity(node);
+    }
+    if (auto* tree = vtkDataObjectTree::SafeDownCast(node))
+    {
+      vtkSmartPointer<vtkDataObjectTreeIterator> it;
+      it.TakeReference(tree->NewTreeIterator());
+      it->VisitOnlyLeavesOff();
+      it->TraverseSubTreeOff();
+      it->SkipEmptyNodesOn();
+      for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+      {
+        visit(it->GetCurrentDataObject(), look);
+      }
+    }
+    else if (vtkPolyData::SafeDownCast(node))
+    {
+      looks.push_back(look);
+    }
+  };
+  visit(this->GetInputDataObject(0, 0), root);
+  return looks;
+}
+
 void vtkShadingLabCompositePolyDataMapper::Render(vtkRenderer* ren, vtkActor* act)
 {
-  // Keep the block mappers in step with this mapper's settings.
-  for (auto& m : this->BlockMappers)
+  this->BuildIfNeeded();
+  std::vector<BlockLook> looks = this->BlockLooks(act);
+  if (looks.size() != this->BlockMappers.size())
   {
-    if (vtkShadingLabPolyDataMapper* sm = m)
+    looks.assign(this->BlockMappers.size(), BlockLook{}); // unknown layout: the actor's look
+    for (BlockLook& look : looks)
     {
-      sm->SetShadingMode(this->ShadingMode);
-      sm->SetMaxError(this->MaxError);
-      sm->SetPerspectiveCorrect(this->PerspectiveCorrect);
-      sm->SetFastPhongMaxSpread(this->FastPhongMaxSpread);
-      sm->SetNormalWeighting(this->NormalWeighting);
-      sm->SetFeatureAngle(this->FeatureAngle);
-      sm->SetRecomputeNormals(this->RecomputeNormals);
-      sm->SetMaterial(this->Material);
+      look.opacity = act->GetProperty()->GetOpacity();
     }
   }
-  this->Superclass::Render(ren, act);
-  // VTK 9.2's vtkCompositePolyDataMapper draws a block in the translucent
-  // pass only when the block's own colours are translucent, so an actor made
-  // translucent by its opacity drew nothing: draw those blocks here, with
-  // the colouring the superclass would have handed them.
-  if (act->IsRenderingTranslucentPolygonalGeometry() && act->GetProperty()->GetOpacity() < 1.0)
+  const bool translucentPass = act->IsRenderingTranslucentPolygonalGeometry() != 0;
+  this->TimeToDraw = 0;
+  for (size_t i = 0; i < this->BlockMappers.size(); ++i)
   {
-    for (auto& m : this->BlockMappers)
+    vtkShadingLabPolyDataMapper* sm = this->BlockMappers[i];
+    const BlockLook& look = looks[i];
+    if (!sm || !sm->GetInput() || !look.visible)
     {
-      vtkShadingLabPolyDataMapper* sm = m;
-      if (!sm || !sm->GetInput() || !sm->HasOpaqueGeometry())
+      continue;
+    }
+    // Keep the block mapper in step with this mapper's settings.
+    sm->SetShadingMode(this->ShadingMode);
+    sm->SetMaxError(this->MaxError);
+    sm->SetPerspectiveCorrect(this->PerspectiveCorrect);
+    sm->SetFastPhongMaxSpread(this->FastPhongMaxSpread);
+    sm->SetNormalWeighting(this->NormalWeighting);
+    sm->SetFeatureAngle(this->FeatureAngle);
+    sm->SetRecomputeNormals(this->RecomputeNormals);
+    sm->SetMaterial(this->Material);
+    if (sm->GetClippingPlanes() != this->ClippingPlanes)
+    {
+      sm->SetClippingPlanes(this->ClippingPlanes);
+    }
+    sm->SetLookupTable(this->GetLookupTable());
+    sm->SetScalarVisibility(this->GetScalarVisibility());
+    sm->SetUseLookupTableScalarRange(this->GetUseLookupTableScalarRange());
+    sm->SetScalarRange(this->GetScalarRange());
+    sm->SetColorMode(this->GetColorMode());
+    sm->SetInterpolateScalarsBeforeMapping(this->GetInterpolateScalarsBeforeMapping());
+    sm->SetScalarMode(this->GetScalarMode());
+    if (this->ScalarMode == VTK_SCALAR_MODE_USE_POINT_FIELD_DATA ||
+      this->ScalarMode == VTK_SCALAR_MODE_USE_CELL_FIELD_DATA)
+    {
+      if (this->ArrayAccessMode == VTK_GET_ARRAY_BY_ID)
       {
-        continue; // gone, empty, or already drawn by the superclass
+        sm->ColorByArrayComponent(this->ArrayId, this->ArrayComponent);
       }
-      if (sm->GetClippingPlanes() != this->ClippingPlanes)
+      else
       {
-        sm->SetClippingPlanes(this->ClippingPlanes);
+        sm->ColorByArrayComponent(this->ArrayName, this->ArrayComponent);
       }
-      sm->SetLookupTable(this->GetLookupTable());
-      sm->SetScalarVisibility(this->GetScalarVisibility());
-      sm->SetUseLookupTableScalarRange(this->GetUseLookupTableScalarRange());
-      sm->SetScalarRange(this->GetScalarRange());
-      sm->SetColorMode(this->GetColorMode());
-      sm->SetInterpolateScalarsBeforeMapping(this->GetInterpolateScalarsBeforeMapping());
-      sm->SetScalarMode(this->GetScalarMode());
-      if (this->ScalarMode == VTK_SCALAR_MODE_USE_POINT_FIELD_DATA ||
-        this->ScalarMode == VTK_SCALAR_MODE_USE_CELL_FIELD_DATA)
-      {
-        if (this->ArrayAccessMode == VTK_GET_ARRAY_BY_ID)
-        {
-          sm->ColorByArrayComponent(this->ArrayId, this->ArrayComponent);
-        }
-        else
-        {
-          sm->ColorByArrayComponent(this->ArrayName, this->ArrayComponent);
-        }
-      }
-      sm->Render(ren, act);
+    }
+    // A block is drawn in the translucent pass when its opacity (its own,
+    // inherited, or the actor's) is below 1 or its colours are translucent,
+    // else in the opaque pass. (VTK 9.2's vtkCompositePolyDataMapper looked
+    // at the colours only, so a translucent actor drew nothing.)
+    const bool translucent = look.opacity < 1.0 || !sm->HasOpaqueGeometry() ||
+      act->GetProperty()->GetOpacity() < 1.0;
+    if (translucent != translucentPass)
+    {
+      continue;
+    }
+    sm->SetBlockOverrides(look.colorSet ? look.color : nullptr, look.opacity);
+    sm->Render(ren, act);
+    this->TimeToDraw += sm->GetTimeToDraw();
+  }
+}
+
+bool vtkShadingLabCompositePolyDataMapper::HasOpaqueGeometry()
+{
+  this->BuildIfNeeded();
+  return this->HasBlocks(false);
+}
+
+bool vtkShadingLabCompositePolyDataMapper::HasTranslucentPolygonalGeometry()
+{
+  this->BuildIfNeeded();
+  return this->HasBlocks(true);
+}
+
+bool vtkShadingLabCompositePolyDataMapper::HasBlocks(bool translucent)
+{
+  // Which passes the visible blocks need, as Render decides (the actor's
+  // own opacity is the actor's business: vtkActor asks for it apart).
+  vtkNew<vtkActor> opaqueActor;
+  const std::vector<BlockLook> looks = this->BlockLooks(opaqueActor);
+  const bool known = looks.size() == this->BlockMappers.size();
+  for (size_t i = 0; i < this->BlockMappers.size(); ++i)
+  {
+    vtkShadingLabPolyDataMapper* sm = this->BlockMappers[i];
+    if (!sm || !sm->GetInput() || (known && !looks[i].visible))
+    {
+      continue;
+    }
+    const bool blockTranslucent = (known && looks[i].opacity < 1.0) || !sm->HasOpaqueGeometry();
+    if (blockTranslucent == translucent)
+    {
+      return true;
     }
   }
+  return false;
 }
 
 int vtkShadingLabCompositePolyDataMapper::GetShaderBuildCount()

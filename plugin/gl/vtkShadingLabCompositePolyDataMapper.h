@@ -7,6 +7,9 @@
  * vtkShadingLabPolyDataMapper instances carrying this mapper's mode,
  * interpolation space and material. It holds the properties only; the GLSL
  * work lives in the delegate (ParaView's advice for composite mappers).
+ * Per-block visibility, colour and opacity (vtkCompositeDataDisplayAttributes,
+ * inherited down the tree as vtkCompositePolyDataMapper2 does) come from
+ * SetBlockAttributes: ParaView's Block Colors / Opacities / Selectors.
  */
 #ifndef vtkShadingLabCompositePolyDataMapper_h
 #define vtkShadingLabCompositePolyDataMapper_h
@@ -17,11 +20,14 @@
 #include "vtkShadingLabPolyDataMapper.h" // for Modes
 
 #include <vtkCompositePolyDataMapper.h>
+#include <vtkSmartPointer.h>
 #include <vtkWeakPointer.h>
 
 #include <string>
 #include <vector>
 
+
+class vtkCompositeDataDisplayAttributes;
 
 class SHADINGLABGL_EXPORT vtkShadingLabCompositePolyDataMapper : public vtkCompositePolyDataMapper
 {
@@ -57,6 +63,14 @@ public:
   /// Sum of the block mappers' shader builds.
   int GetShaderBuildCount();
 
+  /// Per-block visibility, colour and opacity, keyed by the input's data
+  /// objects (any node: a setting applies to the subtree below it). nullptr:
+  /// every block as the actor.
+  void SetBlockAttributes(vtkCompositeDataDisplayAttributes* attributes);
+
+  bool HasOpaqueGeometry() override;
+  bool HasTranslucentPolygonalGeometry() override;
+
 protected:
   vtkShadingLabCompositePolyDataMapper() = default;
   ~vtkShadingLabCompositePolyDataMapper() override = default;
@@ -71,8 +85,24 @@ protected:
   double FeatureAngle = 180.0;
   bool RecomputeNormals = false;
   shadinglab::Material<double> Material;
-  /// The block mappers made so far (the superclass owns them; weak here).
+  /// The block mappers of the last build, in leaf order (the superclass
+  /// owns them; weak here).
   std::vector<vtkWeakPointer<vtkShadingLabPolyDataMapper>> BlockMappers;
+  vtkMTimeType BuildSeen = ~vtkMTimeType(0); ///< build stamp of BlockMappers' first
+  vtkSmartPointer<vtkCompositeDataDisplayAttributes> BlockAttributes;
+
+  /// How one leaf is drawn: visibility, colour (when set) and opacity.
+  struct BlockLook
+  {
+    bool visible = true;
+    bool colorSet = false;
+    double color[3] = { 1, 1, 1 };
+    double opacity = 1.0;
+  };
+  /// One BlockLook per polydata leaf, in the order of BlockMappers.
+  std::vector<BlockLook> BlockLooks(vtkActor* act);
+  bool HasBlocks(bool translucent);
+  void BuildIfNeeded();
 
 private:
   vtkShadingLabCompositePolyDataMapper(const vtkShadingLabCompositePolyDataMapper&) = delete;

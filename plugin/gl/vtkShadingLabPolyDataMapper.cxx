@@ -103,6 +103,40 @@ const sl::Material<double>& vtkShadingLabPolyDataMapper::GetMaterial() const
   return this->Internal->Material;
 }
 
+void vtkShadingLabPolyDataMapper::SetBlockOverrides(const double* color, double opacity)
+{
+  this->BlockColorSet = color != nullptr;
+  if (color)
+  {
+    std::copy(color, color + 3, this->BlockColor);
+  }
+  this->BlockOpacity = opacity;
+}
+
+void vtkShadingLabPolyDataMapper::SetPropertyShaderParameters(
+  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
+{
+  this->Superclass::SetPropertyShaderParameters(cellBO, ren, act);
+  vtkShaderProgram* program = cellBO.Program;
+  if (!program)
+  {
+    return;
+  }
+  // VTK's uniforms from the property, replaced by the block's (VTK sets
+  // diffuseColorUniform to Diffuse x DiffuseColor).
+  if (this->BlockColorSet && program->IsUniformUsed("diffuseColorUniform"))
+  {
+    const double k = act->GetProperty()->GetDiffuse();
+    const float rgb[3] = { static_cast<float>(k * this->BlockColor[0]),
+      static_cast<float>(k * this->BlockColor[1]), static_cast<float>(k * this->BlockColor[2]) };
+    program->SetUniform3f("diffuseColorUniform", rgb);
+  }
+  if (this->BlockOpacity >= 0.0 && program->IsUniformUsed("opacityUniform"))
+  {
+    program->SetUniformf("opacityUniform", static_cast<float>(this->BlockOpacity));
+  }
+}
+
 int vtkShadingLabPolyDataMapper::GetDrawnMode() const
 {
   return this->ShadingMode == AUTO ? this->Internal->Drawn : this->ShadingMode;
@@ -451,7 +485,7 @@ void vtkShadingLabPolyDataMapper::SetMapperShaderParameters(
   const double* ia = ren->GetAmbient();
   vtkProperty* prop = act->GetProperty();
   const double diffuseCoefficient = prop->GetDiffuse();
-  const double* dc = prop->GetDiffuseColor();
+  const double* dc = this->BlockColorSet ? this->BlockColor : prop->GetDiffuseColor();
   const float values[] = { static_cast<float>(m.ambient.x * ia[0]), static_cast<float>(m.ambient.y * ia[1]),
     static_cast<float>(m.ambient.z * ia[2]), static_cast<float>(m.specularColor.x),
     static_cast<float>(m.specularColor.y), static_cast<float>(m.specularColor.z),

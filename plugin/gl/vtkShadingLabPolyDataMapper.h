@@ -83,6 +83,12 @@ public:
   vtkGetMacro(MaxError, double);
   ///@}
 
+  /// Per-block overrides from a composite mapper (ParaView's block colours
+  /// and opacities): `color` (nullptr: the property's) is the albedo rho of
+  /// a block drawn without scalar colours, `opacity` (< 0: the property's)
+  /// its opacity. Uniforms only: no shader rebuild.
+  void SetBlockOverrides(const double* color, double opacity);
+
   /// The mode the last render drew: ShadingMode, or AUTO's choice.
   int GetDrawnMode() const;
   /// AUTO: the last choice's reasons (predictors, each mode's predicted
@@ -140,9 +146,14 @@ protected:
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
   bool GetNeedToRebuildShaders(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
   void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+  void SetPropertyShaderParameters(
+    vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
 
   int ShadingMode = PHONG;
   double MaxError = 1.0;
+  bool BlockColorSet = false;
+  double BlockColor[3] = { 1, 1, 1 };
+  double BlockOpacity = -1.0;
   bool PerspectiveCorrect = true;
   double FastPhongMaxSpread = 30.0;
   int NormalWeighting = 1;

@@ -5,7 +5,10 @@
 #include "vtkShadingLabCompositePolyDataMapper.h"
 #include "vtkShadingLabPolyDataMapper.h"
 
+#include <vtkCompositeDataDisplayAttributes.h>
 #include <vtkObjectFactory.h>
+#include <vtkPVView.h>
+#include <vtkSmartPointer.h>
 
 namespace sl = shadinglab;
 
@@ -16,6 +19,10 @@ struct vtkShadingLabSurfaceRepresentation::Internals
   sl::Material<double> Applied;    ///< the last valid material, on the mappers
   std::string Problem;
   std::string AutoChoice; ///< GetAutoChoice's storage
+  /// The mappers' block attributes (full and LOD), and the superclass's
+  /// BlockAttributeTime they were made at.
+  vtkSmartPointer<vtkCompositeDataDisplayAttributes> BlockAttributes[2];
+  vtkMTimeType BlockAttributesFrom = 0;
   bool Dirty = true; ///< a material property changed since the last UpdateMaterial
 };
 
@@ -229,7 +236,42 @@ int vtkShadingLabSurfaceRepresentation::ProcessViewRequest(
   {
     this->UpdateMaterial();
   }
-  return this->Superclass::ProcessViewRequest(request, inInfo, outInfo);
+  const int result = this->Superclass::ProcessViewRequest(request, inInfo, outInfo);
+  if (result && request == vtkPVView::REQUEST_RENDER())
+  {
+    this->UpdateBlockAttributes();
+  }
+  return result;
+}
+
+void vtkShadingLabSurfaceRepresentation::UpdateBlockAttributes()
+{
+  // The superclass hands block colours, opacities and visibility only to a
+  // vtkCompositePolyDataMapper2; it stamps BlockAttributeTime when they or
+  // the data changed: then ours are made from the same settings
+  // (PopulateBlockAttributes) for the data the mappers were just given.
+  Internals& in = *this->Internal;
+  if (in.BlockAttributesFrom == this->BlockAttributeTime.GetMTime())
+  {
+    return;
+  }
+  in.BlockAttributesFrom = this->BlockAttributeTime.GetMTime();
+  vtkMapper* mappers[2] = { this->Mapper, this->LODMapper };
+  for (int k = 0; k < 2; ++k)
+  {
+    auto* mapper = vtkShadingLabCompositePolyDataMapper::SafeDownCast(mappers[k]);
+    vtkDataObject* data = mapper ? mapper->GetInputDataObject(0, 0) : nullptr;
+    if (!data)
+    {
+      continue;
+    }
+    if (!in.BlockAttributes[k])
+    {
+      in.BlockAttributes[k] = vtkSmartPointer<vtkCompositeDataDisplayAttributes>::New();
+    }
+    this->PopulateBlockAttributes(in.BlockAttributes[k], data);
+    mapper->SetBlockAttributes(in.BlockAttributes[k]);
+  }
 }
 
 void vtkShadingLabSurfaceRepresentation::UpdateMaterial()

@@ -92,6 +92,9 @@ protected:
 
   /// Pushes the material to both mappers after validating it.
   void UpdateMaterial();
+  /// Hands ParaView's block colours, opacities and visibility to both
+  /// mappers (the superclass gives them to vtkCompositePolyDataMapper2 only).
+  void UpdateBlockAttributes();
 
 private:
   vtkShadingLabSurfaceRepresentation(const vtkShadingLabSurfaceRepresentation&) = delete;

@@ -503,3 +503,50 @@ TEST(CliTest, AutoModeChoosesByTheErrorBudgetAndSaysWhy)
     EXPECT_EQ(CountLines(r.err), 1) << bad << ": " << r.err;
   }
 }
+
+namespace
+{
+/// The number after "KEY": in a one-line JSON object, or NaN when absent.
+double JsonNumber(const std::string& json, const std::string& key)
+{
+  const auto at = json.find("\"" + key + "\":");
+  if (at == std::string::npos)
+  {
+    return std::nan("");
+  }
+  return std::strtod(json.c_str() + at + key.size() + 3, nullptr);
+}
+} // namespace
+
+TEST(CliTest, StatsBreakTheRunIntoReadPrepareRenderWrite)
+{
+  // Where a user's wait goes (issue 13): each phase timed, and the phases
+  // add up to no more than the whole.
+  const std::string in = std::string(SHADINGLAB_SOURCE_DIR) + "/datasets/torus_48x24.vtp";
+  const std::string png = ::testing::TempDir() + "/shadinglab_phases.png";
+  const auto r = RunCli("render " + in + " --backend cpu --size 64x48 --stats --out " + png);
+  ASSERT_EQ(r.status, 0) << r.err;
+  double sum = 0;
+  for (const char* key : { "read_ms", "prepare_ms", "render_ms", "write_ms" })
+  {
+    const double v = JsonNumber(r.out, key);
+    EXPECT_TRUE(v >= 0 && v < 60000) << key << " in " << r.out;
+    sum += v;
+  }
+  EXPECT_GT(JsonNumber(r.out, "read_ms"), 0.0) << r.out;
+  EXPECT_EQ(JsonNumber(r.out, "render_ms"), JsonNumber(r.out, "milliseconds")) << r.out;
+  EXPECT_LE(sum, JsonNumber(r.out, "total_ms") + 1e-3) << r.out;
+
+  const std::string vtp = ::testing::TempDir() + "/shadinglab_phases.vtp";
+  const auto n = RunCli("normals " + in + " --out " + vtp + " --json");
+  ASSERT_EQ(n.status, 0) << n.err;
+  sum = 0;
+  for (const char* key : { "read_ms", "prepare_ms", "write_ms" })
+  {
+    const double v = JsonNumber(n.out, key);
+    EXPECT_TRUE(v >= 0 && v < 60000) << key << " in " << n.out;
+    sum += v;
+  }
+  EXPECT_GT(JsonNumber(n.out, "write_ms"), 0.0) << n.out;
+  EXPECT_LE(sum, JsonNumber(n.out, "total_ms") + 1e-3) << n.out;
+}

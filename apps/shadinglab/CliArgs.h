@@ -4,6 +4,7 @@
 // exits with status 2.
 #pragma once
 
+#include <chrono>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -11,6 +12,21 @@
 
 namespace shadinglab::cli
 {
+
+/// Wall time since construction, for the commands' phase breakdowns
+/// (`render --stats`, `normals --json`: read, prepare, render, write).
+class Stopwatch
+{
+public:
+  double Milliseconds() const
+  {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - this->Start)
+      .count();
+  }
+
+private:
+  std::chrono::steady_clock::time_point Start = std::chrono::steady_clock::now();
+};
 
 struct UsageError : std::runtime_error
 {

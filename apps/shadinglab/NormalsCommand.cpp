@@ -34,6 +34,7 @@ const char* kNormalsHelp =
 
 int RunNormals(int argc, char** argv)
 {
+  const Stopwatch total;
   const Arguments args(argc, argv, { "out", "weights", "feature-angle", "subdivide", "scheme" },
     { "help", "json", "fix-t-junctions" }, {}, { "weld" });
   if (args.Has("help"))
@@ -60,6 +61,7 @@ int RunNormals(int argc, char** argv)
   }
   mesh::PreparationOptions options = MeshPipelineFromArguments(args, true);
   vtkSmartPointer<vtkPolyData> input;
+  const Stopwatch reading;
   try
   {
     input.TakeReference(ReadMesh(args.Positionals()[0]));
@@ -68,6 +70,8 @@ int RunNormals(int argc, char** argv)
   {
     throw UsageError(e.what());
   }
+  const double readMs = reading.Milliseconds();
+  const Stopwatch preparing;
   mesh::PreparationReport report;
   vtkSmartPointer<vtkPolyData> output;
   try
@@ -78,6 +82,8 @@ int RunNormals(int argc, char** argv)
   {
     throw UsageError(e.what());
   }
+  const double prepareMs = preparing.Milliseconds();
+  const Stopwatch writing;
   try
   {
     WriteMesh(output, args.Get("out"));
@@ -86,13 +92,15 @@ int RunNormals(int argc, char** argv)
   {
     throw UsageError(e.what());
   }
+  const double writeMs = writing.Milliseconds();
   if (args.Has("json"))
   {
     std::printf("{\"points_in\":%lld,\"cells_in\":%lld,\"points_out\":%lld,\"cells_out\":%lld,"
                 "\"welded\":%lld,\"t_junctions_fixed\":%lld,\"degenerate_removed\":%lld,"
                 "\"nonmanifold_edges\":%lld,\"duplicated_points\":%lld,\"flipped\":%lld,"
                 "\"crease_edges\":%lld,\"split_points\":%lld,\"subdivision_levels\":%d,"
-                "\"scheme\":\"%s\",\"weights\":\"%s\",\"repair_skipped\":%s}\n",
+                "\"scheme\":\"%s\",\"weights\":\"%s\",\"repair_skipped\":%s,\"read_ms\":%.3f,"
+                "\"prepare_ms\":%.3f,\"write_ms\":%.3f,\"total_ms\":%.3f}\n",
       static_cast<long long>(input->GetNumberOfPoints()),
       static_cast<long long>(input->GetNumberOfCells()),
       static_cast<long long>(output->GetNumberOfPoints()),
@@ -103,7 +111,7 @@ int RunNormals(int argc, char** argv)
       static_cast<long long>(report.duplicatedPoints), static_cast<long long>(report.flipped),
       static_cast<long long>(report.creaseEdges), static_cast<long long>(report.splitPoints),
       options.subdivisionLevels, report.scheme.c_str(), report.weights.c_str(),
-      report.repairSkipped ? "true" : "false");
+      report.repairSkipped ? "true" : "false", readMs, prepareMs, writeMs, total.Milliseconds());
   }
   return 0;
 }

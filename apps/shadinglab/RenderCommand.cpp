@@ -28,6 +28,7 @@ const char* kRenderHelp =
 
 int RunRender(int argc, char** argv)
 {
+  const Stopwatch total;
   const auto request = SceneFromArguments(argc, argv, kRenderHelp);
   if (request->helpShown)
   {
@@ -41,7 +42,9 @@ int RunRender(int argc, char** argv)
   render::RenderStats stats;
   const render::Image& image = RenderOrExplain(*renderer, request->scene, options, &stats, "");
   const std::string out = args.Get("out", "out.png");
+  const Stopwatch writing;
   WritePng(image.width, image.height, image.ToRGB8(request->display), out);
+  const double writeMs = writing.Milliseconds();
   // Notices come after success, so that an error stays one line.
   if (stats.normalsComputed)
   {
@@ -60,7 +63,8 @@ int RunRender(int argc, char** argv)
                 "\"milliseconds\":%.3f,\"polygons\":%lld,\"triangles\":%lld,\"rasterized\":%lld,"
                 "\"clipped\":%lld,\"degenerate\":%lld,\"skipped\":%lld,\"pixels_covered\":%lld,"
                 "\"pixels_shaded\":%lld,\"overdraw\":%.3f,\"fast_phong_exact\":%lld,\"threads\":%d,"
-                "\"shader_builds\":%d,\"normals_computed\":%s%s}\n",
+                "\"shader_builds\":%d,\"normals_computed\":%s,\"read_ms\":%.3f,"
+                "\"prepare_ms\":%.3f,\"render_ms\":%.3f,\"write_ms\":%.3f,\"total_ms\":%.3f%s}\n",
       render::BackendName(renderer->GetBackend()), render::ShadingModeName(options.mode),
       ReflectanceModelName(request->scene.material.model), options.width, options.height, options.ssaa,
       stats.milliseconds, static_cast<long long>(stats.polygons),
@@ -71,7 +75,8 @@ int RunRender(int argc, char** argv)
       // Shading evaluations per covered pixel (0 when nothing is covered).
       stats.pixelsCovered ? double(stats.pixelsShaded) / stats.pixelsCovered : 0.0,
       static_cast<long long>(stats.fastPhongExact), stats.threads, stats.shaderBuilds,
-      stats.normalsComputed ? "true" : "false",
+      stats.normalsComputed ? "true" : "false", request->readMs, request->prepareMs,
+      stats.milliseconds, writeMs, total.Milliseconds(),
       request->autoChoice.empty() ? "" : (",\"auto\":\"" + request->autoChoice + "\"").c_str());
   }
   return 0;

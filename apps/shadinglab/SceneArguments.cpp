@@ -257,6 +257,7 @@ std::unique_ptr<SceneArguments> SceneFromArguments(int argc, char** argv, const 
   }
 
   vtkSmartPointer<vtkPolyData> polydata;
+  const Stopwatch reading;
   try
   {
     polydata.TakeReference(ReadMesh(input));
@@ -265,6 +266,8 @@ std::unique_ptr<SceneArguments> SceneFromArguments(int argc, char** argv, const 
   {
     throw UsageError(e.what());
   }
+  scene.readMs = reading.Milliseconds();
+  const Stopwatch preparing;
   scene.input = input;
   mesh::PreparationOptions preparation = MeshPipelineFromArguments(args, false);
   if (!WantsMeshPipeline(args))
@@ -435,6 +438,7 @@ std::unique_ptr<SceneArguments> SceneFromArguments(int argc, char** argv, const 
     options.mode = choice.mode;
     result->autoChoice = choice.why;
   }
+  result->prepareMs = preparing.Milliseconds();
   return result;
 }
 

@@ -32,6 +32,8 @@ struct SceneArguments
   render::DisplayTransform display = render::DisplayTransform::Clamp;
   std::string notices; ///< said after success (errors stay one line)
   std::string autoChoice; ///< --mode auto: what was chosen and why (--stats)
+  double readMs = 0;    ///< reading (and checking) the input file
+  double prepareMs = 0; ///< the repair check, repair, conversion, auto choice
 };
 
 /// The options 'render' and 'compare' accept, in their --help.

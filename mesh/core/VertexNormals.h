@@ -75,6 +75,15 @@ inline double AcosAbramowitzStegun(double x)
 /// no usable face gets (0, 0, 1) rather than NaN.
 NormalResult ComputeVertexNormals(const MeshView& mesh, const NormalOptions& options);
 
+/**
+ * The angle-weight loop runs 4 doubles wide (AVX2) when the CPU has AVX2,
+ * else 2 wide (SSE2, every x86-64). SetWideSimd(false) forces the 2-wide
+ * path (tests compare the two; results are identical: the same arithmetic
+ * per lane). WideSimdInUse says which runs.
+ */
+void SetWideSimd(bool enabled);
+bool WideSimdInUse();
+
 /// The crease-free normals only (one per input point), the fast path.
 void ComputeVertexNormalsNoSplit(
   const MeshView& mesh, NormalWeighting weighting, std::vector<double>& normals);

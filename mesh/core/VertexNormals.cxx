@@ -330,7 +330,9 @@ NormalResult ComputeVertexNormals(const MeshView& m, const NormalOptions& opt)
   NormalResult r;
   const int64_t nv = m.numberOfPoints, np = m.numberOfPolygons;
   const int64_t nc = np > 0 ? m.offsets[np] : 0;
-  r.connectivity.assign(m.connectivity, m.connectivity + nc);
+  // Corners moved to a split copy of their vertex (corner, new point): the
+  // output connectivity is made from them only if there are any.
+  std::vector<std::pair<int64_t, int64_t>> moved;
 
   // Scratch arrays persist per thread across calls: a filter re-run on a
   // large mesh then reuses their pages instead of faulting in ~100 MB anew
@@ -354,7 +356,10 @@ NormalResult ComputeVertexNormals(const MeshView& m, const NormalOptions& opt)
   }
   std::partial_sum(start.begin(), start.end(), start.begin());
   corners.resize(static_cast<size_t>(nc));
-  cornerPolygon.resize(static_cast<size_t>(nc));
+  // A mesh of triangles only finds a corner's polygon as c / 3; others keep
+  // a table (8 bytes a corner: 120 MB on 5M triangles).
+  const bool trianglesOnly = nc == 3 * np;
+  cornerPolygon.resize(trianglesOnly ? 0 : static_cast<size_t>(nc));
   {
     fill.assign(start.begin(), start.end() - 1);
     for (int64_t p = 0; p < np; ++p)
@@ -362,10 +367,14 @@ NormalResult ComputeVertexNormals(const MeshView& m, const NormalOptions& opt)
       for (int64_t c = m.offsets[p]; c < m.offsets[p + 1]; ++c)
       {
         corners[fill[m.connectivity[c]]++] = c;
-        cornerPolygon[c] = p;
+        if (!trianglesOnly)
+        {
+          cornerPolygon[c] = p;
+        }
       }
     }
   }
+  auto polygonOf = [&](int64_t c) { return trianglesOnly ? c / 3 : cornerPolygon[c]; };
 
   // Explicit feature edges, as sorted (min, max) pairs.
   std::vector<std::pair<int64_t, int64_t>> features;
@@ -421,7 +430,7 @@ NormalResult ComputeVertexNormals(const MeshView& m, const NormalOptions& opt)
       for (int32_t i = 0; i < count; ++i)
       {
         const int64_t c = corners[cb + i];
-        const int64_t p = cornerPolygon[c];
+        const int64_t p = polygonOf(c);
         const int64_t b = m.offsets[p], n = m.offsets[p + 1] - b, k = c - b;
         ends[2 * i] = { m.connectivity[b + (k + 1 == n ? 0 : k + 1)], i };
         ends[2 * i + 1] = { m.connectivity[b + (k == 0 ? n - 1 : k - 1)], i };
@@ -469,7 +478,7 @@ NormalResult ComputeVertexNormals(const MeshView& m, const NormalOptions& opt)
         else
         {
           const int32_t a = ends[i].local, b = ends[i + 1].local;
-          const int64_t pa = cornerPolygon[corners[cb + a]], pb = cornerPolygon[corners[cb + b]];
+          const int64_t pa = polygonOf(corners[cb + a]), pb = polygonOf(corners[cb + b]);
           // cos(dihedral) < cosFeature, without dividing: a.b < cos |a||b|.
           const bool crease = Dot(area[pa], area[pb]) < cosFeature * areaLength[pa] * areaLength[pb] ||
             isFeature(v, w);
@@ -514,13 +523,16 @@ NormalResult ComputeVertexNormals(const MeshView& m, const NormalOptions& opt)
       }
       const int64_t point = groupPoint[groupOf[root]];
       const int64_t c = corners[cb + i];
-      const int64_t p = cornerPolygon[c];
+      const int64_t p = polygonOf(c);
       const int64_t b = m.offsets[p], n = m.offsets[p + 1] - b;
       if (n < 3)
       {
         continue;
       }
-      r.connectivity[c] = point;
+      if (point != v)
+      {
+        moved.emplace_back(c, point);
+      }
       const V3 w = CornerContribution(m, b, n, c - b, area[p], areaLength[p], opt.weighting);
       normals[3 * point] += w.x;
       normals[3 * point + 1] += w.y;
@@ -532,6 +544,14 @@ NormalResult ComputeVertexNormals(const MeshView& m, const NormalOptions& opt)
     Normalize(&normals[i]);
   }
   r.normals = std::move(normals);
+  if (!moved.empty())
+  {
+    r.connectivity.assign(m.connectivity, m.connectivity + nc);
+    for (const auto& [c, point] : moved)
+    {
+      r.connectivity[c] = point;
+    }
+  }
   return r;
 }
 

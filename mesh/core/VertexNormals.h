@@ -42,7 +42,9 @@ struct NormalResult
   /// Output point -> input point (identity for the first copy of each point).
   std::vector<int64_t> originalPointIds;
   /// Output connectivity (same offsets as the input): corners re-pointed to
-  /// the copy of their vertex on their side of a crease.
+  /// the copy of their vertex on their side of a crease. Empty when no
+  /// corner was moved (no split point, or only points of polygons with
+  /// fewer than 3 corners): the input's connectivity holds.
   std::vector<int64_t> connectivity;
   int64_t creaseEdges = 0;       ///< edges split because of the feature angle or explicit marks
   int64_t nonManifoldEdges = 0;  ///< edges with more than two faces

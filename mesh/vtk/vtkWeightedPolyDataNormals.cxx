@@ -123,9 +123,9 @@ int vtkWeightedPolyDataNormals::RequestData(
   outPD->AddArray(originalIds);
 
   output->SetPoints(points);
-  if (nOut == nIn)
+  if (nOut == nIn || result.connectivity.empty())
   {
-    // No point was split: the polygons are the input's, shared.
+    // No corner was moved to a split point: the polygons are the input's.
     output->SetPolys(source->GetPolys());
   }
   else

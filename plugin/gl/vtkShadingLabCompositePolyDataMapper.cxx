@@ -48,6 +48,13 @@ vtkPolyDataMapper* vtkShadingLabCompositePolyDataMapper::MakeAMapper()
     this->BuildSeen = this->InternalMappersBuildTime.GetMTime();
   }
   auto* mapper = vtkShadingLabPolyDataMapper::New();
+  this->PassSettings(mapper);
+  this->BlockMappers.emplace_back(mapper);
+  return mapper;
+}
+
+void vtkShadingLabCompositePolyDataMapper::PassSettings(vtkShadingLabPolyDataMapper* mapper)
+{
   mapper->SetShadingMode(this->ShadingMode);
   mapper->SetMaxError(this->MaxError);
   mapper->SetPerspectiveCorrect(this->PerspectiveCorrect);
@@ -56,8 +63,6 @@ vtkPolyDataMapper* vtkShadingLabCompositePolyDataMapper::MakeAMapper()
   mapper->SetFeatureAngle(this->FeatureAngle);
   mapper->SetRecomputeNormals(this->RecomputeNormals);
   mapper->SetMaterial(this->Material);
-  this->BlockMappers.emplace_back(mapper);
-  return mapper;
 }
 
 void vtkShadingLabCompositePolyDataMapper::SetBlockAttributes(
@@ -149,15 +154,7 @@ void vtkShadingLabCompositePolyDataMapper::Render(vtkRenderer* ren, vtkActor* ac
     {
       continue;
     }
-    // Keep the block mapper in step with this mapper's settings.
-    sm->SetShadingMode(this->ShadingMode);
-    sm->SetMaxError(this->MaxError);
-    sm->SetPerspectiveCorrect(this->PerspectiveCorrect);
-    sm->SetFastPhongMaxSpread(this->FastPhongMaxSpread);
-    sm->SetNormalWeighting(this->NormalWeighting);
-    sm->SetFeatureAngle(this->FeatureAngle);
-    sm->SetRecomputeNormals(this->RecomputeNormals);
-    sm->SetMaterial(this->Material);
+    this->PassSettings(sm); // in step with this mapper's settings
     if (sm->GetClippingPlanes() != this->ClippingPlanes)
     {
       sm->SetClippingPlanes(this->ClippingPlanes);

@@ -102,6 +102,9 @@ protected:
   /// One BlockLook per polydata leaf, in the order of BlockMappers.
   std::vector<BlockLook> BlockLooks(vtkActor* act);
   bool HasBlocks(bool translucent);
+  /// This mapper's mode, interpolation, normal settings and material onto
+  /// a block mapper.
+  void PassSettings(vtkShadingLabPolyDataMapper* mapper);
   void BuildIfNeeded();
 
 private:

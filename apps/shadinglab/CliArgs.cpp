@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "CliArgs.h"
 
+#include <sys/resource.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -8,6 +10,13 @@
 
 namespace shadinglab::cli
 {
+
+double PeakResidentMB()
+{
+  struct rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss / 1024.0; // kilobytes on Linux
+}
 
 Arguments::Arguments(int argc, char** argv, const std::vector<std::string>& valued,
   const std::vector<std::string>& flags, const std::vector<std::string>& repeatable,

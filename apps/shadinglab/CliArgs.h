@@ -28,6 +28,9 @@ private:
   std::chrono::steady_clock::time_point Start = std::chrono::steady_clock::now();
 };
 
+/// The process's peak resident memory so far, in MB (getrusage).
+double PeakResidentMB();
+
 struct UsageError : std::runtime_error
 {
   using std::runtime_error::runtime_error;

@@ -71,6 +71,7 @@ int RunNormals(int argc, char** argv)
     throw UsageError(e.what());
   }
   const double readMs = reading.Milliseconds();
+  const double readPeakMB = PeakResidentMB();
   const Stopwatch preparing;
   mesh::PreparationReport report;
   vtkSmartPointer<vtkPolyData> output;
@@ -83,6 +84,7 @@ int RunNormals(int argc, char** argv)
     throw UsageError(e.what());
   }
   const double prepareMs = preparing.Milliseconds();
+  const double preparePeakMB = PeakResidentMB();
   const Stopwatch writing;
   try
   {
@@ -100,7 +102,8 @@ int RunNormals(int argc, char** argv)
                 "\"nonmanifold_edges\":%lld,\"duplicated_points\":%lld,\"flipped\":%lld,"
                 "\"crease_edges\":%lld,\"split_points\":%lld,\"subdivision_levels\":%d,"
                 "\"scheme\":\"%s\",\"weights\":\"%s\",\"repair_skipped\":%s,\"read_ms\":%.3f,"
-                "\"prepare_ms\":%.3f,\"write_ms\":%.3f,\"total_ms\":%.3f}\n",
+                "\"prepare_ms\":%.3f,\"write_ms\":%.3f,\"total_ms\":%.3f,"
+                "\"peak_mb_after_read\":%.1f,\"peak_mb_after_prepare\":%.1f,\"peak_mb\":%.1f}\n",
       static_cast<long long>(input->GetNumberOfPoints()),
       static_cast<long long>(input->GetNumberOfCells()),
       static_cast<long long>(output->GetNumberOfPoints()),
@@ -111,7 +114,8 @@ int RunNormals(int argc, char** argv)
       static_cast<long long>(report.duplicatedPoints), static_cast<long long>(report.flipped),
       static_cast<long long>(report.creaseEdges), static_cast<long long>(report.splitPoints),
       options.subdivisionLevels, report.scheme.c_str(), report.weights.c_str(),
-      report.repairSkipped ? "true" : "false", readMs, prepareMs, writeMs, total.Milliseconds());
+      report.repairSkipped ? "true" : "false", readMs, prepareMs, writeMs, total.Milliseconds(),
+      readPeakMB, preparePeakMB, PeakResidentMB());
   }
   return 0;
 }

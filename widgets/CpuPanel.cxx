@@ -188,16 +188,10 @@ bool CpuPanel::RenderView()
   try
   {
     render::ModeChoice choice;
+    choice.mode = this->SpecValue.mode;
     this->Last = RenderOnCpu(
       *this->Renderer, this->Cache, this->SpecValue, *this->View, width, height, &choice);
-    if (this->SpecValue.autoMode)
-    {
-      this->SetAutoChoice(choice.mode, choice.why);
-    }
-    else
-    {
-      this->ClearAutoChoice();
-    }
+    this->NoteDrawnMode(choice.mode, choice.why);
   }
   catch (const std::exception& e)
   {

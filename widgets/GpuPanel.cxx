@@ -100,15 +100,8 @@ void GpuPanel::OnRenderEnd(vtkObject*, unsigned long event, void*)
     return;
   }
   this->CountRender(Now() - this->StartTime);
-  if (this->SpecValue.autoMode)
-  {
-    this->SetAutoChoice(static_cast<render::ShadingMode>(this->Mapper->GetDrawnMode()),
-      this->Mapper->GetAutoChoice());
-  }
-  else
-  {
-    this->ClearAutoChoice();
-  }
+  this->NoteDrawnMode(static_cast<render::ShadingMode>(this->Mapper->GetDrawnMode()),
+    this->Mapper->GetAutoChoice());
 }
 
 bool GpuPanel::RenderView()

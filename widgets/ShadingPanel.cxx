@@ -134,19 +134,17 @@ void ShadingPanel::UpdateTitle()
     this->Selected ? "background:#ffe9a8; color:#000;" : "color:#000;");
 }
 
-void ShadingPanel::SetAutoChoice(render::ShadingMode mode, const std::string& why)
+void ShadingPanel::NoteDrawnMode(render::ShadingMode drawn, const std::string& why)
 {
-  this->Drawn = mode;
-  this->AutoNote = QString("(auto: %1)").arg(render::ShadingModeName(mode));
-  this->TitleLabel->setToolTip(QString("Auto mode, max error %1/255: %2")
-                     .arg(this->SpecValue.maxError)
-                     .arg(QString::fromStdString(why)));
-}
-
-void ShadingPanel::ClearAutoChoice()
-{
-  this->Drawn = this->SpecValue.mode;
-  if (!this->AutoNote.isEmpty())
+  this->Drawn = drawn;
+  if (this->SpecValue.autoMode)
+  {
+    this->AutoNote = QString("(auto: %1)").arg(render::ShadingModeName(drawn));
+    this->TitleLabel->setToolTip(QString("Auto mode, max error %1/255: %2")
+                                   .arg(this->SpecValue.maxError)
+                                   .arg(QString::fromStdString(why)));
+  }
+  else if (!this->AutoNote.isEmpty())
   {
     this->AutoNote.clear();
     this->TitleLabel->setToolTip(QString());

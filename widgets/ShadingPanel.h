@@ -79,10 +79,9 @@ protected:
   /// Counts one frame drawn, taking `milliseconds`.
   void CountRender(double milliseconds);
   void UpdateTitle();
-  /// After an auto-mode render: the mode drawn and the one-line reasons
-  /// (shown in the title and its tooltip). ClearAutoChoice otherwise.
-  void SetAutoChoice(render::ShadingMode mode, const std::string& why);
-  void ClearAutoChoice();
+  /// After a render: the mode drawn and, in auto mode, the title names it
+  /// and its tooltip gives the reasons `why` (cleared otherwise).
+  void NoteDrawnMode(render::ShadingMode drawn, const std::string& why);
 
   PanelSpec SpecValue;
   ViewState* View;

@@ -485,10 +485,10 @@ std::vector<AutoCase> ValidateAutoMode(
           }
         }
       }
-      std::map<std::string, std::pair<double, double>> measured; // mode: error, ms
+      double medianMs[3];
       for (int k = 0; k < 3; ++k)
       {
-        measured[render::ShadingModeName(modes[k])] = { errors[k], Median(times[k]) };
+        medianMs[k] = Median(times[k]);
       }
       for (double budget : budgets)
       {
@@ -500,23 +500,23 @@ std::vector<AutoCase> ValidateAutoMode(
         c.maxError = budget;
         c.chosen = render::ShadingModeName(choice.mode);
         c.predicted = choice.predicted;
-        c.chosenError = measured[c.chosen].first;
-        c.chosenMs = measured[c.chosen].second;
-        c.met = c.chosenError <= budget;
         c.choice = choice;
         for (int k = 0; k < 3; ++k)
         {
           c.modeError[k] = errors[k];
-          c.modeMs[k] = measured[render::ShadingModeName(modes[k])].second;
-        }
-        for (const auto& [mode, m] : measured)
-        {
-          if (m.first <= budget && (c.cheapest.empty() || m.second < c.cheapestMs))
+          c.modeMs[k] = medianMs[k];
+          if (modes[k] == choice.mode)
           {
-            c.cheapest = mode;
-            c.cheapestMs = m.second;
+            c.chosenError = errors[k];
+            c.chosenMs = medianMs[k];
+          }
+          if (errors[k] <= budget && (c.cheapest.empty() || medianMs[k] < c.cheapestMs))
+          {
+            c.cheapest = render::ShadingModeName(modes[k]);
+            c.cheapestMs = medianMs[k];
           }
         }
+        c.met = c.chosenError <= budget;
         cases.push_back(c);
         progress(c);
       }

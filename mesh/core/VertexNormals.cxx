@@ -168,8 +168,8 @@ void AddPolygon(const MeshView& m, int64_t p, NormalWeighting weighting, double*
   }
 }
 
-/// Triangles per batch of the angle-weight path: its SoA arrays (9 doubles
-/// and 3 ids a triangle, ~30 KB) stay in L1/L2 between the passes.
+/// Triangles per batch of the angle-weight path: its arrays (9 doubles a
+/// triangle, 18 KB) stay in L1 between the passes.
 constexpr int64_t kAngleBatch = 256;
 
 /// Angle weights (Thurmer & Wuthrich 1998) of the triangles [first, last),
@@ -289,35 +289,24 @@ void ComputeVertexNormalsNoSplit(
 {
   normals.assign(static_cast<size_t>(3 * m.numberOfPoints), 0.0);
   double* out = normals.data();
-  if (weighting == NormalWeighting::Angle)
+  for (int64_t p = 0; p < m.numberOfPolygons;)
   {
-    // Runs of triangles go through the batched path; other polygons
-    // through the per-corner formula below.
-    int64_t p = 0;
-    while (p < m.numberOfPolygons)
+    // Angle weights: a run of triangles goes through the batched loop.
+    int64_t q = p;
+    while (weighting == NormalWeighting::Angle && q < m.numberOfPolygons &&
+      m.offsets[q + 1] - m.offsets[q] == 3)
     {
-      int64_t q = p;
-      while (q < m.numberOfPolygons && m.offsets[q + 1] - m.offsets[q] == 3)
-      {
-        ++q;
-      }
+      ++q;
+    }
+    if (q > p)
+    {
       AddAngleWeightedTriangles(m, p, q, out);
-      if (q < m.numberOfPolygons)
-      {
-        AddPolygon(m, q, weighting, out);
-        ++q;
-      }
       p = q;
     }
-    for (int64_t v = 0; v < m.numberOfPoints; ++v)
+    else
     {
-      Normalize(out + 3 * v);
+      AddPolygon(m, p++, weighting, out);
     }
-    return;
-  }
-  for (int64_t p = 0; p < m.numberOfPolygons; ++p)
-  {
-    AddPolygon(m, p, weighting, out);
   }
   for (int64_t v = 0; v < m.numberOfPoints; ++v)
   {

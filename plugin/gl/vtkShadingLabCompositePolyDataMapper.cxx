@@ -8,7 +8,6 @@
 #include <vtkCompositeDataPipeline.h>
 #include <vtkDataObjectTree.h>
 #include <vtkDataObjectTreeIterator.h>
-#include <vtkNew.h>
 #include <vtkObjectFactory.h>
 #include <vtkPolyData.h>
 #include <vtkProperty.h>
@@ -82,16 +81,15 @@ void vtkShadingLabCompositePolyDataMapper::BuildIfNeeded()
 }
 
 std::vector<vtkShadingLabCompositePolyDataMapper::BlockLook>
-vtkShadingLabCompositePolyDataMapper::BlockLooks(vtkActor* act)
+vtkShadingLabCompositePolyDataMapper::BlockLooks(double actorOpacity)
 {
   // Each polydata leaf in the superclass's traversal order (depth first,
   // children in order, empty nodes skipped), with the attributes of its
   // nearest ancestor (itself included) that sets them, as
   // vtkCompositePolyDataMapper2 inherits them; the actor's otherwise.
   std::vector<BlockLook> looks;
-  vtkProperty* prop = act->GetProperty();
   BlockLook root;
-  root.opacity = prop->GetOpacity();
+  root.opacity = actorOpacity;
   vtkCompositeDataDisplayAttributes* attrs = this->BlockAttributes;
   std::function<void(vtkDataObject*, BlockLook)> visit = [&](vtkDataObject* node, BlockLook look) {
     if (!node)
@@ -129,21 +127,29 @@ vtkShadingLabCompositePolyDataMapper::BlockLooks(vtkActor* act)
     }
   };
   visit(this->GetInputDataObject(0, 0), root);
+  if (looks.size() != this->BlockMappers.size())
+  {
+    looks.assign(this->BlockMappers.size(), root); // unknown layout: the actor's look
+  }
   return looks;
+}
+
+bool vtkShadingLabCompositePolyDataMapper::DrawnTranslucent(
+  const BlockLook& look, vtkShadingLabPolyDataMapper* block, double actorOpacity)
+{
+  // Translucent when the block's opacity (its own, inherited, or the
+  // actor's) is below 1, the actor is translucent (a block set to 1 is then
+  // drawn with it, in the one pass that runs), or its colours are
+  // translucent. (VTK 9.2's vtkCompositePolyDataMapper looked at the
+  // colours only, so a translucent actor drew nothing.)
+  return look.opacity < 1.0 || actorOpacity < 1.0 || !block->HasOpaqueGeometry();
 }
 
 void vtkShadingLabCompositePolyDataMapper::Render(vtkRenderer* ren, vtkActor* act)
 {
   this->BuildIfNeeded();
-  std::vector<BlockLook> looks = this->BlockLooks(act);
-  if (looks.size() != this->BlockMappers.size())
-  {
-    looks.assign(this->BlockMappers.size(), BlockLook{}); // unknown layout: the actor's look
-    for (BlockLook& look : looks)
-    {
-      look.opacity = act->GetProperty()->GetOpacity();
-    }
-  }
+  const double actorOpacity = act->GetProperty()->GetOpacity();
+  const std::vector<BlockLook> looks = this->BlockLooks(actorOpacity);
   const bool translucentPass = act->IsRenderingTranslucentPolygonalGeometry() != 0;
   this->TimeToDraw = 0;
   for (size_t i = 0; i < this->BlockMappers.size(); ++i)
@@ -178,13 +184,7 @@ void vtkShadingLabCompositePolyDataMapper::Render(vtkRenderer* ren, vtkActor* ac
         sm->ColorByArrayComponent(this->ArrayName, this->ArrayComponent);
       }
     }
-    // A block is drawn in the translucent pass when its opacity (its own,
-    // inherited, or the actor's) is below 1 or its colours are translucent,
-    // else in the opaque pass. (VTK 9.2's vtkCompositePolyDataMapper looked
-    // at the colours only, so a translucent actor drew nothing.)
-    const bool translucent = look.opacity < 1.0 || !sm->HasOpaqueGeometry() ||
-      act->GetProperty()->GetOpacity() < 1.0;
-    if (translucent != translucentPass)
+    if (DrawnTranslucent(look, sm, actorOpacity) != translucentPass)
     {
       continue;
     }
@@ -210,18 +210,15 @@ bool vtkShadingLabCompositePolyDataMapper::HasBlocks(bool translucent)
 {
   // Which passes the visible blocks need, as Render decides (the actor's
   // own opacity is the actor's business: vtkActor asks for it apart).
-  vtkNew<vtkActor> opaqueActor;
-  const std::vector<BlockLook> looks = this->BlockLooks(opaqueActor);
-  const bool known = looks.size() == this->BlockMappers.size();
+  const std::vector<BlockLook> looks = this->BlockLooks(1.0);
   for (size_t i = 0; i < this->BlockMappers.size(); ++i)
   {
     vtkShadingLabPolyDataMapper* sm = this->BlockMappers[i];
-    if (!sm || !sm->GetInput() || (known && !looks[i].visible))
+    if (!sm || !sm->GetInput() || !looks[i].visible)
     {
       continue;
     }
-    const bool blockTranslucent = (known && looks[i].opacity < 1.0) || !sm->HasOpaqueGeometry();
-    if (blockTranslucent == translucent)
+    if (DrawnTranslucent(looks[i], sm, 1.0) == translucent)
     {
       return true;
     }

@@ -99,8 +99,12 @@ protected:
     double color[3] = { 1, 1, 1 };
     double opacity = 1.0;
   };
-  /// One BlockLook per polydata leaf, in the order of BlockMappers.
-  std::vector<BlockLook> BlockLooks(vtkActor* act);
+  /// One BlockLook per block mapper (per polydata leaf, in order), the
+  /// root's opacity `actorOpacity`.
+  std::vector<BlockLook> BlockLooks(double actorOpacity);
+  /// Whether Render draws `block` in the translucent pass.
+  static bool DrawnTranslucent(
+    const BlockLook& look, vtkShadingLabPolyDataMapper* block, double actorOpacity);
   bool HasBlocks(bool translucent);
   /// This mapper's mode, interpolation, normal settings and material onto
   /// a block mapper.

@@ -61,6 +61,7 @@ struct vtkShadingLabPolyDataMapper::Internals
   std::vector<float> AutoNormals;
   const vtkPolyData* AutoInput = nullptr;
   vtkMTimeType AutoFrom = 0;
+  int AutoWeighting = -1; ///< the NormalWeighting AutoNormals were made with
   int Drawn = PHONG;
   std::string AutoChoice;
 };
@@ -164,21 +165,26 @@ void vtkShadingLabPolyDataMapper::ChooseAutoMode(vtkRenderer* ren, vtkPolyData* 
     in.AutoChoice = "no polygons: phong";
     return;
   }
-  if (in.AutoInput != input || in.AutoFrom != input->GetMTime())
+  if (in.AutoInput != input || in.AutoFrom != input->GetMTime() ||
+    in.AutoWeighting != this->NormalWeighting)
   {
     in.AutoMesh = sl::render::MeshFromPolyData(input, in.AutoFrame);
     in.AutoNormals = in.AutoMesh.normals;
     if (in.AutoNormals.size() != in.AutoMesh.points.size())
     {
-      // What the mapper draws without normals: area-weighted (mesh/core).
+      // What the smooth modes draw without normals: this mapper's weighting
+      // (made once per input change; RenderPieceStart makes its own copy
+      // only in the mode chosen, which may be flat).
       sl::mesh::FlatPolygons polygons;
       sl::mesh::FlatPolygonsFromPolyData(input, polygons);
       std::vector<double> normals;
-      sl::mesh::ComputeVertexNormalsNoSplit(polygons, sl::mesh::NormalWeighting::Area, normals);
+      sl::mesh::ComputeVertexNormalsNoSplit(
+        polygons, static_cast<sl::mesh::NormalWeighting>(this->NormalWeighting), normals);
       in.AutoNormals.assign(normals.begin(), normals.end());
     }
     in.AutoInput = input;
     in.AutoFrom = input->GetMTime();
+    in.AutoWeighting = this->NormalWeighting;
   }
   sl::render::Camera camera = sl::render::CameraFromVtk(ren->GetActiveCamera());
   sl::render::ToLocal(in.AutoFrame, camera);

@@ -57,6 +57,7 @@ QWidget* MainWindow::BuildControls()
   this->MaxError->setDecimals(2);
   this->MaxError->setSingleStep(0.5);
   this->MaxError->setValue(1.0);
+  this->MaxError->setEnabled(false); // until an auto panel is selected
   this->MaxError->setToolTip("Auto mode: the mean error allowed against exact shading, in 1/255 "
                              "(docs/model.md eq. 4.1); the title shows the mode chosen.");
   panelForm->addRow("Max error (1/255)", this->MaxError);

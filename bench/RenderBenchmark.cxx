@@ -104,6 +104,37 @@ void BM_Cpu(benchmark::State& state)
     sl::ReflectanceModelName(material.model) + " threads=" + std::to_string(opt.threads));
 }
 
+/// The Phong stage's pixel kernels side by side: one pixel at a time (the
+/// scalar model), 4 lanes (SSE2) and 8 (AVX2, where the CPU has it).
+void BM_CpuLanes(benchmark::State& state)
+{
+  const int lanes = static_cast<int>(state.range(2));
+  cpu::SetPixelLanes(lanes);
+  if (cpu::PixelLanes() != lanes)
+  {
+    cpu::SetPixelLanes(0);
+    state.SkipWithError("this CPU has no AVX2 with FMA");
+    return;
+  }
+  const Scene& scene = GetScene(static_cast<int>(state.range(0)));
+  render::RenderOptions opt;
+  opt.width = kWidth;
+  opt.height = kHeight;
+  opt.mode = render::ShadingMode::Phong;
+  opt.threads = static_cast<int>(state.range(3));
+  sl::Material<double> material;
+  material.model = static_cast<sl::ReflectanceModel>(state.range(1));
+  const render::Scene renderScene{ &scene.mesh, scene.camera, Headlight(scene.camera), material };
+  cpu::SoftwareRenderer renderer;
+  for (auto _ : state)
+  {
+    benchmark::DoNotOptimize(renderer.Render(renderScene, opt).rgb.data());
+  }
+  cpu::SetPixelLanes(0);
+  state.SetLabel(std::string("phong/") + sl::ReflectanceModelName(material.model) +
+    " lanes=" + std::to_string(lanes) + " threads=" + std::to_string(opt.threads));
+}
+
 /// Renders `actor` in an offscreen 1920x1080 window with the scene's camera,
 /// once to upload, then times steady-state redraws.
 void TimeFrames(benchmark::State& state, const Scene& scene, vtkActor* actor)
@@ -256,6 +287,10 @@ BENCHMARK(BM_CpuHalfOutside)
   ->Unit(benchmark::kMillisecond)
   ->UseRealTime();
 BENCHMARK(BM_Cpu)->Apply(CpuArgs)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_CpuLanes)
+  ->ArgsProduct({ { 0, 1 }, { kBlinnPhong, kCookTorrance }, { 1, 4, 8 }, { 1, 2 } })
+  ->Unit(benchmark::kMillisecond)
+  ->UseRealTime();
 BENCHMARK(BM_VtkOpenGL)
   ->Args({ 0, VTK_GOURAUD })
   ->Args({ 0, VTK_PHONG })

@@ -82,6 +82,9 @@ std::vector<Case> Cases()
   auto image = vtkSmartPointer<vtkImageData>::New();
   image->SetDimensions(4, 5, 6);
   image->AllocateScalars(VTK_FLOAT, 1);
+  // AllocateScalars leaves the values uninitialized: garbage that was
+  // sometimes a NaN, which the reader rightly rejects.
+  image->GetPointData()->GetScalars()->Fill(0.0);
   cases.push_back({ "image", image, 94 });
   auto grid = vtkSmartPointer<vtkStructuredGrid>::New();
   grid->SetDimensions(4, 5, 6);

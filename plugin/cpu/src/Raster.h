@@ -6,6 +6,8 @@
 // shading mode: the stages (ShadingStages.h) pass their pixel functions in.
 #pragma once
 
+#include "WideShading.h"
+
 #include "shadinglab/model/Vec3.h"
 
 #include <algorithm>
@@ -111,6 +113,7 @@ void ParallelFor(int64_t count, int threads, Fn&& fn)
 struct ThreadState
 {
   std::vector<ScreenVertex> clipped; ///< vertices made by near-plane clipping
+  PixelQueue queue;                  ///< depth-tested pixels awaiting the model (Phong)
   int64_t clippedPolygons = 0, degenerate = 0, rasterized = 0, shaded = 0, fastPhongExact = 0;
   int64_t covered = 0; ///< covered pixels in this thread's bands (full resolution)
 };

@@ -203,6 +203,7 @@ private:
         this->DrawSourcePolygon(p, thread, threadCount, state);
       }
     }
+    this->Stage.Finish(state); // e.g. the pixels still queued for shading
     // Count this thread's covered pixels here, in parallel, for the stats.
     for (int b = thread; b < bands; b += threadCount)
     {

@@ -45,6 +45,8 @@ struct StageBase
     return { p, back };
   }
   bool Triangulates() const { return this->F.Opt.polygons == render::PolygonHandling::Triangulate; }
+  /// After the thread's last polygon.
+  void Finish(ThreadState&) const {}
 
   /// raster::ScanConvert over this frame's width and attribute slots.
   template<typename SpanFn, typename PixelFn>
@@ -287,6 +289,8 @@ struct PhongStage : StageBase
 
   void Vertex(int64_t v, float* raw) const { WriteVertexSlots(F, v, raw); }
 
+  /// Depth test per pixel; the survivors' attributes are queued and shaded
+  /// in SIMD batches (WideShading.h) when the queue is full and in Finish.
   void DrawPart(const ScreenVertex* const* verts,
     const int64_t*,
     int n,
@@ -297,6 +301,8 @@ struct PhongStage : StageBase
   {
     const float flip = (poly.back && F.Opt.twoSidedLighting) ? -1.0f : 1.0f;
     int64_t shaded = 0;
+    PixelQueue& q = state.queue;
+    const PixelUniforms uniforms = this->Uniforms();
     this->Scan(verts, n, rowBegin, rowEnd,
       [&](int j, int i, const float* a)
       {
@@ -306,28 +312,42 @@ struct PhongStage : StageBase
           return;
         }
         const float w = F.AttributeScale(a);
+        const int k = q.count;
         const float* nrm = a + kAttrFirst + F.NormalSlot;
-        // docs/model.md eq. 2.5: the interpolated normal is renormalized before lighting.
-        const Vec3f N = NormalizeOr(Vec3f(nrm[0], nrm[1], nrm[2]) * (w * flip), F.ToEye);
-        Vec3f P;
+        const float s = w * flip;
+        q.nx[k] = nrm[0] * s;
+        q.ny[k] = nrm[1] * s;
+        q.nz[k] = nrm[2] * s;
         if (F.PositionSlot >= 0)
         {
           const float* p = a + kAttrFirst + F.PositionSlot;
-          P = Vec3f(p[0] * w, p[1] * w, p[2] * w);
+          q.px[k] = p[0] * w;
+          q.py[k] = p[1] * w;
+          q.pz[k] = p[2] * w;
         }
-        Vec3f color = F.Mat.diffuseColor;
         if (F.ColorSlot >= 0)
         {
           const float* c = a + kAttrFirst + F.ColorSlot;
-          color = Vec3f(c[0] * w, c[1] * w, c[2] * w);
+          q.cr[k] = c[0] * w;
+          q.cg[k] = c[1] * w;
+          q.cb[k] = c[2] * w;
         }
-        const Vec3f I = F.ShadeAt(P, N, color);
-        out[0] = I.x;
-        out[1] = I.y;
-        out[2] = I.z;
+        q.out[k] = out;
+        if (++q.count == PixelQueue::kCapacity)
+        {
+          ShadeQueue(uniforms, q);
+        }
         ++shaded;
       });
     state.shaded += shaded;
+  }
+
+  void Finish(ThreadState& state) const { ShadeQueue(this->Uniforms(), state.queue); }
+
+  PixelUniforms Uniforms() const
+  {
+    return { &F.Mat, &F.Lights, F.Eye, F.ToEye, F.Cam.parallel, F.PositionSlot >= 0,
+      F.ColorSlot >= 0 };
   }
 };
 

@@ -45,4 +45,11 @@ private:
 /// Area-weighted vertex normals (sum of unnormalized face cross products).
 std::vector<float> AreaWeightedNormals(const render::Mesh& mesh);
 
+/// Pixels the Phong stage shades per instruction: 8 (AVX2 with FMA), 4
+/// (SSE2, every x86-64) or 1, the best this CPU has unless forced.
+int PixelLanes();
+/// Forces a lane count (1, 4, or 8 where the CPU has AVX2 and FMA), for
+/// tests and benchmarks; 0 or any other value restores the best.
+void SetPixelLanes(int lanes);
+
 } // namespace shadinglab::cpu

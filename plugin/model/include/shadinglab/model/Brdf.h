@@ -21,7 +21,7 @@ namespace shadinglab
 template <typename T>
 constexpr T Fd_Lambert()
 {
-  return kInvPi<T>;
+  return T(kInvPi<ScalarOf<T>>);
 }
 
 /**
@@ -36,14 +36,16 @@ constexpr T Fd_Lambert()
 template <typename T>
 SL_INLINE T Fd_LommelSeeliger(T NoL, T NoV)
 {
-  return T(2) * kInvPi<T> / std::max(NoL + NoV, kMinCosTheta<T>);
+  using S = ScalarOf<T>;
+  return T(2) * kInvPi<S> / Max(NoL + NoV, T(kMinCosTheta<S>));
 }
 
 /// Clamp of the RMS slope m to [kMinRoughness, kMaxRoughness] (see there).
 template <typename T>
-T ClampRoughness(T m)
+SL_INLINE T ClampRoughness(T m)
 {
-  return std::clamp(m, kMinRoughness<T>, kMaxRoughness<T>);
+  using S = ScalarOf<T>;
+  return Clamp(m, T(kMinRoughness<S>), T(kMaxRoughness<S>));
 }
 
 /**
@@ -54,25 +56,29 @@ T ClampRoughness(T m)
  * Deviation from the 1975 paper (no normalization) stated here on purpose:
  * one shading equation I = Ra Ia + sum I_L (N.L) dw f serves all models.
  */
-/// x^n by std::pow: the default power of the cosine lobes below. Fast Phong
-/// passes a table lookup instead (Bishop & Weimer 1986, section 4).
+/// x^n by std::pow (per lane for a batch): the default power of the cosine
+/// lobes below. Fast Phong passes a table lookup instead (Bishop & Weimer
+/// 1986, section 4).
 struct StdPow
 {
   template <typename T>
   SL_INLINE T operator()(T x, T n) const
   {
-    return std::pow(x, n);
+    return Pow(x, n);
   }
 };
 
 template <typename T, typename Power = StdPow>
 SL_INLINE T Fs_Phong(T RoV, T shininess, Power power = {})
 {
-  if (!(RoV > T(0)))
+  using S = ScalarOf<T>;
+  const auto lit = RoV > T(0);
+  if (!AnyOf(lit))
   {
     return T(0);
   }
-  return (shininess + T(2)) * (T(0.5) * kInvPi<T>)*power(std::min(RoV, T(1)), shininess);
+  return Select(lit,
+    (shininess + T(2)) * (S(0.5) * kInvPi<S>)*power(Min(RoV, T(1)), shininess), T(0));
 }
 
 /**
@@ -83,11 +89,14 @@ SL_INLINE T Fs_Phong(T RoV, T shininess, Power power = {})
 template <typename T, typename Power = StdPow>
 SL_INLINE T Fs_BlinnPhong(T NoH, T shininess, Power power = {})
 {
-  if (!(NoH > T(0)))
+  using S = ScalarOf<T>;
+  const auto lit = NoH > T(0);
+  if (!AnyOf(lit))
   {
     return T(0);
   }
-  return (shininess + T(8)) * (T(0.125) * kInvPi<T>)*power(std::min(NoH, T(1)), shininess);
+  return Select(lit,
+    (shininess + T(8)) * (S(0.125) * kInvPi<S>)*power(Min(NoH, T(1)), shininess), T(0));
 }
 
 /**
@@ -101,21 +110,24 @@ SL_INLINE T Fs_BlinnPhong(T NoH, T shininess, Power power = {})
 template <typename T>
 SL_INLINE T D_Beckmann(T NoH, T m)
 {
-  if (!(NoH > T(0)))
+  using S = ScalarOf<T>;
+  const auto facing = NoH > T(0);
+  if (!AnyOf(facing))
   {
     return T(0);
   }
-  NoH = std::min(NoH, T(1));
+  NoH = Min(NoH, T(1));
   m = ClampRoughness(m);
   const T cos2Alpha = NoH * NoH;
   const T cos4Alpha = cos2Alpha * cos2Alpha;
-  if (cos4Alpha < kMinCos4Alpha<T>)
+  const auto inLobe = facing && !(cos4Alpha < T(kMinCos4Alpha<S>));
+  if (!AnyOf(inLobe))
   {
     return T(0);
   }
   const T tan2Alpha = (T(1) - cos2Alpha) / cos2Alpha;
   const T m2 = m * m;
-  return std::exp(-tan2Alpha / m2) / (m2 * cos4Alpha);
+  return Select(inLobe, Exp(-tan2Alpha / m2) / (m2 * cos4Alpha), T(0));
 }
 
 /// One lobe of a Beckmann mixture: weight w_k and RMS slope m_k.
@@ -152,17 +164,20 @@ SL_INLINE T D_BeckmannMixture(T NoH, const BeckmannLobe<T>* lobes, int count)
 template <typename T>
 SL_INLINE T G_CookTorrance(T NoH, T NoV, T NoL, T VoH)
 {
-  if (!(NoL > T(0)) || !(NoV > T(0)) || !(NoH > T(0)))
+  using S = ScalarOf<T>;
+  const auto visible = NoL > T(0) && NoV > T(0) && NoH > T(0);
+  if (!AnyOf(visible))
   {
     return T(0);
   }
-  if (VoH < kMinVoH<T>)
+  const auto grazing = VoH < T(kMinVoH<S>);
+  if (AllOf(grazing))
   {
-    return T(1);
+    return Select(visible, T(1), T(0));
   }
   const T Gs = T(2) * NoH * NoL / VoH;
   const T Gm = T(2) * NoH * NoV / VoH;
-  return std::min(T(1), std::min(Gs, Gm));
+  return Select(visible, Select(grazing, T(1), Min(T(1), Min(Gs, Gm))), T(0));
 }
 
 /// Which specular denominator Cook-Torrance uses.
@@ -186,13 +201,15 @@ enum class SpecularVariant
 template <typename T>
 SL_INLINE T Fs_CookTorrance(T F, T D, T G, T NoL, T NoV, SpecularVariant variant)
 {
-  if (!(NoL > T(0)) || !(NoV > T(0)))
+  using S = ScalarOf<T>;
+  const auto lit = NoL > T(0) && NoV > T(0);
+  if (!AnyOf(lit))
   {
     return T(0);
   }
-  const T denominator = std::max(NoL, kMinCosTheta<T>) * std::max(NoV, kMinCosTheta<T>);
-  const T jacobian = variant == SpecularVariant::Walter2007 ? T(4) : T(1);
-  return F * D * G * kInvPi<T> / (jacobian * denominator);
+  const T denominator = Max(NoL, T(kMinCosTheta<S>)) * Max(NoV, T(kMinCosTheta<S>));
+  const S jacobian = variant == SpecularVariant::Walter2007 ? S(4) : S(1);
+  return Select(lit, F * D * G * kInvPi<S> / (jacobian * denominator), T(0));
 }
 
 /**
@@ -202,13 +219,15 @@ SL_INLINE T Fs_CookTorrance(T F, T D, T G, T NoL, T NoV, SpecularVariant variant
 template <typename T>
 SL_INLINE Vec3<T> HalfVector(const Vec3<T>& L, const Vec3<T>& V, const Vec3<T>& N)
 {
+  using S = ScalarOf<T>;
   const Vec3<T> sum = L + V;
   const T lengthSq = Dot(sum, sum);
-  if (!(lengthSq >= kMinHalfVectorLength<T> * kMinHalfVectorLength<T>))
+  const auto defined = lengthSq >= T(kMinHalfVectorLength<S> * kMinHalfVectorLength<S>);
+  if (!AnyOf(defined))
   {
     return N;
   }
-  return sum * (T(1) / std::sqrt(lengthSq));
+  return Select(defined, sum * (T(1) / Sqrt(lengthSq)), N);
 }
 
 } // namespace shadinglab

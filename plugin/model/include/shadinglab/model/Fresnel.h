@@ -2,6 +2,7 @@
 // Fresnel reflectance: the F term of Cook-Torrance (docs/model.md eq. 1.8-1.9).
 #pragma once
 
+#include "shadinglab/model/Lanes.h"
 #include "shadinglab/model/Vec3.h"
 
 #include <algorithm>
@@ -37,22 +38,24 @@ namespace shadinglab
 template <typename T>
 SL_INLINE T F_Dielectric(T cosTheta_i, T eta)
 {
-  if (eta == T(1))
+  const auto invisible = eta == T(1);
+  if (AllOf(invisible))
   {
     return T(0);
   }
-  cosTheta_i = std::clamp(cosTheta_i, T(0), T(1));
-  const T sin2Theta_i = std::max(T(0), T(1) - cosTheta_i * cosTheta_i);
+  cosTheta_i = Clamp(cosTheta_i, T(0), T(1));
+  const T sin2Theta_i = Max(T(0), T(1) - cosTheta_i * cosTheta_i);
   const T sin2Theta_t = sin2Theta_i / (eta * eta);
   // Handle total internal reflection case
-  if (sin2Theta_t >= T(1))
+  const auto totalInternal = sin2Theta_t >= T(1);
+  if (AllOf(totalInternal))
   {
-    return T(1);
+    return Select(invisible, T(0), T(1));
   }
-  const T cosTheta_t = std::sqrt(T(1) - sin2Theta_t);
+  const T cosTheta_t = Sqrt(T(1) - sin2Theta_t);
   const T rs = (cosTheta_i - eta * cosTheta_t) / (cosTheta_i + eta * cosTheta_t);
   const T rp = (eta * cosTheta_i - cosTheta_t) / (eta * cosTheta_i + cosTheta_t);
-  return T(0.5) * (rs * rs + rp * rp);
+  return Select(invisible, T(0), Select(totalInternal, T(1), T(0.5) * (rs * rs + rp * rp)));
 }
 
 /// s- and p-polarized reflectances (Rs, Rp) of a dielectric; F = (Rs+Rp)/2.
@@ -90,23 +93,25 @@ void F_DielectricPolarized(T cosTheta_i, T eta, T& Rs, T& Rp)
  * @param k extinction coefficient (>= 0).
  */
 template <typename T>
-T F_Conductor(T cosTheta_i, T eta, T k)
+SL_INLINE T F_Conductor(T cosTheta_i, T eta, T k)
 {
-  using C = std::complex<T>;
-  if (k == T(0))
+  using C = ComplexOf<T>;
+  const auto dielectric = k == T(0);
+  if (AllOf(dielectric))
   {
     return F_Dielectric(cosTheta_i, eta);
   }
-  cosTheta_i = std::clamp(cosTheta_i, T(0), T(1));
+  cosTheta_i = Clamp(cosTheta_i, T(0), T(1));
   const C n(eta, k);
-  const T sin2Theta_i = std::max(T(0), T(1) - cosTheta_i * cosTheta_i);
+  const T sin2Theta_i = Max(T(0), T(1) - cosTheta_i * cosTheta_i);
   const C sin2Theta_t = C(sin2Theta_i) / (n * n);
-  const C cosTheta_t = std::sqrt(C(1) - sin2Theta_t);
+  const C cosTheta_t = ComplexSqrt<T>(C(T(1)) - sin2Theta_t);
   // k > 0 makes |n cos_i| + |cos_t| > 0 for every cos_i in [0, 1]: the
-  // denominators cannot vanish.
+  // denominators cannot vanish. (k = 0 lanes of a batch, which only a
+  // batch of mixed materials could have, are exact here too.)
   const C rs = (C(cosTheta_i) - n * cosTheta_t) / (C(cosTheta_i) + n * cosTheta_t);
   const C rp = (n * C(cosTheta_i) - cosTheta_t) / (n * C(cosTheta_i) + cosTheta_t);
-  return T(0.5) * (std::norm(rs) + std::norm(rp));
+  return T(0.5) * (ComplexNorm<T>(rs) + ComplexNorm<T>(rp));
 }
 
 /// Normal-incidence reflectance of a conductor: ((n-1)^2 + k^2)/((n+1)^2 + k^2).

@@ -128,7 +128,7 @@ struct Light
   /// Solid angle dw. The default pi makes a unit white light on a white
   /// Lambertian surface (kd = 1) facing it give intensity 1: I_L dw Rd = 1,
   /// the scale of the classic (unnormalized) Phong model.
-  T solidAngle = kPi<T>;
+  T solidAngle = T(kPi<ScalarOf<T>>);
   /// Point lights: I_L / (c0 + c1 d + c2 d^2) (OpenGL's fixed-function form).
   /// (1, 0, 0) disables attenuation.
   Vec3<T> attenuation{ T(1), T(0), T(0) };
@@ -178,39 +178,45 @@ struct Lighting
 };
 
 /// Direction to the light from P and the irradiance factor I_L dw
-/// (attenuated for point lights). Returns false when the light is at P.
+/// (attenuated for point lights). Returns false (per lane) when the light
+/// is at P or P is outside a spot light's cone; L and irradiance are then
+/// not to be used.
 template <typename T>
-SL_INLINE bool LightIncidence(const Light<T>& light, const Vec3<T>& P, Vec3<T>& L, Vec3<T>& irradiance)
+SL_INLINE MaskOf<T> LightIncidence(const Light<T>& light, const Vec3<T>& P, Vec3<T>& L, Vec3<T>& irradiance)
 {
+  using S = ScalarOf<T>;
   if (light.type == LightType::Directional)
   {
     L = NormalizeOr(light.vector, Vec3<T>(T(0), T(0), T(1)));
     irradiance = light.intensity * light.solidAngle;
-    return true;
+    return MaskOf<T>(true);
   }
   const Vec3<T> toLight = light.vector - P;
   const T d = Length(toLight);
-  if (!(d > T(0)))
+  auto reached = d > T(0);
+  if (!AnyOf(reached))
   {
-    return false;
+    return reached;
   }
   L = toLight / d;
   const T attenuation =
     light.attenuation.x + light.attenuation.y * d + light.attenuation.z * d * d;
   // Validation keeps c0 > 0 or the other terms positive; a zero sum at d > 0
   // cannot happen, but guard anyway so no Inf reaches a pixel.
-  irradiance = light.intensity * (light.solidAngle / std::max(attenuation, kTinyDenominator<T>));
-  if (light.coneAngle <= T(90))
+  irradiance = light.intensity * (light.solidAngle / Max(attenuation, T(kTinyDenominator<S>)));
+  if (AnyOf(light.coneAngle <= T(90)))
   {
     // Spot cone (OpenGL 1.x / VTK): outside it no light, inside cos^e.
+    // (The cone is one light's: the same in every lane.)
     const T coneDot = -Dot(L, NormalizeOr(light.spotDirection, Vec3<T>(T(0), T(0), T(-1))));
-    if (!(coneDot >= std::cos(light.coneAngle * kPi<T> / T(180))))
+    reached = reached && coneDot >= Cos(light.coneAngle * kPi<S> / S(180));
+    if (!AnyOf(reached))
     {
-      return false;
+      return reached;
     }
-    irradiance *= std::pow(coneDot, light.coneExponent);
+    irradiance *= Pow(coneDot, light.coneExponent);
   }
-  return true;
+  return reached;
 }
 
 /**
@@ -274,35 +280,42 @@ SL_INLINE Vec3<T> EvaluateBrdf(
 {
   const T NoL = Dot(N, L);
   const T NoV = Dot(N, V);
-  if (!(NoL > T(0)) || !(NoV > T(0)))
+  const auto lit = NoL > T(0) && NoV > T(0);
+  if (!AnyOf(lit))
   {
     return {};
   }
+  Vec3<T> f;
   switch (material.model)
   {
     case ReflectanceModel::Lambert:
-      return BrdfFromCosines(material, diffuseColor, T(0), T(0));
+      f = BrdfFromCosines(material, diffuseColor, T(0), T(0));
+      break;
     case ReflectanceModel::Phong:
-      return BrdfFromCosines(material, diffuseColor, T(0), Dot(Reflect(L, N), V));
+      f = BrdfFromCosines(material, diffuseColor, T(0), Dot(Reflect(L, N), V));
+      break;
     case ReflectanceModel::BlinnPhong:
-      return BrdfFromCosines(material, diffuseColor, Dot(N, HalfVector(L, V, N)), T(0));
+      f = BrdfFromCosines(material, diffuseColor, Dot(N, HalfVector(L, V, N)), T(0));
+      break;
     case ReflectanceModel::CookTorrance:
     {
       const Vec3<T> diffuse = diffuseColor * (material.kd * Fd_Lambert<T>());
       const Vec3<T> H = HalfVector(L, V, N);
       const T NoH = Dot(N, H);
-      const T VoH = std::max(Dot(V, H), T(0));
+      const T VoH = Max(Dot(V, H), T(0));
       const T D = D_BeckmannMixture(NoH, material.lobes, material.lobeCount);
       const T G = G_CookTorrance(NoH, NoV, NoL, VoH);
       // F is evaluated at theta_i = acos(L.H) (eq. 1.8); L.H = V.H.
       const Vec3<T> F = F_RGB(VoH, material.eta, material.k);
       const T DG = Fs_CookTorrance(T(1), D, G, NoL, NoV, material.variant);
-      return diffuse + F * (material.ks * DG);
+      f = diffuse + F * (material.ks * DG);
+      break;
     }
     case ReflectanceModel::LommelSeeliger:
-      return diffuseColor * (material.kd * Fd_LommelSeeliger(NoL, NoV));
+      f = diffuseColor * (material.kd * Fd_LommelSeeliger(NoL, NoV));
+      break;
   }
-  return {};
+  return Select(lit, f, Vec3<T>());
 }
 
 /**
@@ -320,16 +333,19 @@ SL_INLINE Vec3<T> Shade(
   for (int j = 0; j < lighting.lightCount; ++j)
   {
     Vec3<T> L, irradiance;
-    if (!LightIncidence(lighting.lights[j], P, L, irradiance))
+    const auto reached = LightIncidence(lighting.lights[j], P, L, irradiance);
+    if (!AnyOf(reached))
     {
       continue;
     }
     const T NoL = Dot(N, L);
-    if (!(NoL > T(0)))
+    const auto lit = reached && NoL > T(0);
+    if (!AnyOf(lit))
     {
       continue;
     }
-    result += irradiance * EvaluateBrdf(material, diffuseColor, N, L, V) * NoL;
+    // Lanes the light does not reach add 0 (a single value never gets here).
+    result += Select(lit, irradiance * EvaluateBrdf(material, diffuseColor, N, L, V) * NoL, Vec3<T>());
   }
   return result;
 }

@@ -4,6 +4,8 @@
 // (the reference the float path is tested against).
 #pragma once
 
+#include "shadinglab/model/Lanes.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -84,9 +86,23 @@ constexpr Vec3<T> Cross(const Vec3<T>& a, const Vec3<T>& b)
 }
 
 template <typename T>
-T MaxAbsComponent(const Vec3<T>& v)
+SL_INLINE T MaxAbsComponent(const Vec3<T>& v)
 {
-  return std::max(std::abs(v.x), std::max(std::abs(v.y), std::abs(v.z)));
+  return Max(Abs(v.x), Max(Abs(v.y), Abs(v.z)));
+}
+
+/// Per lane: c ? a : b, component-wise (model/Lanes.h).
+template <typename T>
+SL_INLINE Vec3<T> Select(const MaskOf<T>& c, const Vec3<T>& a, const Vec3<T>& b)
+{
+  return { Select(c, a.x, b.x), Select(c, a.y, b.y), Select(c, a.z, b.z) };
+}
+
+/// s > 0 and finite, for s a largest absolute component (never negative).
+template <typename T>
+SL_INLINE MaskOf<T> PositiveFinite(const T& s)
+{
+  return s > T(0) && s <= T(std::numeric_limits<ScalarOf<T>>::max());
 }
 
 /// Squared lengths inside [kSafeMinLengthSq, kSafeMaxLengthSq] are computed
@@ -102,21 +118,19 @@ constexpr T kSafeMaxLengthSq = T(1e30);
 template <typename T>
 SL_INLINE T Length(const Vec3<T>& v)
 {
+  using S = ScalarOf<T>;
   const T d = Dot(v, v);
-  if (d >= kSafeMinLengthSq<T> && d <= kSafeMaxLengthSq<T>)
+  const auto safe = d >= T(kSafeMinLengthSq<S>) && d <= T(kSafeMaxLengthSq<S>);
+  if (AllOf(safe))
   {
-    return std::sqrt(d);
+    return Sqrt(d);
   }
   // Scale by the largest component first so neither huge (1e30f squared
   // overflows float) nor denormal components (whose squares flush to 0) lose
-  // the length.
+  // the length. Zero, NaN or infinite: s itself.
   const T s = MaxAbsComponent(v);
-  if (!(s > T(0)) || !std::isfinite(s))
-  {
-    return s;
-  }
   const Vec3<T> u = v / s;
-  return s * std::sqrt(Dot(u, u));
+  return Select(safe, Sqrt(d), Select(PositiveFinite(s), s * Sqrt(Dot(u, u)), s));
 }
 
 /**
@@ -128,18 +142,17 @@ SL_INLINE T Length(const Vec3<T>& v)
 template <typename T>
 SL_INLINE Vec3<T> NormalizeOr(const Vec3<T>& v, const Vec3<T>& fallback)
 {
+  using S = ScalarOf<T>;
   const T d = Dot(v, v);
-  if (d >= kSafeMinLengthSq<T> && d <= kSafeMaxLengthSq<T>)
+  const auto safe = d >= T(kSafeMinLengthSq<S>) && d <= T(kSafeMaxLengthSq<S>);
+  const Vec3<T> direct = v * (T(1) / Sqrt(d));
+  if (AllOf(safe))
   {
-    return v * (T(1) / std::sqrt(d));
+    return direct;
   }
   const T s = MaxAbsComponent(v);
-  if (!(s > T(0)) || !std::isfinite(s))
-  {
-    return fallback;
-  }
   const Vec3<T> u = v / s;
-  return u / std::sqrt(Dot(u, u));
+  return Select(safe, direct, Select(PositiveFinite(s), u / Sqrt(Dot(u, u)), fallback));
 }
 
 template <typename T>

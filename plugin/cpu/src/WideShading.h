@@ -1,0 +1,53 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The Phong stage's pixel shading, in SIMD batches. The rasterizer's pixel
+// loop depth-tests each pixel at once and queues the survivors' interpolated
+// normal, position and colour; a full queue (and each thread's last one) is
+// shaded by the model (Shade, docs/model.md eq. 1.1) on 8 pixels at a time
+// with AVX2, 4 with SSE2 (every x86-64), or one at a time, chosen at run
+// time by the CPU's features. Queued results are written in queue order, so
+// a pixel drawn twice keeps its last fragment's colour, as when each pixel
+// was shaded in turn.
+#pragma once
+
+#include "shadinglab/cpu/SoftwareRenderer.h"
+#include "shadinglab/model/Shading.h"
+
+#include <cstdint>
+
+namespace shadinglab::cpu
+{
+
+/// Pixels waiting for the model, structure of arrays. 256 pixels amortize
+/// the per-batch set-up (the material and lights broadcast to every lane)
+/// over 32 AVX2 batches, and stay in L1 (11 KB).
+struct PixelQueue
+{
+  static constexpr int kCapacity = 256;
+  int count = 0;
+  float nx[kCapacity], ny[kCapacity], nz[kCapacity]; ///< interpolated normal, not unit
+  float px[kCapacity], py[kCapacity], pz[kCapacity]; ///< world position (if used)
+  float cr[kCapacity], cg[kCapacity], cb[kCapacity]; ///< diffuse colour (if per vertex)
+  float* out[kCapacity];                             ///< the pixel's RGB
+};
+
+/// What the model needs besides the pixels: the frame's uniforms.
+struct PixelUniforms
+{
+  const Material<float>* material;
+  const Lighting<float>* lighting;
+  Vec3<float> eye, toEye;
+  bool parallel;    ///< orthographic camera: V = toEye everywhere
+  bool hasPosition; ///< px/py/pz are filled (else P = 0: directional lights, parallel view)
+  bool hasColor;    ///< cr/cg/cb are filled (else the material's diffuse colour)
+};
+
+/// Shades and writes every queued pixel, then empties the queue.
+void ShadeQueue(const PixelUniforms& uniforms, PixelQueue& queue);
+
+/// PixelLanes() and SetPixelLanes() choose the kernel (SoftwareRenderer.h).
+
+/// The kernels, one per instruction set, each in its own translation unit.
+void ShadeQueueSse2(const PixelUniforms& uniforms, PixelQueue& queue);
+void ShadeQueueAvx2(const PixelUniforms& uniforms, PixelQueue& queue);
+
+} // namespace shadinglab::cpu

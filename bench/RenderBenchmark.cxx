@@ -88,6 +88,7 @@ void BM_Cpu(benchmark::State& state)
   opt.threads = static_cast<int>(state.range(3));
   sl::Material<double> material;
   material.model = static_cast<sl::ReflectanceModel>(state.range(2));
+  opt.cullHiddenBackFaces = std::getenv("SHADINGLAB_BENCH_NO_HIDDEN_CULL") == nullptr;
   const render::Scene renderScene{ &scene.mesh, scene.camera, Headlight(scene.camera), material };
   render::RenderStats stats;
   // One renderer for all frames: buffers persist, as in VTK's render window.
@@ -100,6 +101,7 @@ void BM_Cpu(benchmark::State& state)
   state.counters["triangles"] = static_cast<double>(stats.triangles);
   state.counters["pixels_shaded"] = static_cast<double>(stats.pixelsShaded);
   state.counters["pixels_covered"] = static_cast<double>(stats.pixelsCovered);
+  state.counters["culled"] = static_cast<double>(stats.culled);
   state.SetLabel(std::string(render::ShadingModeName(opt.mode)) + "/" +
     sl::ReflectanceModelName(material.model) + " threads=" + std::to_string(opt.threads));
 }

@@ -61,7 +61,8 @@ int RunRender(int argc, char** argv)
   {
     std::printf("{\"backend\":\"%s\",\"mode\":\"%s\",\"model\":\"%s\",\"width\":%d,\"height\":%d,\"ssaa\":%d,"
                 "\"milliseconds\":%.3f,\"polygons\":%lld,\"triangles\":%lld,\"rasterized\":%lld,"
-                "\"clipped\":%lld,\"degenerate\":%lld,\"skipped\":%lld,\"pixels_covered\":%lld,"
+                "\"clipped\":%lld,\"degenerate\":%lld,\"skipped\":%lld,\"culled\":%lld,"
+                "\"hidden_back_faces_culled\":%s,\"pixels_covered\":%lld,"
                 "\"pixels_shaded\":%lld,\"overdraw\":%.3f,\"fast_phong_exact\":%lld,\"threads\":%d,"
                 "\"shader_builds\":%d,\"normals_computed\":%s,\"read_ms\":%.3f,"
                 "\"prepare_ms\":%.3f,\"render_ms\":%.3f,\"write_ms\":%.3f,\"total_ms\":%.3f%s}\n",
@@ -70,7 +71,8 @@ int RunRender(int argc, char** argv)
       stats.milliseconds, static_cast<long long>(stats.polygons),
       static_cast<long long>(stats.triangles), static_cast<long long>(stats.rasterized),
       static_cast<long long>(stats.clipped), static_cast<long long>(stats.degenerate),
-      static_cast<long long>(stats.skipped), static_cast<long long>(stats.pixelsCovered),
+      static_cast<long long>(stats.skipped), static_cast<long long>(stats.culled),
+      stats.hiddenBackFacesCulled ? "true" : "false", static_cast<long long>(stats.pixelsCovered),
       static_cast<long long>(stats.pixelsShaded),
       // Shading evaluations per covered pixel (0 when nothing is covered).
       stats.pixelsCovered ? double(stats.pixelsShaded) / stats.pixelsCovered : 0.0,

@@ -35,6 +35,7 @@ struct Frame
   bool Perspective = true;       ///< perspective-correct interpolation
   SpecularPowerTable PowerTable; ///< fast-phong's x^n, as Bishop & Weimer
   float FastPhongMinCos = 0.0f;  ///< cos of RenderOptions::fastPhongMaxSpread
+  bool CullBack = false;         ///< back faces are culled (asked, or hidden)
 
   // Frame buffers (full resolution), owned by the renderer.
   float* Rgb = nullptr;

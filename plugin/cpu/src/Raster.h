@@ -115,6 +115,7 @@ struct ThreadState
   std::vector<ScreenVertex> clipped; ///< vertices made by near-plane clipping
   PixelQueue queue;                  ///< depth-tested pixels awaiting the model (Phong)
   int64_t clippedPolygons = 0, degenerate = 0, rasterized = 0, shaded = 0, fastPhongExact = 0;
+  int64_t culled = 0; ///< back faces culled (by the binning worker or the owner)
   int64_t covered = 0; ///< covered pixels in this thread's bands (full resolution)
 };
 

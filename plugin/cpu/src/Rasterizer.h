@@ -61,6 +61,7 @@ public:
   /// found degenerate before any row was known.
   int64_t Run(std::vector<ThreadState>& states)
   {
+    // (Binning worker w keeps its culled count in states[w].)
     this->ProjectPositions();
     const int T = F.Threads;
     this->Bins.resize(static_cast<size_t>(T) * T);
@@ -76,7 +77,7 @@ public:
     ParallelFor(F.MeshData->NumberOfPolygons(),
       T,
       [&](int64_t begin, int64_t end, int worker)
-      { zeroRowDegenerate[worker] = this->BinPolygons(begin, end, worker); });
+      { zeroRowDegenerate[worker] = this->BinPolygons(begin, end, worker, states[worker]); });
     this->ShadeVertices();
     ParallelFor(T,
       T,
@@ -216,7 +217,7 @@ private:
     }
   }
 
-  int64_t BinPolygons(int64_t begin, int64_t end, int worker)
+  int64_t BinPolygons(int64_t begin, int64_t end, int worker, ThreadState& state)
   {
     const int T = F.Threads;
     const auto& offsets = F.MeshData->offsets;
@@ -276,6 +277,11 @@ private:
       {
         continue;
       }
+      if (F.CullBack && this->IsCulledBackFace(first, n))
+      {
+        ++state.culled; // before set-up: its vertices need no shading either
+        continue;
+      }
       for (int k = 0; k < n; ++k)
       {
         this->Buffers.Needed[conn[first + k]].store(1, std::memory_order_relaxed);
@@ -297,6 +303,21 @@ private:
       }
     }
     return degenerate;
+  }
+
+  /// A back face DrawSourcePolygon would cull: the same signed area from
+  /// the same floats, and not degenerate (those are counted as such there).
+  bool IsCulledBackFace(int64_t first, int n) const
+  {
+    const auto& conn = F.MeshData->connectivity;
+    double area = 0;
+    for (int k = 0; k < n; ++k)
+    {
+      const ScreenVertex& a = this->Screen[conn[first + k]];
+      const ScreenVertex& b = this->Screen[conn[first + (k + 1) % n]];
+      area += static_cast<double>(a.x) * b.y - static_cast<double>(b.x) * a.y;
+    }
+    return std::abs(area) * 0.5 >= kDegenerateArea && std::isfinite(area) && area > 0;
   }
 
   void DrawSourcePolygon(int64_t p, int thread, int threadCount, ThreadState& state)
@@ -431,8 +452,9 @@ private:
       return;
     }
     const bool back = area > 0;
-    if (back && F.Opt.cullBackFaces)
+    if (back && F.CullBack)
     {
+      state.culled += owner; // clipped polygons only: binning culls the rest
       return;
     }
     state.clippedPolygons += owner && wasClipped;

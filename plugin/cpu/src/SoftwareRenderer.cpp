@@ -5,6 +5,7 @@
 // sets up a frame, picks the stage once, and resolves the image.
 #include "shadinglab/cpu/SoftwareRenderer.h"
 
+#include "HiddenBackFaces.h"
 #include "Rasterizer.h"
 #include "ShadingStages.h"
 #include "VertexNormals.h"
@@ -69,6 +70,26 @@ void SetupTransforms(Frame& frame)
   frame.ToEye = Vec3f(-forward);
 }
 
+/// Whether the mesh's whole bounding box is in front of the near plane
+/// (clip z + w > 0 at its eight corners): the camera is outside the mesh
+/// and the near plane cuts nothing away.
+bool BoundsInFrontOfNearPlane(const Frame& frame, const Mesh& mesh)
+{
+  double b[6];
+  mesh.Bounds(b);
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    const double p[3] = { b[corner & 1], b[2 + ((corner >> 1) & 1)], b[4 + ((corner >> 2) & 1)] };
+    double clip[4];
+    frame.ViewProjection.Apply(p, clip);
+    if (!(clip[2] + clip[3] > 0.0))
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
 } // namespace
 
 class SoftwareRenderer::Internals
@@ -92,6 +113,7 @@ private:
 
   Frame FrameState;
   RasterBuffers Buffers;
+  ClosedMeshCache Closed;
   std::vector<float> ComputedNormals;
   std::vector<float> Rgb;
   std::vector<float> Depth;
@@ -125,6 +147,13 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh,
     : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   F.Perspective = F.Opt.interpolation == render::InterpolationSpace::Perspective && !F.Cam.parallel;
   SetupTransforms(F);
+  // Back faces: culled when asked, or when none can be seen (HiddenBackFaces.h;
+  // not in the fill-rule check, which counts every polygon).
+  F.CullBack = F.Opt.cullBackFaces;
+  const bool hiddenBackFaces = !F.CullBack && F.Opt.cullHiddenBackFaces &&
+    !F.Opt.countCoverage && mesh.NumberOfPolygons() > 0 && BoundsInFrontOfNearPlane(F, mesh) &&
+    this->Closed.IsClosedOutward(mesh);
+  F.CullBack = F.CullBack || hiddenBackFaces;
 
   const int64_t nv = mesh.NumberOfPoints();
   const int64_t np = mesh.NumberOfPolygons();
@@ -215,7 +244,9 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh,
       stats->degenerate += st.degenerate;
       stats->pixelsShaded += st.shaded;
       stats->fastPhongExact += st.fastPhongExact;
+      stats->culled += st.culled;
     }
+    stats->hiddenBackFacesCulled = hiddenBackFaces;
     if (ssaa == 1)
     {
       for (const auto& st : states)

@@ -98,6 +98,10 @@ struct RenderOptions
   int ssaa = 1;    ///< supersampling factor per axis (box filter)
   int threads = 0; ///< 0: all hardware threads (CPU backend)
   bool cullBackFaces = false;
+  /// Cull back faces where no pixel can show one (CPU): a closed, outward
+  /// triangle mesh with its bounding box in front of the near plane
+  /// (plugin/cpu/src/HiddenBackFaces.h). Off only to compare.
+  bool cullHiddenBackFaces = true;
   /// Back-facing polygons are lit with their normals flipped (VTK's default).
   bool twoSidedLighting = true;
   /// Instead of shading, count how many polygons cover each pixel (no depth
@@ -125,6 +129,10 @@ struct RenderStats
   /// Polygons skipped before scan conversion: outside the view, beyond the
   /// far plane, culled back faces, or between pixel centres (CPU).
   int64_t skipped = 0;
+  int64_t culled = 0;         ///< back faces culled before set-up (of `skipped`; CPU)
+  /// Back faces were culled because none can be seen (closed outward mesh,
+  /// camera outside; CPU), without --cull.
+  bool hiddenBackFacesCulled = false;
   int64_t pixelsCovered = 0;  ///< pixels with a surface in the final image
   int64_t pixelsShaded = 0;   ///< illumination-model evaluations at pixels (CPU)
   int64_t fastPhongExact = 0; ///< fast-phong pixels evaluated exactly (spread limit; CPU)

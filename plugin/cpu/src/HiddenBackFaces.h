@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Back faces that no pixel can show, culled without being asked.
+//
+// Seen from outside, every ray through a closed surface whose components
+// all face outward enters a front face before it can reach a back face:
+// back faces are hidden whatever the lighting, and drawing them (half the
+// triangles of any closed mesh) only costs set-up and depth tests. They
+// are culled before set-up when
+//   - every polygon is a triangle (a non-planar polygon can face both ways),
+//   - every edge is used exactly twice, once in each direction (closed and
+//     consistently oriented), and every connected component encloses a
+//     positive volume (outward), and
+//   - the whole bounding box is in front of the near plane (the camera is
+//     outside the mesh and no front face is cut away by the near plane).
+// The topology test is cached against a fingerprint of the mesh's arrays.
+#pragma once
+
+#include "shadinglab/render/Scene.h"
+
+#include <cstdint>
+
+namespace shadinglab::cpu
+{
+
+/// Whether the mesh is a closed, consistently and outward oriented triangle
+/// mesh, remembered for the last mesh seen (recomputed when its arrays change).
+class ClosedMeshCache
+{
+public:
+  bool IsClosedOutward(const render::Mesh& mesh);
+
+private:
+  uint64_t Fingerprint = 0;
+  bool Known = false;
+  bool Closed = false;
+};
+
+/// The test itself, without the cache.
+bool IsClosedOutwardTriangleMesh(const render::Mesh& mesh);
+
+/// A hash of the mesh's points, offsets and connectivity (and their sizes).
+uint64_t MeshFingerprint(const render::Mesh& mesh);
+
+} // namespace shadinglab::cpu

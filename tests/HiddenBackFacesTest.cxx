@@ -1,0 +1,163 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Back faces culled without --cull where none can be seen
+// (plugin/cpu/src/HiddenBackFaces.h): the same picture for half the set-up,
+// and never where a back face could show.
+#include "AnalyticMeshes.h"
+#include "PolyDataMesh.h"
+#include "RenderTestUtil.h"
+#include "shadinglab/cpu/SoftwareRenderer.h"
+
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <string>
+
+namespace sl = shadinglab;
+namespace render = shadinglab::render;
+using sl::Vec3d;
+using sl::Vec3f;
+
+namespace
+{
+
+render::Mesh MeshOf(vtkPolyData* raw)
+{
+  vtkSmartPointer<vtkPolyData> pd;
+  pd.TakeReference(raw);
+  return render::MeshFromPolyData(pd);
+}
+
+render::Camera Looking(const Vec3d& from, const Vec3d& at, bool parallel = false)
+{
+  render::Camera cam;
+  cam.position = from;
+  cam.focalPoint = at;
+  cam.viewUp = Vec3d(0, 1, 0);
+  cam.viewAngle = 40;
+  cam.nearClip = 0.05;
+  cam.farClip = 100;
+  cam.parallel = parallel;
+  cam.parallelScale = 1.4;
+  return cam;
+}
+
+struct Frame
+{
+  render::Image image;
+  render::RenderStats stats;
+};
+
+Frame Draw(const render::Mesh& mesh, const render::Camera& cam, render::ShadingMode mode,
+  bool cullHidden)
+{
+  render::RenderOptions opt;
+  opt.width = 200;
+  opt.height = 150;
+  opt.mode = mode;
+  opt.threads = 2;
+  opt.cullHiddenBackFaces = cullHidden;
+  sl::Lighting<float> lights;
+  lights.lights[0].vector = Vec3f(0.3f, 0.6f, 0.7f);
+  sl::Material<float> material;
+  Frame f;
+  f.image = sl::test::RenderCpu(mesh, cam, lights, material, opt, &f.stats);
+  return f;
+}
+
+/// The triangles of `mesh` with their vertex order reversed (facing inward).
+render::Mesh Reversed(render::Mesh mesh)
+{
+  for (int64_t p = 0; p < mesh.NumberOfPolygons(); ++p)
+  {
+    std::reverse(mesh.connectivity.begin() + mesh.offsets[p],
+      mesh.connectivity.begin() + mesh.offsets[p + 1]);
+  }
+  return mesh;
+}
+
+} // namespace
+
+TEST(HiddenBackFacesTest, ClosedMeshSeenFromOutsideGivesTheSamePictureForHalfTheTriangles)
+{
+  const render::Mesh torus = MeshOf(sl::datasets::MakeTorus(1.0, 0.4, 48, 24));
+  const render::Mesh sphere = MeshOf(sl::datasets::MakeIcosphere(3));
+  for (const auto* mesh : { &torus, &sphere })
+  {
+    for (bool parallel : { false, true })
+    {
+      for (auto mode : { render::ShadingMode::Flat, render::ShadingMode::Gouraud,
+             render::ShadingMode::Phong, render::ShadingMode::FastPhong })
+      {
+        SCOPED_TRACE(std::string(render::ShadingModeName(mode)) + (parallel ? " parallel" : "") +
+          (mesh == &torus ? " torus" : " icosphere"));
+        const auto cam = Looking(Vec3d(0.5, 2.0, 3.0), Vec3d(0, 0, 0), parallel);
+        const Frame culled = Draw(*mesh, cam, mode, true);
+        const Frame all = Draw(*mesh, cam, mode, false);
+        EXPECT_TRUE(culled.stats.hiddenBackFacesCulled);
+        EXPECT_FALSE(all.stats.hiddenBackFacesCulled);
+        EXPECT_EQ(all.stats.culled, 0);
+        // About half the triangles face away; they are skipped, not drawn.
+        EXPECT_GT(culled.stats.culled, culled.stats.polygons * 2 / 5);
+        EXPECT_EQ(culled.stats.rasterized + culled.stats.culled,
+          all.stats.rasterized);
+        EXPECT_LE(culled.stats.pixelsShaded, all.stats.pixelsShaded);
+        // Nothing a pixel showed was a back face: the very same picture.
+        EXPECT_EQ(culled.image.covered, all.image.covered);
+        EXPECT_EQ(culled.image.rgb, all.image.rgb);
+      }
+    }
+  }
+}
+
+TEST(HiddenBackFacesTest, BackFacesThatCouldShowAreDrawn)
+{
+  const render::Mesh torus = MeshOf(sl::datasets::MakeTorus(1.0, 0.4, 48, 24));
+  const auto outside = Looking(Vec3d(0.5, 2.0, 3.0), Vec3d(0, 0, 0));
+  const render::ShadingMode phong = render::ShadingMode::Phong;
+  // Facing inward: its back faces are the ones in front.
+  EXPECT_FALSE(Draw(Reversed(torus), outside, phong, true).stats.hiddenBackFacesCulled);
+  // Camera inside the bounding box (in the torus's hole, looking through
+  // the tube): the near plane may cut the tube open.
+  EXPECT_FALSE(
+    Draw(torus, Looking(Vec3d(0, 0, 0), Vec3d(1, 0, 0)), phong, true).stats.hiddenBackFacesCulled);
+  // Open surfaces show their back faces.
+  const render::Mesh plane = MeshOf(sl::datasets::MakeCorrugatedPlane(4, 8, 0.2));
+  EXPECT_FALSE(Draw(plane, outside, phong, true).stats.hiddenBackFacesCulled);
+  // A torus with one triangle missing is open.
+  render::Mesh holed = torus;
+  holed.connectivity.resize(holed.connectivity.size() - 3);
+  holed.offsets.pop_back();
+  const Frame open = Draw(holed, outside, phong, true);
+  EXPECT_FALSE(open.stats.hiddenBackFacesCulled);
+  EXPECT_EQ(open.stats.culled, 0);
+  // Quads (a polygon need not be planar): not culled without --cull.
+  const render::Mesh quads = MeshOf(sl::datasets::MakeQuadStrip(6));
+  EXPECT_FALSE(Draw(quads, outside, phong, true).stats.hiddenBackFacesCulled);
+}
+
+TEST(HiddenBackFacesTest, EditingTheMeshInPlaceIsNoticed)
+{
+  // The closed-mesh test is cached against the arrays' contents: the same
+  // renderer, the same Mesh object, one triangle turned around.
+  render::Mesh torus = MeshOf(sl::datasets::MakeTorus(1.0, 0.4, 48, 24));
+  const auto cam = Looking(Vec3d(0.5, 2.0, 3.0), Vec3d(0, 0, 0));
+  render::RenderOptions opt;
+  opt.width = 64;
+  opt.height = 48;
+  opt.threads = 1;
+  sl::cpu::SoftwareRenderer renderer;
+  const render::Scene scene{ &torus, cam, sl::Lighting<double>(), sl::Material<double>() };
+  render::RenderStats stats;
+  renderer.Render(scene, opt, &stats);
+  EXPECT_TRUE(stats.hiddenBackFacesCulled);
+  std::swap(torus.connectivity[0], torus.connectivity[1]);
+  renderer.Render(scene, opt, &stats);
+  EXPECT_FALSE(stats.hiddenBackFacesCulled);
+  std::swap(torus.connectivity[0], torus.connectivity[1]);
+  renderer.Render(scene, opt, &stats);
+  EXPECT_TRUE(stats.hiddenBackFacesCulled);
+}

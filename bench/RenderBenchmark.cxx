@@ -58,8 +58,10 @@ const Scene& GetScene(int which)
   {
     s = std::make_unique<Scene>();
     vtkSmartPointer<vtkPolyData> raw;
+    // 0: the 100k torus, 1: the 1.3M icosphere, 10 + L: icosphere level L.
     raw.TakeReference(which == 0 ? sl::datasets::MakeTorus(1.0, 0.4, 316, 158)
-                                 : sl::datasets::MakeIcosphere(8));
+        : which == 1             ? sl::datasets::MakeIcosphere(8)
+                                 : sl::datasets::MakeIcosphere(which - 10));
     raw->GetPointData()->SetNormals(raw->GetPointData()->GetArray(sl::datasets::kExactNormalArray));
     s->polydata = raw;
     s->mesh = render::MeshFromPolyData(raw);
@@ -135,6 +137,32 @@ void BM_CpuLanes(benchmark::State& state)
   cpu::SetPixelLanes(0);
   state.SetLabel(std::string("phong/") + sl::ReflectanceModelName(material.model) +
     " lanes=" + std::to_string(lanes) + " threads=" + std::to_string(opt.threads));
+}
+
+/// Fast Phong against Phong by triangle size: icospheres of 20 * 4^L
+/// triangles filling the same 1920x1080 view (one thread), so the pixels per
+/// triangle fall from ~40,000 (L = 1) to ~2 (L = 7).
+void BM_CpuModeBySize(benchmark::State& state)
+{
+  const Scene& scene = GetScene(10 + static_cast<int>(state.range(0)));
+  render::RenderOptions opt;
+  opt.width = kWidth;
+  opt.height = kHeight;
+  opt.mode = static_cast<render::ShadingMode>(state.range(1));
+  opt.threads = 1;
+  const render::Scene renderScene{ &scene.mesh, scene.camera, Headlight(scene.camera),
+    sl::Material<double>() };
+  cpu::SoftwareRenderer renderer;
+  render::RenderStats stats;
+  for (auto _ : state)
+  {
+    benchmark::DoNotOptimize(renderer.Render(renderScene, opt, &stats).rgb.data());
+  }
+  state.counters["rasterized"] = static_cast<double>(stats.rasterized);
+  state.counters["px_per_triangle"] =
+    stats.rasterized ? double(stats.pixelsShaded) / double(stats.rasterized) : 0.0;
+  state.SetLabel(std::string(render::ShadingModeName(opt.mode)) + " icosphere level " +
+    std::to_string(state.range(0)));
 }
 
 /// Renders `actor` in an offscreen 1920x1080 window with the scene's camera,
@@ -289,6 +317,10 @@ BENCHMARK(BM_CpuHalfOutside)
   ->Unit(benchmark::kMillisecond)
   ->UseRealTime();
 BENCHMARK(BM_Cpu)->Apply(CpuArgs)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_CpuModeBySize)
+  ->ArgsProduct({ { 1, 2, 3, 4, 5, 6, 7 }, { 2, 3 } })
+  ->Unit(benchmark::kMillisecond)
+  ->UseRealTime();
 BENCHMARK(BM_CpuLanes)
   ->ArgsProduct({ { 0, 1 }, { kBlinnPhong, kCookTorrance }, { 1, 4, 8 }, { 1, 2 } })
   ->Unit(benchmark::kMillisecond)

@@ -543,6 +543,7 @@ TEST(CpuRendererTest, FastPhongStaysCloseToPhong)
   opt.width = 480;
   opt.height = 360;
   opt.interpolation = render::InterpolationSpace::Screen;
+  opt.fastPhongFallback = false; // the quadratics themselves, on small triangles too
   // Blinn-Phong through the N.H quadratic; Phong's (R.V)^n through the N.L
   // and N.V quadratics (docs/model.md eq. 2.8).
   for (const auto model : { sl::ReflectanceModel::BlinnPhong, sl::ReflectanceModel::Phong })
@@ -698,4 +699,39 @@ TEST(CpuRendererTest, VtkImageAlgorithmFrontEnd)
   EXPECT_EQ(sphere->GetMTime(), before);
   EXPECT_EQ(sphere->GetNumberOfPoints(), pointsBefore);
   EXPECT_EQ(sphere->GetPointData()->GetNormals(), nullptr);
+}
+
+TEST(CpuRendererTest, FastPhongOnSmallTrianglesDrawsExactPhongAndSaysSo)
+{
+  const auto cam = CameraLookingAt(Vec3d(0.3, 2.2, 2.6), Vec3d(0, 0, 0), 40);
+  const auto lighting = OneLight(Vec3f(0.3f, 0.6f, 0.7f));
+  render::RenderOptions opt;
+  opt.width = 320;
+  opt.height = 240;
+  opt.threads = 1;
+  // ~9,000 triangles in 320x240: a few pixels each. Fast Phong draws exact
+  // Phong, pixel for pixel, and says so.
+  const render::Mesh fine = MeshOf(sl::datasets::MakeTorus(1.0, 0.4, 96, 48), true);
+  opt.mode = render::ShadingMode::Phong;
+  const auto phong = test::RenderCpu(fine, cam, lighting, BlinnPhong(), opt);
+  opt.mode = render::ShadingMode::FastPhong;
+  render::RenderStats stats;
+  const auto fast = test::RenderCpu(fine, cam, lighting, BlinnPhong(), opt, &stats);
+  EXPECT_TRUE(stats.fastPhongAsPhong);
+  EXPECT_GT(stats.pixelsPerTriangle, 0.0);
+  EXPECT_LT(stats.pixelsPerTriangle, 96.0);
+  EXPECT_EQ(fast.rgb, phong.rgb);
+  // Asked to keep the quadratics, it does: a different picture.
+  opt.fastPhongFallback = false;
+  const auto asIs = test::RenderCpu(fine, cam, lighting, BlinnPhong(), opt, &stats);
+  EXPECT_FALSE(stats.fastPhongAsPhong);
+  EXPECT_NE(asIs.rgb, phong.rgb);
+  // 80 triangles in the same image: hundreds of pixels each, fast Phong drawn.
+  opt.fastPhongFallback = true;
+  const render::Mesh coarse = MeshOf(sl::datasets::MakeIcosphere(1), true);
+  const auto big = test::RenderCpu(coarse, cam, lighting, BlinnPhong(), opt, &stats);
+  EXPECT_FALSE(stats.fastPhongAsPhong);
+  EXPECT_GT(stats.pixelsPerTriangle, 96.0);
+  opt.mode = render::ShadingMode::Phong;
+  EXPECT_NE(big.rgb, test::RenderCpu(coarse, cam, lighting, BlinnPhong(), opt).rgb);
 }

@@ -251,6 +251,9 @@ TEST(GpuParityGLTest, EveryModeTimesModelBothInterpolationSpaces)
           opt.mode = mode.value;
           opt.interpolation =
             perspective ? render::InterpolationSpace::Perspective : render::InterpolationSpace::Screen;
+          // Like with like: the GPU draws fast Phong's quadratics at any
+          // triangle size, so the CPU must not switch to exact Phong here.
+          opt.fastPhongFallback = false;
           const auto lights = Lights(true);
           if (!render::SupportsModel(mode.value, material.model))
           {

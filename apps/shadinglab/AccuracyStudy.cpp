@@ -341,6 +341,7 @@ std::vector<StudyRow> RunStudy(
             ro.height = options.height;
             ro.threads = options.threads;
             ro.background = background;
+            ro.fastPhongFallback = false; // the study measures fast Phong itself
             render::Image image;
             const double frameMs = TimedFrames(*renderer, scene, ro, options.frames, image);
             StudyRow row;

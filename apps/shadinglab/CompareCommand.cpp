@@ -136,6 +136,7 @@ int RunCompare(int argc, char** argv)
   {
     render::RenderOptions options = request->options;
     options.mode = panels[m].mode;
+    options.fastPhongFallback = false; // a comparison shows each mode as such
     render::Scene scene = request->scene;
     scene.material = panels[m].material;
     const render::Image& image = RenderOrExplain(

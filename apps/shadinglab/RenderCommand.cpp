@@ -57,13 +57,20 @@ int RunRender(int argc, char** argv)
     std::cerr << "shadinglab render: notice: '" << request->input << "': " << request->notices << "\n";
   }
 
+  if (stats.fastPhongAsPhong)
+  {
+    std::cerr << "shadinglab render: notice: fast-phong drew exact Phong: the triangles average "
+              << static_cast<long long>(stats.pixelsPerTriangle + 0.5)
+              << " pixels, too few for its quadratics to pay (--fast-phong-as-is keeps them)\n";
+  }
   if (args.Has("stats"))
   {
     std::printf("{\"backend\":\"%s\",\"mode\":\"%s\",\"model\":\"%s\",\"width\":%d,\"height\":%d,\"ssaa\":%d,"
                 "\"milliseconds\":%.3f,\"polygons\":%lld,\"triangles\":%lld,\"rasterized\":%lld,"
                 "\"clipped\":%lld,\"degenerate\":%lld,\"skipped\":%lld,\"culled\":%lld,"
                 "\"hidden_back_faces_culled\":%s,\"pixels_covered\":%lld,"
-                "\"pixels_shaded\":%lld,\"overdraw\":%.3f,\"fast_phong_exact\":%lld,\"threads\":%d,"
+                "\"pixels_shaded\":%lld,\"overdraw\":%.3f,\"fast_phong_exact\":%lld,"
+                "\"fast_phong_as_phong\":%s,\"threads\":%d,"
                 "\"shader_builds\":%d,\"normals_computed\":%s,\"read_ms\":%.3f,"
                 "\"prepare_ms\":%.3f,\"render_ms\":%.3f,\"write_ms\":%.3f,\"total_ms\":%.3f%s}\n",
       render::BackendName(renderer->GetBackend()), render::ShadingModeName(options.mode),
@@ -76,7 +83,8 @@ int RunRender(int argc, char** argv)
       static_cast<long long>(stats.pixelsShaded),
       // Shading evaluations per covered pixel (0 when nothing is covered).
       stats.pixelsCovered ? double(stats.pixelsShaded) / stats.pixelsCovered : 0.0,
-      static_cast<long long>(stats.fastPhongExact), stats.threads, stats.shaderBuilds,
+      static_cast<long long>(stats.fastPhongExact), stats.fastPhongAsPhong ? "true" : "false",
+      stats.threads, stats.shaderBuilds,
       stats.normalsComputed ? "true" : "false", request->readMs, request->prepareMs,
       stats.milliseconds, writeMs, total.Milliseconds(),
       request->autoChoice.empty() ? "" : (",\"auto\":\"" + request->autoChoice + "\"").c_str());

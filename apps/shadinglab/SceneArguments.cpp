@@ -43,6 +43,8 @@ const char* const kSceneOptionsHelp =
   "  --ssaa N            supersampling N x N (default 1)\n"
   "  --threads N         worker threads (default: all cores)\n"
   "  --cull              cull back faces\n"
+  "  --fast-phong-as-is  fast-phong with its quadratics even on triangles too small\n"
+  "                      for them to pay (cpu; default: exact Phong there, said on stderr)\n"
   "  --display D         clamp (default) | srgb\n"
   "  --expansion E       fast-phong Taylor point: vertex (the provoking vertex, default;\n"
   "                      both backends) | centroid (lower error; cpu only)\n"
@@ -86,7 +88,7 @@ std::unique_ptr<SceneArguments> SceneFromArguments(int argc, char** argv, const 
   }
   valued.insert(valued.end(), extraValued.begin(), extraValued.end());
   auto result = std::make_unique<SceneArguments>(Arguments(
-    argc, argv, valued, { "help", "stats", "cull", "parallel", "fix-t-junctions" }, { "light" }, { "weld" }));
+    argc, argv, valued, { "help", "stats", "cull", "parallel", "fix-t-junctions", "fast-phong-as-is" }, { "light" }, { "weld" }));
   SceneArguments& scene = *result;
   const Arguments& args = scene.args;
   if (args.Has("help"))
@@ -196,6 +198,7 @@ std::unique_ptr<SceneArguments> SceneFromArguments(int argc, char** argv, const 
     throw UsageError("--threads must be 0..256");
   }
   options.cullBackFaces = args.Has("cull");
+  options.fastPhongFallback = !args.Has("fast-phong-as-is");
   options.fastPhongMaxSpread = args.GetDouble("fast-phong-max-spread", 30.0);
   if (!(options.fastPhongMaxSpread >= 0 && options.fastPhongMaxSpread <= 180))
   {
@@ -231,7 +234,7 @@ std::unique_ptr<SceneArguments> SceneFromArguments(int argc, char** argv, const 
     if (!args.Has("model"))
     {
       const Arguments withModel(static_cast<int>(raw.size()), raw.data(), valued,
-        { "help", "stats", "cull", "parallel", "fix-t-junctions" }, { "light" }, { "weld" });
+        { "help", "stats", "cull", "parallel", "fix-t-junctions", "fast-phong-as-is" }, { "light" }, { "weld" });
       material = MaterialFromArguments(withModel, true);
     }
     else

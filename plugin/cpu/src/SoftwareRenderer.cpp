@@ -70,6 +70,45 @@ void SetupTransforms(Frame& frame)
   frame.ToEye = Vec3f(-forward);
 }
 
+/// Fast Phong pays per triangle (its quadratics' set-up) what it saves per
+/// pixel, and on this renderer the SIMD Phong pixel (WideShading.h) costs
+/// about what a quadratic pixel does: fast Phong is slower below ~100
+/// pixels per triangle and level above (bench BM_CpuModeBySize,
+/// icospheres at 1080p, one thread: 1.5x slower at 5.5 px, 1.19x at 22,
+/// 1.01x at 88, 0.92x at 351). Below 96 pixels per triangle exact Phong
+/// is drawn instead.
+constexpr double kFastPhongMinPixels = 96.0;
+
+/// Pixels per triangle, estimated before drawing: the mesh's bounding box
+/// projected and clipped to the image, over its triangles (about half of a
+/// closed mesh's triangles face the viewer, and they cover about half that
+/// rectangle: the two halves cancel). 0 when the box crosses the near plane.
+double EstimatePixelsPerTriangle(const Frame& frame, const Mesh& mesh)
+{
+  double b[6];
+  mesh.Bounds(b);
+  double x0 = frame.Width, x1 = 0, y0 = frame.Height, y1 = 0;
+  for (int corner = 0; corner < 8; ++corner)
+  {
+    const double p[3] = { b[corner & 1], b[2 + ((corner >> 1) & 1)], b[4 + ((corner >> 2) & 1)] };
+    double clip[4];
+    frame.ViewProjection.Apply(p, clip);
+    if (!(clip[3] > 0.0) || !(clip[2] + clip[3] > 0.0))
+    {
+      return 0.0;
+    }
+    const double x = (clip[0] / clip[3] * 0.5 + 0.5) * frame.Width;
+    const double y = (0.5 - clip[1] / clip[3] * 0.5) * frame.Height;
+    x0 = std::min(x0, x);
+    x1 = std::max(x1, x);
+    y0 = std::min(y0, y);
+    y1 = std::max(y1, y);
+  }
+  const double w = std::clamp(x1, 0.0, double(frame.Width)) - std::clamp(x0, 0.0, double(frame.Width));
+  const double h = std::clamp(y1, 0.0, double(frame.Height)) - std::clamp(y0, 0.0, double(frame.Height));
+  return std::max(0.0, w) * std::max(0.0, h) / static_cast<double>(std::max<int64_t>(1, mesh.NumberOfPolygons()));
+}
+
 /// Whether the mesh's whole bounding box is in front of the near plane
 /// (clip z + w > 0 at its eight corners): the camera is outside the mesh
 /// and the near plane cuts nothing away.
@@ -154,6 +193,13 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh,
     !F.Opt.countCoverage && mesh.NumberOfPolygons() > 0 && BoundsInFrontOfNearPlane(F, mesh) &&
     this->Closed.IsClosedOutward(mesh);
   F.CullBack = F.CullBack || hiddenBackFaces;
+  double pixelsPerTriangle = 0;
+  bool fastPhongAsPhong = false;
+  if (F.Opt.mode == ShadingMode::FastPhong && F.Opt.fastPhongFallback && !F.Opt.countCoverage)
+  {
+    pixelsPerTriangle = EstimatePixelsPerTriangle(F, mesh);
+    fastPhongAsPhong = pixelsPerTriangle < kFastPhongMinPixels;
+  }
 
   const int64_t nv = mesh.NumberOfPoints();
   const int64_t np = mesh.NumberOfPolygons();
@@ -207,7 +253,8 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh,
         degenerateBeforeRows = this->Rasterize<PhongStage>(states);
         break;
       case ShadingMode::FastPhong:
-        degenerateBeforeRows = this->Rasterize<FastPhongStage>(states);
+        degenerateBeforeRows = fastPhongAsPhong ? this->Rasterize<PhongStage>(states)
+                                                : this->Rasterize<FastPhongStage>(states);
         break;
     }
   }
@@ -247,6 +294,8 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh,
       stats->culled += st.culled;
     }
     stats->hiddenBackFacesCulled = hiddenBackFaces;
+    stats->fastPhongAsPhong = fastPhongAsPhong;
+    stats->pixelsPerTriangle = pixelsPerTriangle;
     if (ssaa == 1)
     {
       for (const auto& st : states)

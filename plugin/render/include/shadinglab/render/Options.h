@@ -115,6 +115,11 @@ struct RenderOptions
   /// is ~1/255 (FastPhongTest measures 2.4e-3 at ~23 degrees); at 45 degrees
   /// it is ~5/255 and visible. 180 disables the fallback.
   double fastPhongMaxSpread = 30.0;
+  /// fast-phong on the CPU: when the mesh's triangles are too small on
+  /// screen for the quadratics to pay (their set-up costs more than the
+  /// SIMD Phong pixels it saves), draw exact Phong instead and say so
+  /// (RenderStats::fastPhongAsPhong). Off to study fast Phong itself.
+  bool fastPhongFallback = true;
 };
 
 /// What a render did; fields a backend cannot know stay 0.
@@ -133,6 +138,10 @@ struct RenderStats
   /// Back faces were culled because none can be seen (closed outward mesh,
   /// camera outside; CPU), without --cull.
   bool hiddenBackFacesCulled = false;
+  /// fast-phong was asked for and exact Phong drawn: the triangles average
+  /// fewer than kFastPhongMinPixels on screen (CPU).
+  bool fastPhongAsPhong = false;
+  double pixelsPerTriangle = 0; ///< the estimate that choice was made on (CPU)
   int64_t pixelsCovered = 0;  ///< pixels with a surface in the final image
   int64_t pixelsShaded = 0;   ///< illumination-model evaluations at pixels (CPU)
   int64_t fastPhongExact = 0; ///< fast-phong pixels evaluated exactly (spread limit; CPU)

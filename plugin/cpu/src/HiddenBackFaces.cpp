@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "HiddenBackFaces.h"
 
+#include "Raster.h"
+
 #include <cstring>
 #include <limits>
 #include <numeric>
@@ -54,11 +56,41 @@ uint64_t HashWords(const void* data, size_t bytes, uint64_t seed)
 
 } // namespace
 
-uint64_t MeshFingerprint(const render::Mesh& mesh)
+uint64_t MeshFingerprint(const render::Mesh& mesh, int threads)
 {
-  uint64_t h = HashWords(mesh.points.data(), mesh.points.size() * sizeof(float), 1);
-  h = HashWords(mesh.offsets.data(), mesh.offsets.size() * sizeof(int64_t), h);
-  return HashWords(mesh.connectivity.data(), mesh.connectivity.size() * sizeof(int64_t), h);
+  // Each array in `threads` slices of whole 32-byte blocks; the slices'
+  // hashes are folded in order, so the value does not depend on timing.
+  const struct
+  {
+    const void* data;
+    size_t bytes;
+  } arrays[3] = { { mesh.points.data(), mesh.points.size() * sizeof(float) },
+    { mesh.offsets.data(), mesh.offsets.size() * sizeof(int64_t) },
+    { mesh.connectivity.data(), mesh.connectivity.size() * sizeof(int64_t) } };
+  const int slices = std::max(1, threads);
+  uint64_t h = 1;
+  for (const auto& a : arrays)
+  {
+    std::vector<uint64_t> part(static_cast<size_t>(slices), 0);
+    const size_t blocks = a.bytes / 32, per = (blocks + slices - 1) / slices;
+    raster::ParallelFor(slices, slices,
+      [&](int64_t b, int64_t e, int)
+      {
+        for (int64_t s = b; s < e; ++s)
+        {
+          const size_t first = std::min(blocks, s * per) * 32;
+          const size_t last = s + 1 == slices ? a.bytes : std::min(blocks, (s + 1) * per) * 32;
+          part[s] = HashWords(static_cast<const unsigned char*>(a.data) + first, last - first,
+            static_cast<uint64_t>(s) + 1);
+        }
+      });
+    for (const uint64_t p : part)
+    {
+      h = HashWords(&p, sizeof(p), h);
+    }
+    h ^= a.bytes;
+  }
+  return h;
 }
 
 bool IsClosedOutwardTriangleMesh(const render::Mesh& mesh)
@@ -179,11 +211,15 @@ bool IsClosedOutwardTriangleMesh(const render::Mesh& mesh)
   return true;
 }
 
-bool ClosedMeshCache::IsClosedOutward(const render::Mesh& mesh)
+bool ClosedMeshCache::IsClosedOutward(const render::Mesh& mesh, bool mayTest, int threads)
 {
-  const uint64_t fingerprint = MeshFingerprint(mesh);
+  const uint64_t fingerprint = MeshFingerprint(mesh, threads);
   if (!this->Known || fingerprint != this->Fingerprint)
   {
+    if (!mayTest)
+    {
+      return false;
+    }
     this->Closed = IsClosedOutwardTriangleMesh(mesh);
     this->Fingerprint = fingerprint;
     this->Known = true;

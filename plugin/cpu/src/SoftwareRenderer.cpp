@@ -109,6 +109,15 @@ double EstimatePixelsPerTriangle(const Frame& frame, const Mesh& mesh)
   return std::max(0.0, w) * std::max(0.0, h) / static_cast<double>(std::max<int64_t>(1, mesh.NumberOfPolygons()));
 }
 
+/// The closed-mesh test (HiddenBackFaces.h) runs, once per mesh, only when
+/// the image has at least this many pixels per polygon. It costs ~120 ns
+/// per triangle; culling saves the set-up of the back faces that reach a
+/// row of pixel centres, ~2,000 instructions each (measured on the 100k
+/// torus at 1080p), and with fewer pixels than polygons most of them reach
+/// none: on a 5M-triangle sphere at 16x16 the test cost 0.6 s to cull
+/// 23,302 faces.
+constexpr double kCullTestMinPixelsPerPolygon = 1.0;
+
 /// Whether the mesh's whole bounding box is in front of the near plane
 /// (clip z + w > 0 at its eight corners): the camera is outside the mesh
 /// and the near plane cuts nothing away.
@@ -191,7 +200,10 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh,
   F.CullBack = F.Opt.cullBackFaces;
   const bool hiddenBackFaces = !F.CullBack && F.Opt.cullHiddenBackFaces &&
     !F.Opt.countCoverage && mesh.NumberOfPolygons() > 0 && BoundsInFrontOfNearPlane(F, mesh) &&
-    this->Closed.IsClosedOutward(mesh);
+    this->Closed.IsClosedOutward(mesh,
+      static_cast<double>(F.Width) * F.Height >=
+        kCullTestMinPixelsPerPolygon * static_cast<double>(mesh.NumberOfPolygons()),
+      F.Threads);
   F.CullBack = F.CullBack || hiddenBackFaces;
   double pixelsPerTriangle = 0;
   bool fastPhongAsPhong = false;

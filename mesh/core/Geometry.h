@@ -8,6 +8,7 @@
 #include "shadinglab/model/Vec3.h"
 
 #include <cstdint>
+#include <vector>
 
 namespace shadinglab::mesh
 {
@@ -61,6 +62,19 @@ template <typename T>
 Vec3<T> PointOf(const T* points, int64_t i)
 {
   return Vec3<T>(points[3 * i], points[3 * i + 1], points[3 * i + 2]);
+}
+
+/// Root of v's set in a union-find forest (parent[v] == v at a root), with
+/// path halving.
+template <typename Index>
+Index UnionFindRoot(std::vector<Index>& parent, Index v)
+{
+  while (parent[v] != v)
+  {
+    parent[v] = parent[parent[v]];
+    v = parent[v];
+  }
+  return v;
 }
 
 } // namespace shadinglab::mesh

@@ -12,15 +12,10 @@ namespace shadinglab::mesh
 namespace
 {
 
-/// Union-find over faces, with path halving.
+/// Union-find over faces.
 int64_t Find(std::vector<int64_t>& parent, int64_t f)
 {
-  while (parent[f] != f)
-  {
-    parent[f] = parent[parent[f]];
-    f = parent[f];
-  }
-  return f;
+  return UnionFindRoot(parent, f);
 }
 
 } // namespace

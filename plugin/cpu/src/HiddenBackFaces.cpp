@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "HiddenBackFaces.h"
 
+#include "Geometry.h"
 #include "Raster.h"
 
 #include <cstring>
@@ -14,15 +15,10 @@ namespace shadinglab::cpu
 namespace
 {
 
-/// Union-find root with path halving.
+/// Union-find over vertices (mesh/core/Geometry.h).
 uint32_t Root(std::vector<uint32_t>& parent, uint32_t v)
 {
-  while (parent[v] != v)
-  {
-    parent[v] = parent[parent[v]];
-    v = parent[v];
-  }
-  return v;
+  return mesh::UnionFindRoot(parent, v);
 }
 
 /// Four independent multiply-xor lanes over 64-bit words (one chain would

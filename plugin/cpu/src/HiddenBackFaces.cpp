@@ -39,8 +39,19 @@ uint64_t HashWords(const void* data, size_t bytes, uint64_t seed)
       h[k] ^= h[k] >> 29;
     }
   }
+  // The last 0-31 bytes: whole words, then the 0-7 left over.
+  for (; i + 8 <= bytes; i += 8)
+  {
+    uint64_t w;
+    std::memcpy(&w, p + i, 8);
+    h[0] = (h[0] ^ w) * kMul;
+    h[0] ^= h[0] >> 29;
+  }
   uint64_t tail = 0;
-  std::memcpy(&tail, p + i, bytes - i);
+  if (bytes > i)
+  {
+    std::memcpy(&tail, p + i, bytes - i);
+  }
   uint64_t out = (h[0] ^ tail) * kMul;
   for (int k = 1; k < 4; ++k)
   {

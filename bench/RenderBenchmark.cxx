@@ -8,6 +8,8 @@
 //
 // Meshes: a ~100k-triangle torus (316 x 158 x 2 = 99,856) and a ~1M-triangle
 // icosphere (level 8: 1,310,720). VTK rows are skipped without DISPLAY.
+// SHADINGLAB_BENCH_NO_HIDDEN_CULL=1 turns the CPU renderer's culling of
+// hidden back faces off in BM_Cpu (both meshes are closed), to compare.
 #include "AnalyticMeshes.h"
 #include "PolyDataMesh.h"
 #include "shadinglab/cpu/SoftwareRenderer.h"

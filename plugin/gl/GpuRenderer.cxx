@@ -58,36 +58,6 @@ bool GpuAvailable(std::string& why)
 namespace
 {
 
-/// FNV-1a over the mesh's arrays (about 10 ms for a million triangles,
-/// against ~0.5 s to convert and upload them again).
-uint64_t MeshHash(const render::Mesh& mesh)
-{
-  uint64_t h = 1469598103934665603ULL;
-  auto mix = [&h](const void* data, size_t bytes) {
-    const auto* p = static_cast<const unsigned char*>(data);
-    // Eight bytes at a time: the arrays are floats and 64-bit indices.
-    size_t i = 0;
-    for (; i + 8 <= bytes; i += 8)
-    {
-      uint64_t word;
-      std::memcpy(&word, p + i, 8);
-      h = (h ^ word) * 1099511628211ULL;
-    }
-    for (; i < bytes; ++i)
-    {
-      h = (h ^ p[i]) * 1099511628211ULL;
-    }
-    h = (h ^ bytes) * 1099511628211ULL;
-  };
-  mix(mesh.points.data(), mesh.points.size() * sizeof(float));
-  mix(mesh.normals.data(), mesh.normals.size() * sizeof(float));
-  mix(mesh.colors.data(), mesh.colors.size() * sizeof(float));
-  mix(mesh.offsets.data(), mesh.offsets.size() * sizeof(int64_t));
-  mix(mesh.connectivity.data(), mesh.connectivity.size() * sizeof(int64_t));
-  mix(mesh.faceNormals.data(), mesh.faceNormals.size() * sizeof(float));
-  return h;
-}
-
 } // namespace
 
 struct GpuRenderer::Internals
@@ -151,7 +121,7 @@ const render::Image& GpuRenderer::Render(
   const auto start = std::chrono::steady_clock::now();
   Internals& in = *this->Impl;
   const Material<double>& material = scene.material;
-  const uint64_t hash = MeshHash(*scene.mesh);
+  const uint64_t hash = scene.mesh->ContentHash();
   if (!in.MeshData || hash != in.MeshHash)
   {
     in.MeshData.TakeReference(render::PolyDataFromMesh(*scene.mesh));

@@ -2,9 +2,7 @@
 #include "HiddenBackFaces.h"
 
 #include "Geometry.h"
-#include "Raster.h"
 
-#include <cstring>
 #include <limits>
 #include <numeric>
 #include <vector>
@@ -21,84 +19,7 @@ uint32_t Root(std::vector<uint32_t>& parent, uint32_t v)
   return mesh::UnionFindRoot(parent, v);
 }
 
-/// Four independent multiply-xor lanes over 64-bit words (one chain would
-/// be bound by the multiply's latency), folded at the end.
-uint64_t HashWords(const void* data, size_t bytes, uint64_t seed)
-{
-  constexpr uint64_t kMul = 0x9E3779B97F4A7C15ull;
-  uint64_t h[4] = { seed, seed ^ 0x1234567ull, seed ^ 0x89abcdefull, seed ^ 0x5555aaaaull };
-  const auto* p = static_cast<const unsigned char*>(data);
-  size_t i = 0;
-  for (; i + 32 <= bytes; i += 32)
-  {
-    for (int k = 0; k < 4; ++k)
-    {
-      uint64_t w;
-      std::memcpy(&w, p + i + 8 * k, 8);
-      h[k] = (h[k] ^ w) * kMul;
-      h[k] ^= h[k] >> 29;
-    }
-  }
-  // The last 0-31 bytes: whole words, then the 0-7 left over.
-  for (; i + 8 <= bytes; i += 8)
-  {
-    uint64_t w;
-    std::memcpy(&w, p + i, 8);
-    h[0] = (h[0] ^ w) * kMul;
-    h[0] ^= h[0] >> 29;
-  }
-  uint64_t tail = 0;
-  if (bytes > i)
-  {
-    std::memcpy(&tail, p + i, bytes - i);
-  }
-  uint64_t out = (h[0] ^ tail) * kMul;
-  for (int k = 1; k < 4; ++k)
-  {
-    out = (out ^ h[k]) * kMul;
-    out ^= out >> 31;
-  }
-  return out ^ bytes;
-}
-
 } // namespace
-
-uint64_t MeshFingerprint(const render::Mesh& mesh, int threads)
-{
-  // Each array in `threads` slices of whole 32-byte blocks; the slices'
-  // hashes are folded in order, so the value does not depend on timing.
-  const struct
-  {
-    const void* data;
-    size_t bytes;
-  } arrays[3] = { { mesh.points.data(), mesh.points.size() * sizeof(float) },
-    { mesh.offsets.data(), mesh.offsets.size() * sizeof(int64_t) },
-    { mesh.connectivity.data(), mesh.connectivity.size() * sizeof(int64_t) } };
-  const int slices = std::max(1, threads);
-  uint64_t h = 1;
-  for (const auto& a : arrays)
-  {
-    std::vector<uint64_t> part(static_cast<size_t>(slices), 0);
-    const size_t blocks = a.bytes / 32, per = (blocks + slices - 1) / slices;
-    raster::ParallelFor(slices, slices,
-      [&](int64_t b, int64_t e, int)
-      {
-        for (int64_t s = b; s < e; ++s)
-        {
-          const size_t first = std::min(blocks, s * per) * 32;
-          const size_t last = s + 1 == slices ? a.bytes : std::min(blocks, (s + 1) * per) * 32;
-          part[s] = HashWords(static_cast<const unsigned char*>(a.data) + first, last - first,
-            static_cast<uint64_t>(s) + 1);
-        }
-      });
-    for (const uint64_t p : part)
-    {
-      h = HashWords(&p, sizeof(p), h);
-    }
-    h ^= a.bytes;
-  }
-  return h;
-}
 
 bool IsClosedOutwardTriangleMesh(const render::Mesh& mesh)
 {
@@ -169,21 +90,9 @@ bool IsClosedOutwardTriangleMesh(const render::Mesh& mesh)
   // bounding-box centre (divergence theorem: sum of det(p0, p1, p2) / 6).
   std::vector<uint32_t> parent(static_cast<size_t>(nv));
   std::iota(parent.begin(), parent.end(), 0u);
-  double lo[3], hi[3];
-  for (int c = 0; c < 3; ++c)
-  {
-    lo[c] = std::numeric_limits<double>::infinity();
-    hi[c] = -lo[c];
-  }
-  for (int64_t v = 0; v < nv; ++v)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      lo[c] = std::min(lo[c], double(mesh.points[3 * v + c]));
-      hi[c] = std::max(hi[c], double(mesh.points[3 * v + c]));
-    }
-  }
-  const double centre[3] = { 0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1]), 0.5 * (lo[2] + hi[2]) };
+  double b[6];
+  mesh.Bounds(b);
+  const double centre[3] = { 0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5]) };
   for (int64_t k = 0; k < corners; k += 3)
   {
     const uint32_t a = Root(parent, static_cast<uint32_t>(conn[k]));
@@ -220,7 +129,7 @@ bool IsClosedOutwardTriangleMesh(const render::Mesh& mesh)
 
 bool ClosedMeshCache::IsClosedOutward(const render::Mesh& mesh, bool mayTest, int threads)
 {
-  const uint64_t fingerprint = MeshFingerprint(mesh, threads);
+  const uint64_t fingerprint = mesh.ContentHash(threads);
   if (!this->Known || fingerprint != this->Fingerprint)
   {
     if (!mayTest)

@@ -12,7 +12,7 @@
 //     positive volume (outward), and
 //   - the whole bounding box is in front of the near plane (the camera is
 //     outside the mesh and no front face is cut away by the near plane).
-// The topology test is cached against a fingerprint of the mesh's arrays.
+// The test is cached against the mesh's content hash (render::Mesh::ContentHash).
 #pragma once
 
 #include "shadinglab/render/Scene.h"
@@ -40,10 +40,5 @@ private:
 
 /// The test itself, without the cache.
 bool IsClosedOutwardTriangleMesh(const render::Mesh& mesh);
-
-/// A hash of the mesh's points, offsets and connectivity (and their sizes),
-/// each array hashed in `threads` slices at once (it is read every frame:
-/// ~50 MB for a 1.3M-triangle mesh).
-uint64_t MeshFingerprint(const render::Mesh& mesh, int threads = 1);
 
 } // namespace shadinglab::cpu

@@ -79,11 +79,17 @@ void SetupTransforms(Frame& frame)
 /// is drawn instead.
 constexpr double kFastPhongMinPixels = 96.0;
 
-/// Pixels per triangle, estimated before drawing: the mesh's bounding box
-/// projected and clipped to the image, over its triangles (about half of a
-/// closed mesh's triangles face the viewer, and they cover about half that
-/// rectangle: the two halves cancel). 0 when the box crosses the near plane.
-double EstimatePixelsPerTriangle(const Frame& frame, const Mesh& mesh)
+/// The mesh's bounding box on screen, once per frame: whether all of it is
+/// in front of the near plane (clip z + w > 0 at its eight corners: the
+/// camera is outside the mesh and the near plane cuts nothing away), and
+/// the area in pixels of its projection clipped to the image.
+struct ScreenBounds
+{
+  bool inFrontOfNearPlane = false;
+  double area = 0;
+};
+
+ScreenBounds ProjectBounds(const Frame& frame, const Mesh& mesh)
 {
   double b[6];
   mesh.Bounds(b);
@@ -93,9 +99,9 @@ double EstimatePixelsPerTriangle(const Frame& frame, const Mesh& mesh)
     const double p[3] = { b[corner & 1], b[2 + ((corner >> 1) & 1)], b[4 + ((corner >> 2) & 1)] };
     double clip[4];
     frame.ViewProjection.Apply(p, clip);
-    if (!(clip[3] > 0.0) || !(clip[2] + clip[3] > 0.0))
+    if (!(clip[2] + clip[3] > 0.0) || !(clip[3] > 0.0))
     {
-      return 0.0;
+      return {};
     }
     const double x = (clip[0] / clip[3] * 0.5 + 0.5) * frame.Width;
     const double y = (0.5 - clip[1] / clip[3] * 0.5) * frame.Height;
@@ -104,9 +110,10 @@ double EstimatePixelsPerTriangle(const Frame& frame, const Mesh& mesh)
     y0 = std::min(y0, y);
     y1 = std::max(y1, y);
   }
-  const double w = std::clamp(x1, 0.0, double(frame.Width)) - std::clamp(x0, 0.0, double(frame.Width));
-  const double h = std::clamp(y1, 0.0, double(frame.Height)) - std::clamp(y0, 0.0, double(frame.Height));
-  return std::max(0.0, w) * std::max(0.0, h) / static_cast<double>(std::max<int64_t>(1, mesh.NumberOfPolygons()));
+  const double W = frame.Width, H = frame.Height;
+  const double w = std::clamp(x1, 0.0, W) - std::clamp(x0, 0.0, W);
+  const double h = std::clamp(y1, 0.0, H) - std::clamp(y0, 0.0, H);
+  return { true, std::max(0.0, w) * std::max(0.0, h) };
 }
 
 /// The closed-mesh test (HiddenBackFaces.h) runs, once per mesh, only when
@@ -117,26 +124,6 @@ double EstimatePixelsPerTriangle(const Frame& frame, const Mesh& mesh)
 /// none: on a 5M-triangle sphere at 16x16 the test cost 0.6 s to cull
 /// 23,302 faces.
 constexpr double kCullTestMinPixelsPerPolygon = 1.0;
-
-/// Whether the mesh's whole bounding box is in front of the near plane
-/// (clip z + w > 0 at its eight corners): the camera is outside the mesh
-/// and the near plane cuts nothing away.
-bool BoundsInFrontOfNearPlane(const Frame& frame, const Mesh& mesh)
-{
-  double b[6];
-  mesh.Bounds(b);
-  for (int corner = 0; corner < 8; ++corner)
-  {
-    const double p[3] = { b[corner & 1], b[2 + ((corner >> 1) & 1)], b[4 + ((corner >> 2) & 1)] };
-    double clip[4];
-    frame.ViewProjection.Apply(p, clip);
-    if (!(clip[2] + clip[3] > 0.0))
-    {
-      return false;
-    }
-  }
-  return true;
-}
 
 } // namespace
 
@@ -197,21 +184,23 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh,
   SetupTransforms(F);
   // Back faces: culled when asked, or when none can be seen (HiddenBackFaces.h;
   // not in the fill-rule check, which counts every polygon).
-  F.CullBack = F.Opt.cullBackFaces;
-  const bool hiddenBackFaces = !F.CullBack && F.Opt.cullHiddenBackFaces &&
-    !F.Opt.countCoverage && mesh.NumberOfPolygons() > 0 && BoundsInFrontOfNearPlane(F, mesh) &&
-    this->Closed.IsClosedOutward(mesh,
-      static_cast<double>(F.Width) * F.Height >=
-        kCullTestMinPixelsPerPolygon * static_cast<double>(mesh.NumberOfPolygons()),
-      F.Threads);
-  F.CullBack = F.CullBack || hiddenBackFaces;
-  double pixelsPerTriangle = 0;
-  bool fastPhongAsPhong = false;
-  if (F.Opt.mode == ShadingMode::FastPhong && F.Opt.fastPhongFallback && !F.Opt.countCoverage)
-  {
-    pixelsPerTriangle = EstimatePixelsPerTriangle(F, mesh);
-    fastPhongAsPhong = pixelsPerTriangle < kFastPhongMinPixels;
-  }
+  const int64_t polygons = mesh.NumberOfPolygons();
+  const bool mayCullHidden = !F.Opt.cullBackFaces && F.Opt.cullHiddenBackFaces && polygons > 0;
+  const bool fastPhongMayFallBack = F.Opt.mode == ShadingMode::FastPhong && F.Opt.fastPhongFallback;
+  const ScreenBounds onScreen = !F.Opt.countCoverage && (mayCullHidden || fastPhongMayFallBack)
+    ? ProjectBounds(F, mesh)
+    : ScreenBounds();
+  const double imagePixels = static_cast<double>(F.Width) * F.Height;
+  const bool hiddenBackFaces = mayCullHidden && onScreen.inFrontOfNearPlane &&
+    this->Closed.IsClosedOutward(
+      mesh, imagePixels >= kCullTestMinPixelsPerPolygon * static_cast<double>(polygons), F.Threads);
+  F.CullBack = F.Opt.cullBackFaces || hiddenBackFaces;
+  // Pixels per triangle: the projected box over the triangles (about half
+  // of a closed mesh's triangles face the viewer and cover about half the
+  // box: the halves cancel); 0 (exact Phong) when the box crosses the near plane.
+  const double pixelsPerTriangle = onScreen.area / static_cast<double>(std::max<int64_t>(1, polygons));
+  const bool fastPhongAsPhong =
+    fastPhongMayFallBack && !F.Opt.countCoverage && pixelsPerTriangle < kFastPhongMinPixels;
 
   const int64_t nv = mesh.NumberOfPoints();
   const int64_t np = mesh.NumberOfPolygons();
@@ -307,7 +296,7 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh,
     }
     stats->hiddenBackFacesCulled = hiddenBackFaces;
     stats->fastPhongAsPhong = fastPhongAsPhong;
-    stats->pixelsPerTriangle = pixelsPerTriangle;
+    stats->pixelsPerTriangle = fastPhongMayFallBack ? pixelsPerTriangle : 0.0;
     if (ssaa == 1)
     {
       for (const auto& st : states)

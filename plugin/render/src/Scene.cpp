@@ -3,10 +3,102 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
+#include <thread>
 
 namespace shadinglab::render
 {
+
+namespace
+{
+
+/// Four independent multiply-xor lanes over 64-bit words (one chain would
+/// be bound by the multiply's latency), folded at the end.
+uint64_t HashWords(const void* data, size_t bytes, uint64_t seed)
+{
+  constexpr uint64_t kMul = 0x9E3779B97F4A7C15ull;
+  uint64_t h[4] = { seed, seed ^ 0x1234567ull, seed ^ 0x89abcdefull, seed ^ 0x5555aaaaull };
+  const auto* p = static_cast<const unsigned char*>(data);
+  size_t i = 0;
+  for (; i + 32 <= bytes; i += 32)
+  {
+    for (int k = 0; k < 4; ++k)
+    {
+      uint64_t w;
+      std::memcpy(&w, p + i + 8 * k, 8);
+      h[k] = (h[k] ^ w) * kMul;
+      h[k] ^= h[k] >> 29;
+    }
+  }
+  // The last 0-31 bytes: whole words, then the 0-7 left over.
+  for (; i + 8 <= bytes; i += 8)
+  {
+    uint64_t w;
+    std::memcpy(&w, p + i, 8);
+    h[0] = (h[0] ^ w) * kMul;
+    h[0] ^= h[0] >> 29;
+  }
+  uint64_t tail = 0;
+  if (bytes > i)
+  {
+    std::memcpy(&tail, p + i, bytes - i);
+  }
+  uint64_t out = (h[0] ^ tail) * kMul;
+  for (int k = 1; k < 4; ++k)
+  {
+    out = (out ^ h[k]) * kMul;
+    out ^= out >> 31;
+  }
+  return out ^ bytes;
+}
+
+/// One array in `slices` slices of whole 32-byte blocks, hashed at once and
+/// folded in order (the value does not depend on timing or thread count
+/// beyond `slices`).
+uint64_t HashArray(const void* data, size_t bytes, int slices, uint64_t seed)
+{
+  std::vector<uint64_t> part(static_cast<size_t>(slices), 0);
+  const size_t blocks = bytes / 32, per = (blocks + slices - 1) / slices;
+  auto hashSlice = [&](int s)
+  {
+    const size_t first = std::min(blocks, s * per) * 32;
+    const size_t last = s + 1 == slices ? bytes : std::min(blocks, (s + 1) * per) * 32;
+    part[s] = HashWords(static_cast<const unsigned char*>(data) + first, last - first,
+      static_cast<uint64_t>(s) + 1);
+  };
+  std::vector<std::thread> pool;
+  for (int s = 1; s < slices; ++s)
+  {
+    pool.emplace_back(hashSlice, s);
+  }
+  hashSlice(0);
+  for (auto& t : pool)
+  {
+    t.join();
+  }
+  uint64_t h = seed;
+  for (const uint64_t p : part)
+  {
+    h = HashWords(&p, sizeof(p), h);
+  }
+  return h ^ bytes;
+}
+
+} // namespace
+
+uint64_t Mesh::ContentHash(int threads) const
+{
+  const int slices = std::max(1, threads);
+  uint64_t h = 1;
+  h = HashArray(this->points.data(), this->points.size() * sizeof(float), slices, h);
+  h = HashArray(this->normals.data(), this->normals.size() * sizeof(float), slices, h);
+  h = HashArray(this->colors.data(), this->colors.size() * sizeof(float), slices, h);
+  h = HashArray(this->offsets.data(), this->offsets.size() * sizeof(int64_t), slices, h);
+  h = HashArray(
+    this->connectivity.data(), this->connectivity.size() * sizeof(int64_t), slices, h);
+  return HashArray(this->faceNormals.data(), this->faceNormals.size() * sizeof(float), slices, h);
+}
 
 void Mesh::Bounds(double bounds[6]) const
 {

@@ -27,6 +27,11 @@ struct Mesh
     return offsets.empty() ? 0 : static_cast<int64_t>(offsets.size() - 1);
   }
   void Bounds(double bounds[6]) const;
+  /// A hash of every array's contents and size, for caches keyed on the
+  /// mesh (the GL backend's upload, the CPU backend's closed-mesh test).
+  /// Each array is hashed in `threads` slices at once: a renderer reads it
+  /// every frame (~60 MB for a 1.3M-triangle mesh).
+  uint64_t ContentHash(int threads = 1) const;
 };
 
 /**

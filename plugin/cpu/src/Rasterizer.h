@@ -258,14 +258,7 @@ private:
       if (j1 <= j0)
       {
         // No pixel row: count it if it is degenerate (zero screen area).
-        double area = 0;
-        for (int k = 0; k < n; ++k)
-        {
-          const ScreenVertex& a = this->Screen[conn[first + k]];
-          const ScreenVertex& b = this->Screen[conn[first + (k + 1) % n]];
-          area += static_cast<double>(a.x) * b.y - static_cast<double>(b.x) * a.y;
-        }
-        degenerate += !(std::abs(area) * 0.5 >= kDegenerateArea);
+        degenerate += FacingOf(this->TwiceSignedArea(first, n)) == Facing::Degenerate;
         continue;
       }
       // Left, right or beyond the far plane: DrawPolygon's trivial reject
@@ -275,7 +268,9 @@ private:
       {
         continue;
       }
-      if (F.CullBack && this->IsCulledBackFace(first, n))
+      // Culled back faces go before set-up, as DrawSourcePolygon would cull
+      // them (same area, same floats); degenerate ones are counted there.
+      if (F.CullBack && FacingOf(this->TwiceSignedArea(first, n)) == Facing::Back)
       {
         ++state.culled; // before set-up: its vertices need no shading either
         continue;
@@ -292,9 +287,9 @@ private:
     return degenerate;
   }
 
-  /// A back face DrawSourcePolygon would cull: the same signed area from
-  /// the same floats, and not degenerate (those are counted as such there).
-  bool IsCulledBackFace(int64_t first, int n) const
+  /// Twice the signed screen area of the mesh polygon at `first` (y down:
+  /// front faces negative), from its projected vertices.
+  double TwiceSignedArea(int64_t first, int n) const
   {
     const auto& conn = F.MeshData->connectivity;
     double area = 0;
@@ -304,7 +299,23 @@ private:
       const ScreenVertex& b = this->Screen[conn[first + (k + 1) % n]];
       area += static_cast<double>(a.x) * b.y - static_cast<double>(b.x) * a.y;
     }
-    return std::abs(area) * 0.5 >= kDegenerateArea && std::isfinite(area) && area > 0;
+    return area;
+  }
+
+  enum class Facing
+  {
+    Degenerate, ///< no area (below kDegenerateArea) or not finite
+    Front,
+    Back,
+  };
+  /// The one rule for a polygon of twice-signed area `area`.
+  static Facing FacingOf(double area)
+  {
+    if (!(std::abs(area) * 0.5 >= kDegenerateArea) || !std::isfinite(area))
+    {
+      return Facing::Degenerate;
+    }
+    return area > 0 ? Facing::Back : Facing::Front;
   }
 
   /// Draws polygon p's pixels in one band.
@@ -433,12 +444,13 @@ private:
       return;
     }
     const bool owner = j0 / kBandRows == band;
-    if (!(std::abs(area) * 0.5 >= kDegenerateArea) || !std::isfinite(area))
+    const Facing facing = FacingOf(area);
+    if (facing == Facing::Degenerate)
     {
       state.degenerate += owner;
       return;
     }
-    const bool back = area > 0;
+    const bool back = facing == Facing::Back;
     if (back && F.CullBack)
     {
       state.culled += owner; // clipped polygons only: binning culls the rest

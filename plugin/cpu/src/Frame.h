@@ -36,6 +36,7 @@ struct Frame
   SpecularPowerTable PowerTable; ///< fast-phong's x^n, as Bishop & Weimer
   float FastPhongMinCos = 0.0f;  ///< cos of RenderOptions::fastPhongMaxSpread
   bool CullBack = false;         ///< back faces are culled (asked, or hidden)
+  PixelUniforms Pixels{};        ///< what the Phong stage's queued pixels are shaded with
 
   // Frame buffers (full resolution), owned by the renderer.
   float* Rgb = nullptr;

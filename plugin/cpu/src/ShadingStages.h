@@ -285,6 +285,8 @@ struct PhongStage : StageBase
       slot += 3;
     }
     f.NumAttributes = slot;
+    f.Pixels = { &f.Mat, &f.Lights, f.Eye, f.ToEye, f.Cam.parallel, f.PositionSlot >= 0,
+      f.ColorSlot >= 0 };
   }
 
   void Vertex(int64_t v, float* raw) const { WriteVertexSlots(F, v, raw); }
@@ -302,7 +304,6 @@ struct PhongStage : StageBase
     const float flip = (poly.back && F.Opt.twoSidedLighting) ? -1.0f : 1.0f;
     int64_t shaded = 0;
     PixelQueue& q = state.queue;
-    const PixelUniforms uniforms = this->Uniforms();
     this->Scan(verts, n, rowBegin, rowEnd,
       [&](int j, int i, const float* a)
       {
@@ -335,20 +336,14 @@ struct PhongStage : StageBase
         q.out[k] = out;
         if (++q.count == PixelQueue::kCapacity)
         {
-          ShadeQueue(uniforms, q);
+          ShadeQueue(F.Pixels, q);
         }
         ++shaded;
       });
     state.shaded += shaded;
   }
 
-  void Finish(ThreadState& state) const { ShadeQueue(this->Uniforms(), state.queue); }
-
-  PixelUniforms Uniforms() const
-  {
-    return { &F.Mat, &F.Lights, F.Eye, F.ToEye, F.Cam.parallel, F.PositionSlot >= 0,
-      F.ColorSlot >= 0 };
-  }
+  void Finish(ThreadState& state) const { ShadeQueue(F.Pixels, state.queue); }
 };
 
 /// Fast Phong (Bishop & Weimer 1986; eq. 2.6-2.9): triangles only, the

@@ -29,12 +29,11 @@ void ShadeQueueScalar(const PixelUniforms& u, PixelQueue& q)
 {
   for (int k = 0; k < q.count; ++k)
   {
-    const Vec3<float> N = NormalizeOr(Vec3<float>(q.nx[k], q.ny[k], q.nz[k]), u.toEye);
     const Vec3<float> P = u.hasPosition ? Vec3<float>(q.px[k], q.py[k], q.pz[k]) : Vec3<float>();
     const Vec3<float> color =
       u.hasColor ? Vec3<float>(q.cr[k], q.cg[k], q.cb[k]) : u.material->diffuseColor;
-    const Vec3<float> V = u.parallel ? u.toEye : NormalizeOr(u.eye - P, u.toEye);
-    const Vec3<float> I = Shade(*u.material, *u.lighting, color, P, N, V);
+    const Vec3<float> I = ShadeQueuedPixel(*u.material, *u.lighting, u.eye, u.toEye, u.parallel,
+      Vec3<float>(q.nx[k], q.ny[k], q.nz[k]), P, color);
     q.out[k][0] = I.x;
     q.out[k][1] = I.y;
     q.out[k][2] = I.z;
@@ -52,8 +51,8 @@ int PixelLanes()
 
 void SetPixelLanes(int lanes)
 {
-  gForcedLanes.store(lanes == 8 && !CpuHasAvx2() ? 0 : (lanes == 1 || lanes == 4 || lanes == 8 ? lanes : 0),
-    std::memory_order_relaxed);
+  const bool available = lanes == 1 || lanes == 4 || (lanes == 8 && CpuHasAvx2());
+  gForcedLanes.store(available ? lanes : 0, std::memory_order_relaxed);
 }
 
 void ShadeQueue(const PixelUniforms& uniforms, PixelQueue& queue)

@@ -41,6 +41,20 @@ struct PixelUniforms
   bool hasColor;    ///< cr/cg/cb are filled (else the material's diffuse colour)
 };
 
+/// The model at one queued pixel, or at a batch of them (T an xsimd batch):
+/// docs/model.md eq. 2.5, the interpolated normal renormalized first; V
+/// towards the eye, or the view direction for a parallel camera. The one
+/// formula of the scalar path and the wide kernels.
+template <typename T>
+inline Vec3<T> ShadeQueuedPixel(const Material<T>& material, const Lighting<T>& lighting,
+  const Vec3<T>& eye, const Vec3<T>& toEye, bool parallel, const Vec3<T>& n, const Vec3<T>& P,
+  const Vec3<T>& color)
+{
+  const Vec3<T> N = NormalizeOr(n, toEye);
+  const Vec3<T> V = parallel ? toEye : NormalizeOr(eye - P, toEye);
+  return Shade(material, lighting, color, P, N, V);
+}
+
 /// Shades and writes every queued pixel, then empties the queue.
 void ShadeQueue(const PixelUniforms& uniforms, PixelQueue& queue);
 

@@ -42,10 +42,8 @@ void ShadeQueueWith(const PixelUniforms& u, PixelQueue& q)
   }
   for (int k = 0; k < q.count; k += W)
   {
-    // docs/model.md eq. 2.5: the interpolated normal is renormalized before lighting.
     const Vec3<B> n(B::load_unaligned(q.nx + k), B::load_unaligned(q.ny + k),
       B::load_unaligned(q.nz + k));
-    const Vec3<B> N = NormalizeOr(n, toEye);
     Vec3<B> P;
     if (u.hasPosition)
     {
@@ -56,8 +54,7 @@ void ShadeQueueWith(const PixelUniforms& u, PixelQueue& q)
       ? Vec3<B>(B::load_unaligned(q.cr + k), B::load_unaligned(q.cg + k),
           B::load_unaligned(q.cb + k))
       : diffuse;
-    const Vec3<B> V = u.parallel ? toEye : NormalizeOr(eye - P, toEye);
-    const Vec3<B> I = Shade(material, lighting, color, P, N, V);
+    const Vec3<B> I = ShadeQueuedPixel(material, lighting, eye, toEye, u.parallel, n, P, color);
     alignas(32) float r[W], g[W], b[W];
     I.x.store_aligned(r);
     I.y.store_aligned(g);

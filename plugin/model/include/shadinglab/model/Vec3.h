@@ -9,14 +9,6 @@
 #include <algorithm>
 #include <cmath>
 
-/// Forces inlining of the small model functions into the renderers' pixel
-/// loops, where the compiler's own heuristics give up on the nested calls
-/// (measured: the per-pixel Shade() chain stayed out of line at -O3).
-#if defined(__GNUC__) || defined(__clang__)
-#define SL_INLINE inline __attribute__((always_inline))
-#else
-#define SL_INLINE inline
-#endif
 
 namespace shadinglab
 {

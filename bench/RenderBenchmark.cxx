@@ -312,8 +312,38 @@ void BM_CpuHalfOutside(benchmark::State& state)
     (state.range(1) ? ", half outside" : ", all in view"));
 }
 
+/// A small frame's fixed cost (the explorer's panels, the accuracy study's
+/// 320x240 frames): a 2,304-triangle torus filling 320x240, each mode, two
+/// threads. Whatever a frame does regardless of its size shows here.
+void BM_CpuSmallFrame(benchmark::State& state)
+{
+  static const render::Mesh mesh = [] {
+    vtkSmartPointer<vtkPolyData> raw;
+    raw.TakeReference(sl::datasets::MakeTorus(1.0, 0.4, 48, 24));
+    raw->GetPointData()->SetNormals(raw->GetPointData()->GetArray(sl::datasets::kExactNormalArray));
+    return render::MeshFromPolyData(raw);
+  }();
+  double bounds[6];
+  mesh.Bounds(bounds);
+  const render::Camera camera = render::FitCamera(bounds, 20.0, 35.0, 1.6, 320.0 / 240.0, false);
+  render::RenderOptions opt;
+  opt.width = 320;
+  opt.height = 240;
+  opt.mode = static_cast<render::ShadingMode>(state.range(0));
+  opt.threads = 2;
+  const render::Scene s{ &mesh, camera, Headlight(camera), sl::Material<double>() };
+  cpu::SoftwareRenderer renderer;
+  renderer.Render(s, opt);
+  for (auto _ : state)
+  {
+    benchmark::DoNotOptimize(renderer.Render(s, opt).rgb.data());
+  }
+  state.SetLabel(std::string(render::ShadingModeName(opt.mode)) + ", 2,304 triangles, 320x240");
+}
+
 } // namespace
 
+BENCHMARK(BM_CpuSmallFrame)->DenseRange(0, 3)->Unit(benchmark::kMicrosecond)->UseRealTime();
 BENCHMARK(BM_CpuHalfOutside)
   ->ArgsProduct({ { 0, 1, 2 }, { 0, 1 } })
   ->Unit(benchmark::kMillisecond)

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The software rasterizer's primitives: screen vertices with their
-// interpolated attributes, the transforms, the parallel loop, and scan
+// interpolated attributes, the transforms, and scan
 // conversion as the lecture does it (edge walk in y, span in x with
 // I_{p+1} = I_p + dI; docs/model.md eq. 2.3-2.4). Nothing here knows the
 // shading mode: the stages (ShadingStages.h) pass their pixel functions in.
@@ -13,7 +13,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <thread>
 #include <vector>
 
 namespace shadinglab::cpu::raster
@@ -82,31 +81,6 @@ inline Matrix4 Multiply(const Matrix4& a, const Matrix4& b)
     }
   }
   return r;
-}
-
-template<typename Fn>
-void ParallelFor(int64_t count, int threads, Fn&& fn)
-{
-  if (threads <= 1 || count < 2)
-  {
-    fn(int64_t(0), count, 0);
-    return;
-  }
-  std::vector<std::thread> pool;
-  const int64_t per = (count + threads - 1) / threads;
-  for (int t = 0; t < threads; ++t)
-  {
-    const int64_t b = t * per, e = std::min(count, b + per);
-    if (b >= e)
-    {
-      break;
-    }
-    pool.emplace_back([&fn, b, e, t] { fn(b, e, t); });
-  }
-  for (auto& th : pool)
-  {
-    th.join();
-  }
 }
 
 /// Per-thread scratch space and counters of the raster stage.

@@ -15,6 +15,7 @@
 #pragma once
 
 #include "Frame.h"
+#include "WorkerPool.h"
 
 #include <atomic>
 #include <limits>
@@ -31,7 +32,6 @@ using raster::kMaxPolygonVertices;
 using raster::kAttrFirst;
 using raster::kAttrInvW;
 using raster::kAttrZ;
-using raster::ParallelFor;
 using raster::ScreenVertex;
 using raster::ThreadState;
 
@@ -45,6 +45,7 @@ struct RasterBuffers
   /// (set by several binning workers at once, hence atomic).
   std::unique_ptr<std::atomic<uint8_t>[]> Needed;
   int64_t NeededCapacity = 0;
+  WorkerPool Pool; ///< the frame's threads, kept across frames
 };
 
 template<typename StageT>
@@ -79,12 +80,12 @@ public:
     // lists [0][b], [1][b], ... in order: input order is kept and the
     // per-polygon reject work is split across threads.
     std::vector<int64_t> zeroRowDegenerate(static_cast<size_t>(T), 0);
-    ParallelFor(F.MeshData->NumberOfPolygons(),
+    ParallelFor(this->Buffers.Pool, F.MeshData->NumberOfPolygons(),
       T,
       [&](int64_t begin, int64_t end, int worker)
       { zeroRowDegenerate[worker] = this->BinPolygons(begin, end, worker, states[worker]); });
     this->ShadeVertices();
-    ParallelFor(T,
+    ParallelFor(this->Buffers.Pool, T,
       T,
       [&](int64_t b, int64_t e, int)
       {
@@ -119,7 +120,7 @@ private:
       this->Buffers.NeededCapacity = nv;
     }
     std::atomic<uint8_t>* needed = this->Buffers.Needed.get();
-    ParallelFor(nv,
+    ParallelFor(this->Buffers.Pool, nv,
       F.Threads,
       [&](int64_t b, int64_t e, int)
       {
@@ -147,7 +148,7 @@ private:
   void ShadeVertices()
   {
     const std::atomic<uint8_t>* needed = this->Buffers.Needed.get();
-    ParallelFor(F.MeshData->NumberOfPoints(),
+    ParallelFor(this->Buffers.Pool, F.MeshData->NumberOfPoints(),
       F.Threads,
       [&](int64_t b, int64_t e, int)
       {

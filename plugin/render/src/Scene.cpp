@@ -53,11 +53,17 @@ uint64_t HashWords(const void* data, size_t bytes, uint64_t seed)
   return out ^ bytes;
 }
 
-/// One array in `slices` slices of whole 32-byte blocks, hashed at once and
-/// folded in order (the value does not depend on timing or thread count
-/// beyond `slices`).
-uint64_t HashArray(const void* data, size_t bytes, int slices, uint64_t seed)
+/// One array in slices of whole 32-byte blocks (at most `threads`), hashed
+/// at once and folded in order (the value depends on the size and `threads`
+/// only, never on timing).
+uint64_t HashArray(const void* data, size_t bytes, int threads, uint64_t seed)
 {
+  // Starting a thread costs ~0.05-0.1 ms on the test VMs, about what the
+  // hash takes for 0.3 MB at ~3 GB/s: an array gets one slice per full
+  // 1 MB, so a small mesh (every frame of the explorer) starts none.
+  constexpr size_t kMinBytesPerSlice = size_t(1) << 20;
+  const int slices = static_cast<int>(
+    std::max<size_t>(1, std::min<size_t>(static_cast<size_t>(threads), bytes / kMinBytesPerSlice)));
   std::vector<uint64_t> part(static_cast<size_t>(slices), 0);
   const size_t blocks = bytes / 32, per = (blocks + slices - 1) / slices;
   auto hashSlice = [&](int s)
@@ -89,15 +95,15 @@ uint64_t HashArray(const void* data, size_t bytes, int slices, uint64_t seed)
 
 uint64_t Mesh::ContentHash(int threads) const
 {
-  const int slices = std::max(1, threads);
+  const int t = std::max(1, threads);
   uint64_t h = 1;
-  h = HashArray(this->points.data(), this->points.size() * sizeof(float), slices, h);
-  h = HashArray(this->normals.data(), this->normals.size() * sizeof(float), slices, h);
-  h = HashArray(this->colors.data(), this->colors.size() * sizeof(float), slices, h);
-  h = HashArray(this->offsets.data(), this->offsets.size() * sizeof(int64_t), slices, h);
+  h = HashArray(this->points.data(), this->points.size() * sizeof(float), t, h);
+  h = HashArray(this->normals.data(), this->normals.size() * sizeof(float), t, h);
+  h = HashArray(this->colors.data(), this->colors.size() * sizeof(float), t, h);
+  h = HashArray(this->offsets.data(), this->offsets.size() * sizeof(int64_t), t, h);
   h = HashArray(
-    this->connectivity.data(), this->connectivity.size() * sizeof(int64_t), slices, h);
-  return HashArray(this->faceNormals.data(), this->faceNormals.size() * sizeof(float), slices, h);
+    this->connectivity.data(), this->connectivity.size() * sizeof(int64_t), t, h);
+  return HashArray(this->faceNormals.data(), this->faceNormals.size() * sizeof(float), t, h);
 }
 
 void Mesh::Bounds(double bounds[6]) const

@@ -1,0 +1,72 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The CPU renderer's threads, started once and kept: a frame runs four
+// parallel phases (project, bin, light vertices, draw bands), and starting
+// and joining fresh std::threads for each cost ~0.1 ms a phase on the test
+// VMs, most of a small frame (BM_CpuSmallFrame: a 320x240 frame of 2,304
+// triangles took 1.2 ms with fresh threads).
+#pragma once
+
+#include <condition_variable>
+#include <cstdint>
+#include <exception>
+#include <functional>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace shadinglab::cpu
+{
+
+class WorkerPool
+{
+public:
+  WorkerPool() = default;
+  WorkerPool(const WorkerPool&) = delete;
+  WorkerPool& operator=(const WorkerPool&) = delete;
+  ~WorkerPool();
+
+  /// Calls task(t) for t = 0 .. n-1 and returns when all have returned:
+  /// t = 0 on the calling thread, the others on kept workers (started on
+  /// first need). The first exception a task throws is rethrown here.
+  /// Not re-entrant: one Run at a time per pool.
+  void Run(int n, const std::function<void(int)>& task);
+
+  /// Workers started so far (not counting the caller).
+  int Workers() const { return static_cast<int>(this->Threads.size()); }
+
+private:
+  void WorkerLoop(int index);
+  void Call(int t);
+
+  std::mutex Mutex;
+  std::condition_variable Wake, Done;
+  std::vector<std::thread> Threads;
+  const std::function<void(int)>* Task = nullptr;
+  int Tasks = 0;           ///< tasks of the current Run
+  int Pending = 0;         ///< workers of the current Run not yet finished
+  uint64_t Generation = 0; ///< bumped by each Run; a worker runs each once
+  bool Stopping = false;
+  std::exception_ptr Error;
+};
+
+/// Splits [0, count) into `threads` contiguous ranges and calls
+/// fn(begin, end, worker) for each on the pool (inline for one thread).
+template<typename Fn>
+void ParallelFor(WorkerPool& pool, int64_t count, int threads, Fn&& fn)
+{
+  if (threads <= 1 || count < 2)
+  {
+    fn(int64_t(0), count, 0);
+    return;
+  }
+  const int64_t per = (count + threads - 1) / threads;
+  const int used = static_cast<int>((count + per - 1) / per);
+  pool.Run(used,
+    [&](int t)
+    {
+      const int64_t b = t * per;
+      fn(b, std::min(count, b + per), t);
+    });
+}
+
+} // namespace shadinglab::cpu

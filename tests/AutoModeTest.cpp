@@ -29,8 +29,10 @@ sl::render::ViewPredictors MidSizeView()
 
 TEST(AutoModeTest, GouraudIsCheaperThanPhongOnMidSizeMeshesForEveryModelClass)
 {
-  // Measured side by side (held-out check): Gouraud 0.84 ms, Phong 1.21 ms
-  // with a Cook-Torrance dielectric; the first fit predicted the reverse.
+  // Measured side by side (held-out check, 2026-11-25, SIMD Phong and kept
+  // threads): Gouraud 0.26 ms, Phong 0.41 ms with a Cook-Torrance
+  // dielectric (the first fit predicted the reverse); with gold 0.35 and
+  // 0.46 ms.
   const sl::render::ViewPredictors view = MidSizeView();
   for (const char* preset : { "plastic", "gold" })
   {
@@ -38,9 +40,6 @@ TEST(AutoModeTest, GouraudIsCheaperThanPhongOnMidSizeMeshesForEveryModelClass)
     ASSERT_EQ(ct.model, sl::ReflectanceModel::CookTorrance);
     EXPECT_LT(sl::render::PredictCost(ShadingMode::Gouraud, view, ct),
       sl::render::PredictCost(ShadingMode::Phong, view, ct))
-      << preset;
-    EXPECT_LE(sl::render::PredictCost(ShadingMode::Flat, view, ct),
-      sl::render::PredictCost(ShadingMode::Gouraud, view, ct))
       << preset;
   }
   sl::Material<double> blinn;
@@ -51,19 +50,24 @@ TEST(AutoModeTest, GouraudIsCheaperThanPhongOnMidSizeMeshesForEveryModelClass)
 
 TEST(AutoModeTest, ConductorsCostMoreThanDielectricsWhereTheyAreEvaluated)
 {
-  // The complex Fresnel of a conductor is paid per pixel in Phong and per
-  // vertex in Gouraud: both dearer than a dielectric's; flat barely.
+  // The complex Fresnel of a conductor is paid per pixel in Phong, per
+  // vertex in Gouraud and per front triangle in flat: each dearer than a
+  // dielectric's. Measured (same check): Phong 1.12x on the mid-size view
+  // (SIMD lanes hide most of it; 4x per evaluation before them), Gouraud
+  // 1.7x on 38,400 triangles.
   const sl::render::ViewPredictors view = MidSizeView();
   const sl::Material<double> gold = sl::FindMaterialPreset("gold")->material;
   const sl::Material<double> plastic = sl::FindMaterialPreset("plastic")->material;
   ASSERT_TRUE(gold.IsConductor());
   ASSERT_FALSE(plastic.IsConductor());
-  EXPECT_GT(sl::render::PredictCost(ShadingMode::Phong, view, gold),
-    1.5 * sl::render::PredictCost(ShadingMode::Phong, view, plastic));
+  for (const ShadingMode mode : { ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong })
+  {
+    EXPECT_GT(sl::render::PredictCost(mode, view, gold),
+      1.05 * sl::render::PredictCost(mode, view, plastic))
+      << static_cast<int>(mode);
+  }
   sl::render::ViewPredictors fine = view;
   fine.triangles = 200000;
   EXPECT_GT(sl::render::PredictCost(ShadingMode::Gouraud, fine, gold),
     1.5 * sl::render::PredictCost(ShadingMode::Gouraud, fine, plastic));
-  EXPECT_LT(sl::render::PredictCost(ShadingMode::Flat, view, gold),
-    1.2 * sl::render::PredictCost(ShadingMode::Flat, view, plastic));
 }

@@ -273,8 +273,9 @@ TEST(NormalsTest, AngleAndMaxTrianglePathsMatchTheGeneralCornerFormula)
     const auto general = shadinglab::mesh::ComputeVertexNormals(mesh, opt);
     for (size_t i = 0; i < 3 * 99; ++i)
     {
-      // AcosFast (2e-8 rad) against the same AcosFast through other
-      // arithmetic: agreement to 1e-7.
+      // Angle: the batched loop's atan2 polynomial (1e-8 rad) against the
+      // corner formula's A&S acos (2e-8 rad); Max: the same formula through
+      // other arithmetic. Agreement to 1e-7.
       EXPECT_NEAR(fast[i], general.normals[i], 1e-7) << i;
     }
   }
@@ -319,10 +320,11 @@ TEST(NormalsTest, AngleWeightsAgreeOnBothSimdWidthsAndWithTheCornerFormula)
   for (size_t i = 0; i < wide.size(); ++i)
   {
     EXPECT_DOUBLE_EQ(wide[i], narrow[i]) << i;
-    // A&S acos (2e-8 rad) on both sides, through other arithmetic; the
-    // batched loop takes the third angle as pi minus the other two, so its
-    // error there is up to 4e-8 rad: 2e-7 on a normalized component of
-    // these random slivers (measured worst 1.04e-7).
+    // The batched loop's atan2 polynomial (1e-8 rad) against the corner
+    // formula's A&S acos (2e-8 rad); the batched loop takes the third angle
+    // as pi minus the other two, so its error there is up to 2e-8 rad: 2e-7
+    // on a normalized component of these random slivers (measured worst
+    // 1.04e-7 with A&S acos on both sides).
     EXPECT_NEAR(wide[i], general.normals[i], 2e-7) << i;
   }
 }

@@ -85,13 +85,18 @@ public:
       [&](int64_t begin, int64_t end, int worker)
       { zeroRowDegenerate[worker] = this->BinPolygons(begin, end, worker, states[worker]); });
     this->ShadeVertices();
+    // Bands are taken in turn from one counter, not dealt round-robin: a
+    // band's pixels depend on its bins only, so any thread may draw it, and
+    // the threads finish together (dealt, one thread of two drew for 15 ms
+    // and the other 19 on the torus in Phong).
+    this->NextBand.store(0, std::memory_order_relaxed);
     ParallelFor(this->Buffers.Pool, T,
       T,
       [&](int64_t b, int64_t e, int)
       {
         for (int64_t t = b; t < e; ++t)
         {
-          this->RasterizeThread(static_cast<int>(t), T, states[t]);
+          this->RasterizeThread(T, states[t]);
         }
       });
     int64_t degenerate = 0;
@@ -186,10 +191,10 @@ private:
     }
   }
 
-  void RasterizeThread(int thread, int threadCount, ThreadState& state)
+  void RasterizeThread(int threadCount, ThreadState& state)
   {
     const Vec3f bg = F.Opt.background;
-    for (int b = thread; b < this->Bands; b += threadCount)
+    for (int b; (b = this->NextBand.fetch_add(1, std::memory_order_relaxed)) < this->Bands;)
     {
       const size_t first = static_cast<size_t>(b) * kBandRows * F.Width;
       const size_t last = static_cast<size_t>(std::min(F.Height, (b + 1) * kBandRows)) * F.Width;
@@ -503,6 +508,7 @@ private:
   std::vector<std::vector<int64_t>>& Bins;
   RasterBuffers& Buffers;
   int Bands = 0; ///< kBandRows-row bands of the frame
+  std::atomic<int> NextBand{ 0 }; ///< the next band a thread takes
 };
 
 } // namespace shadinglab::cpu

@@ -110,6 +110,39 @@ void BM_Cpu(benchmark::State& state)
     sl::ReflectanceModelName(material.model) + " threads=" + std::to_string(opt.threads));
 }
 
+/// Cook-Torrance in the forms issue 13 names besides the one-lobe dielectric
+/// of BM_Cpu: 0, a two-lobe dielectric mixture (plastic with a sharp and a
+/// broad Beckmann lobe, weights 0.6 / 0.4); 1, a conductor (the gold preset:
+/// complex Fresnel per pixel); 2, both (gold with the same two lobes).
+void BM_CpuCookTorrance(benchmark::State& state)
+{
+  const Scene& scene = GetScene(static_cast<int>(state.range(0)));
+  const int variant = static_cast<int>(state.range(1));
+  sl::Material<double> material =
+    sl::FindMaterialPreset(variant == 0 ? "plastic" : "gold")->material;
+  if (variant != 1)
+  {
+    material.lobeCount = 2;
+    material.lobes[0] = { 0.6, 0.1 };
+    material.lobes[1] = { 0.4, 0.4 };
+  }
+  render::RenderOptions opt;
+  opt.width = kWidth;
+  opt.height = kHeight;
+  opt.mode = render::ShadingMode::Phong;
+  opt.threads = static_cast<int>(state.range(2));
+  const render::Scene renderScene{ &scene.mesh, scene.camera, Headlight(scene.camera), material };
+  cpu::SoftwareRenderer renderer;
+  for (auto _ : state)
+  {
+    benchmark::DoNotOptimize(renderer.Render(renderScene, opt).rgb.data());
+  }
+  static const char* names[] = { "two-lobe dielectric", "conductor (gold)",
+    "two-lobe conductor" };
+  state.SetLabel(std::string("phong/cook-torrance ") + names[variant] +
+    " threads=" + std::to_string(opt.threads));
+}
+
 /// The Phong stage's pixel kernels side by side: one pixel at a time (the
 /// scalar model), 4 lanes (SSE2) and 8 (AVX2, where the CPU has it).
 void BM_CpuLanes(benchmark::State& state)
@@ -349,6 +382,10 @@ BENCHMARK(BM_CpuHalfOutside)
   ->Unit(benchmark::kMillisecond)
   ->UseRealTime();
 BENCHMARK(BM_Cpu)->Apply(CpuArgs)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_CpuCookTorrance)
+  ->ArgsProduct({ { 0, 1 }, { 0, 1, 2 }, { 1, 2 } })
+  ->Unit(benchmark::kMillisecond)
+  ->UseRealTime();
 BENCHMARK(BM_CpuModeBySize)
   ->ArgsProduct({ { 1, 2, 3, 4, 5, 6, 7 }, { 2, 3 } })
   ->Unit(benchmark::kMillisecond)

@@ -262,9 +262,12 @@ __attribute__((always_inline)) inline void AngleWeightedTrianglesBody(
   for (int64_t start = first; start < last; start += kAngleBatch)
   {
     const int64_t count = std::min(kAngleBatch, last - start);
+    // Every polygon of [first, last) is a triangle (the caller's run), so
+    // triangle start + i begins 3 i after the batch's first corner.
+    const int64_t* corners = m.connectivity + m.offsets[start];
     for (int64_t i = 0; i < count; ++i)
     {
-      const int64_t* c = m.connectivity + m.offsets[start + i];
+      const int64_t* c = corners + 3 * i;
       const double* p0 = m.points + 3 * c[0];
       const double* p1 = m.points + 3 * c[1];
       const double* p2 = m.points + 3 * c[2];
@@ -278,7 +281,7 @@ __attribute__((always_inline)) inline void AngleWeightedTrianglesBody(
     AngleWeights(b, count);
     for (int64_t i = 0; i < count; ++i)
     {
-      const int64_t* c = m.connectivity + m.offsets[start + i];
+      const int64_t* c = corners + 3 * i;
       const double w[3] = { b.w0[i], b.w1[i], b.w2[i] };
       for (int k = 0; k < 3; ++k)
       {

@@ -6,6 +6,8 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <numeric>
 #include <utility>
 
@@ -45,8 +47,13 @@ V3 AreaVector(const MeshView& m, int64_t p)
 }
 
 /// The contribution of polygon p's corner k (vertex connectivity[b + k]).
-inline V3 CornerContribution(const MeshView& m, int64_t b, int64_t n, int64_t k,
-  const V3& areaVector, double areaLength, NormalWeighting w)
+inline V3 CornerContribution(const MeshView& m,
+  int64_t b,
+  int64_t n,
+  int64_t k,
+  const V3& areaVector,
+  double areaLength,
+  NormalWeighting w)
 {
   switch (w)
   {
@@ -181,9 +188,15 @@ constexpr int64_t kAngleBatch = 256;
 __attribute__((always_inline)) inline double AtanUnit(double t)
 {
   // a0 .. a8, lowest power first.
-  constexpr double a[9] = { 0.99999998178865568, -0.33333036709286273, 0.19991872029109073,
-    -0.14197797794085124, 0.10618370636953849, -0.07456854826004547, 0.042137623589193041,
-    -0.015731249122183651, 0.002766283501762026 };
+  constexpr double a[9] = { 0.99999998178865568,
+    -0.33333036709286273,
+    0.19991872029109073,
+    -0.14197797794085124,
+    0.10618370636953849,
+    -0.07456854826004547,
+    0.042137623589193041,
+    -0.015731249122183651,
+    0.002766283501762026 };
   const double u = t * t, u2 = u * u, u4 = u2 * u2;
   const double q0 = a[0] + a[1] * u, q1 = a[2] + a[3] * u;
   const double q2 = a[4] + a[5] * u, q3 = a[6] + a[7] * u;
@@ -231,8 +244,8 @@ __attribute__((always_inline)) inline void AngleWeights(AngleBatch& b, int64_t c
     // gives angle x unit normal); degenerate triangles weigh nothing.
     const double len = std::sqrt(ax * ax + ay * ay + az * az);
     // (& rather than &&: no branch, so that the loop vectorizes.)
-    const bool usable = (len >= kTinyWeight) & (l01 >= kTinyWeight) & (l12 >= kTinyWeight) &
-      (l20 >= kTinyWeight);
+    const bool usable =
+      (len >= kTinyWeight) & (l01 >= kTinyWeight) & (l12 >= kTinyWeight) & (l20 >= kTinyWeight);
     // At p0: e1 . e2; at p1: (p0 - p1) . (p2 - p1) = -e1 . (e2 - e1).
     const double dot0 = b.e1x[i] * b.e2x[i] + b.e1y[i] * b.e2y[i] + b.e1z[i] * b.e2z[i];
     const double dot1 = -(b.e1x[i] * dx + b.e1y[i] * dy + b.e1z[i] * dz);
@@ -255,8 +268,10 @@ __attribute__((always_inline)) inline void AngleWeights(AngleBatch& b, int64_t c
 /// Angle weights (Thurmer & Wuthrich 1998) of the triangles [first, last),
 /// all triangles, accumulated into `out`: gathered into arrays, the
 /// weights computed in one branch-free loop (vectorized), then scattered.
-__attribute__((always_inline)) inline void AngleWeightedTrianglesBody(
-  const MeshView& m, int64_t first, int64_t last, double* out)
+__attribute__((always_inline)) inline void AngleWeightedTrianglesBody(const MeshView& m,
+  int64_t first,
+  int64_t last,
+  double* out)
 {
   AngleBatch b;
   for (int64_t start = first; start < last; start += kAngleBatch)
@@ -296,8 +311,10 @@ __attribute__((always_inline)) inline void AngleWeightedTrianglesBody(
 
 /// The same loop compiled for AVX2 (4 doubles a lane group instead of
 /// SSE2's 2): chosen at run time, so the binary still runs without AVX2.
-__attribute__((target("avx2"))) void AngleWeightedTrianglesAvx2(
-  const MeshView& m, int64_t first, int64_t last, double* out)
+__attribute__((target("avx2"))) void AngleWeightedTrianglesAvx2(const MeshView& m,
+  int64_t first,
+  int64_t last,
+  double* out)
 {
   AngleWeightedTrianglesBody(m, first, last, out);
 }
@@ -334,8 +351,9 @@ bool WideSimdInUse()
   return __builtin_cpu_supports("avx2") && gWideSimd.load(std::memory_order_relaxed);
 }
 
-void ComputeVertexNormalsNoSplit(
-  const MeshView& m, NormalWeighting weighting, std::vector<double>& normals)
+void ComputeVertexNormalsNoSplit(const MeshView& m,
+  NormalWeighting weighting,
+  std::vector<double>& normals)
 {
   normals.assign(static_cast<size_t>(3 * m.numberOfPoints), 0.0);
   double* out = normals.data();
@@ -378,7 +396,8 @@ NormalResult ComputeVertexNormals(const MeshView& m, const NormalOptions& opt)
   // (measured: a third of the time was the kernel zeroing fresh pages).
   static thread_local std::vector<V3> area;
   static thread_local std::vector<double> areaLength;
-  static thread_local std::vector<int64_t> start, corners, cornerPolygon, fill;
+  static thread_local std::vector<int64_t> start, corners64, cornerPolygon;
+  static thread_local std::vector<uint32_t> corners32;
   area.resize(static_cast<size_t>(np));
   areaLength.resize(static_cast<size_t>(np));
   for (int64_t p = 0; p < np; ++p)
@@ -394,25 +413,41 @@ NormalResult ComputeVertexNormals(const MeshView& m, const NormalOptions& opt)
     ++start[m.connectivity[c] + 1];
   }
   std::partial_sum(start.begin(), start.end(), start.begin());
-  corners.resize(static_cast<size_t>(nc));
+  // Corner indices in 4 bytes where they fit (every mesh up to 1.4 billion
+  // triangles; 60 MB less on 5M), in 8 otherwise.
+  const bool narrow = nc <= static_cast<int64_t>(std::numeric_limits<uint32_t>::max());
+  corners32.resize(narrow ? static_cast<size_t>(nc) : 0);
+  corners64.resize(narrow ? 0 : static_cast<size_t>(nc));
   // A mesh of triangles only finds a corner's polygon as c / 3; others keep
   // a table (8 bytes a corner: 120 MB on 5M triangles).
   const bool trianglesOnly = nc == 3 * np;
   cornerPolygon.resize(trianglesOnly ? 0 : static_cast<size_t>(nc));
+  // start[v] serves as v's fill cursor, ending at the next vertex's start;
+  // shifted back after (no second table of nv entries).
+  for (int64_t p = 0; p < np; ++p)
   {
-    fill.assign(start.begin(), start.end() - 1);
-    for (int64_t p = 0; p < np; ++p)
+    for (int64_t c = m.offsets[p]; c < m.offsets[p + 1]; ++c)
     {
-      for (int64_t c = m.offsets[p]; c < m.offsets[p + 1]; ++c)
+      const int64_t slot = start[m.connectivity[c]]++;
+      if (narrow)
       {
-        corners[fill[m.connectivity[c]]++] = c;
-        if (!trianglesOnly)
-        {
-          cornerPolygon[c] = p;
-        }
+        corners32[slot] = static_cast<uint32_t>(c);
+      }
+      else
+      {
+        corners64[slot] = c;
+      }
+      if (!trianglesOnly)
+      {
+        cornerPolygon[c] = p;
       }
     }
   }
+  for (int64_t v = nv; v > 0; --v)
+  {
+    start[v] = start[v - 1];
+  }
+  start[0] = 0;
   auto polygonOf = [&](int64_t c) { return trianglesOnly ? c / 3 : cornerPolygon[c]; };
 
   // Explicit feature edges, as sorted (min, max) pairs.
@@ -423,9 +458,11 @@ NormalResult ComputeVertexNormals(const MeshView& m, const NormalOptions& opt)
     features.emplace_back(std::min(a, b), std::max(a, b));
   }
   std::sort(features.begin(), features.end());
-  auto isFeature = [&](int64_t a, int64_t b) {
+  auto isFeature = [&](int64_t a, int64_t b)
+  {
     return !features.empty() &&
-      std::binary_search(features.begin(), features.end(), std::make_pair(std::min(a, b), std::max(a, b)));
+      std::binary_search(
+        features.begin(), features.end(), std::make_pair(std::min(a, b), std::max(a, b)));
   };
   const double cosFeature = std::cos(opt.featureAngle * 3.14159265358979323846 / 180.0);
 
@@ -444,139 +481,155 @@ NormalResult ComputeVertexNormals(const MeshView& m, const NormalOptions& opt)
   std::vector<int32_t> parent;
   std::vector<int32_t> groupOf;
   std::vector<int64_t> groupPoint;
-  for (int64_t v = 0; v < nv; ++v)
+  // The vertex pass, compiled once per width of the corner table (no
+  // per-corner branch on it).
+  auto vertexPass = [&](const auto* cornerTable)
   {
-    const int64_t cb = start[v], ce = start[v + 1];
-    const int32_t count = static_cast<int32_t>(ce - cb);
-    if (count == 0)
+    for (int64_t v = 0; v < nv; ++v)
     {
-      normals[3 * v + 2] = 1.0;
-      continue;
-    }
-    parent.resize(static_cast<size_t>(count));
-    std::iota(parent.begin(), parent.end(), 0);
-    auto find = [&](int32_t x) {
-      while (parent[x] != x)
+      const int64_t cb = start[v], ce = start[v + 1];
+      const int32_t count = static_cast<int32_t>(ce - cb);
+      if (count == 0)
       {
-        parent[x] = parent[parent[x]];
-        x = parent[x];
+        normals[3 * v + 2] = 1.0;
+        continue;
       }
-      return x;
-    };
-    if (opt.splitting)
-    {
-      ends.resize(static_cast<size_t>(2 * count));
-      for (int32_t i = 0; i < count; ++i)
+      parent.resize(static_cast<size_t>(count));
+      std::iota(parent.begin(), parent.end(), 0);
+      auto find = [&](int32_t x)
       {
-        const int64_t c = corners[cb + i];
-        const int64_t p = polygonOf(c);
-        const int64_t b = m.offsets[p], n = m.offsets[p + 1] - b, k = c - b;
-        ends[2 * i] = { m.connectivity[b + (k + 1 == n ? 0 : k + 1)], i };
-        ends[2 * i + 1] = { m.connectivity[b + (k == 0 ? n - 1 : k - 1)], i };
-      }
-      // Insertion sort: a vertex has a handful of incident edges.
-      for (size_t i = 1; i < ends.size(); ++i)
+        while (parent[x] != x)
+        {
+          parent[x] = parent[parent[x]];
+          x = parent[x];
+        }
+        return x;
+      };
+      if (opt.splitting)
       {
-        const EdgeEnd key = ends[i];
-        size_t j = i;
-        while (j > 0 &&
-          (ends[j - 1].other > key.other ||
-            (ends[j - 1].other == key.other && ends[j - 1].local > key.local)))
+        ends.resize(static_cast<size_t>(2 * count));
+        for (int32_t i = 0; i < count; ++i)
         {
-          ends[j] = ends[j - 1];
-          --j;
+          const int64_t c = static_cast<int64_t>(cornerTable[cb + i]);
+          const int64_t p = polygonOf(c);
+          const int64_t b = m.offsets[p], n = m.offsets[p + 1] - b, k = c - b;
+          ends[2 * i] = { m.connectivity[b + (k + 1 == n ? 0 : k + 1)], i };
+          ends[2 * i + 1] = { m.connectivity[b + (k == 0 ? n - 1 : k - 1)], i };
         }
-        ends[j] = key;
-      }
-      for (size_t i = 0; i < ends.size();)
-      {
-        size_t j = i;
-        while (j < ends.size() && ends[j].other == ends[i].other)
+        // Insertion sort: a vertex has a handful of incident edges.
+        for (size_t i = 1; i < ends.size(); ++i)
         {
-          ++j;
-        }
-        const size_t faces = j - i;
-        const int64_t w = ends[i].other;
-        // Each undirected edge is seen from both its ends; count it at v < w.
-        const bool countHere = v < w;
-        if (faces == 1)
-        {
-          r.boundaryEdges += countHere;
-        }
-        else if (faces > 2)
-        {
-          r.nonManifoldEdges += countHere;
-          if (!opt.splitNonManifold)
+          const EdgeEnd key = ends[i];
+          size_t j = i;
+          while (j > 0 &&
+            (ends[j - 1].other > key.other ||
+              (ends[j - 1].other == key.other && ends[j - 1].local > key.local)))
           {
-            for (size_t k = i + 1; k < j; ++k)
-            {
-              parent[find(ends[k].local)] = find(ends[i].local);
-            }
+            ends[j] = ends[j - 1];
+            --j;
           }
+          ends[j] = key;
         }
-        else
+        for (size_t i = 0; i < ends.size();)
         {
-          const int32_t a = ends[i].local, b = ends[i + 1].local;
-          const int64_t pa = polygonOf(corners[cb + a]), pb = polygonOf(corners[cb + b]);
-          // cos(dihedral) < cosFeature, without dividing: a.b < cos |a||b|.
-          const bool crease = Dot(area[pa], area[pb]) < cosFeature * areaLength[pa] * areaLength[pb] ||
-            isFeature(v, w);
-          if (crease)
+          size_t j = i;
+          while (j < ends.size() && ends[j].other == ends[i].other)
           {
-            r.creaseEdges += countHere;
+            ++j;
+          }
+          const size_t faces = j - i;
+          const int64_t w = ends[i].other;
+          // Each undirected edge is seen from both its ends; count it at v < w.
+          const bool countHere = v < w;
+          if (faces == 1)
+          {
+            r.boundaryEdges += countHere;
+          }
+          else if (faces > 2)
+          {
+            r.nonManifoldEdges += countHere;
+            if (!opt.splitNonManifold)
+            {
+              for (size_t k = i + 1; k < j; ++k)
+              {
+                parent[find(ends[k].local)] = find(ends[i].local);
+              }
+            }
           }
           else
           {
-            parent[find(a)] = find(b);
+            const int32_t a = ends[i].local, b = ends[i + 1].local;
+            const int64_t pa = polygonOf(static_cast<int64_t>(cornerTable[cb + a])),
+                          pb = polygonOf(static_cast<int64_t>(cornerTable[cb + b]));
+            // cos(dihedral) < cosFeature, without dividing: a.b < cos |a||b|.
+            const bool crease =
+              Dot(area[pa], area[pb]) < cosFeature * areaLength[pa] * areaLength[pb] ||
+              isFeature(v, w);
+            if (crease)
+            {
+              r.creaseEdges += countHere;
+            }
+            else
+            {
+              parent[find(a)] = find(b);
+            }
           }
+          i = j;
         }
-        i = j;
       }
-    }
-    else
-    {
-      for (int32_t i = 1; i < count; ++i)
+      else
       {
-        parent[i] = 0;
-      }
-    }
-    // One output point per group of corners; the first group keeps v.
-    groupOf.assign(static_cast<size_t>(count), -1);
-    int32_t groups = 0;
-    groupPoint.clear();
-    for (int32_t i = 0; i < count; ++i)
-    {
-      const int32_t root = find(i);
-      if (groupOf[root] < 0)
-      {
-        groupOf[root] = groups++;
-        int64_t point = v;
-        if (groupOf[root] > 0)
+        for (int32_t i = 1; i < count; ++i)
         {
-          point = static_cast<int64_t>(r.originalPointIds.size());
-          r.originalPointIds.push_back(v);
-          normals.insert(normals.end(), { 0.0, 0.0, 0.0 });
-          ++r.splitPoints;
+          parent[i] = 0;
         }
-        groupPoint.push_back(point);
       }
-      const int64_t point = groupPoint[groupOf[root]];
-      const int64_t c = corners[cb + i];
-      const int64_t p = polygonOf(c);
-      const int64_t b = m.offsets[p], n = m.offsets[p + 1] - b;
-      if (n < 3)
+      // One output point per group of corners; the first group keeps v.
+      groupOf.assign(static_cast<size_t>(count), -1);
+      int32_t groups = 0;
+      groupPoint.clear();
+      for (int32_t i = 0; i < count; ++i)
       {
-        continue;
+        const int32_t root = find(i);
+        if (groupOf[root] < 0)
+        {
+          groupOf[root] = groups++;
+          int64_t point = v;
+          if (groupOf[root] > 0)
+          {
+            point = static_cast<int64_t>(r.originalPointIds.size());
+            r.originalPointIds.push_back(v);
+            normals.insert(normals.end(), { 0.0, 0.0, 0.0 });
+            ++r.splitPoints;
+          }
+          groupPoint.push_back(point);
+        }
+        const int64_t point = groupPoint[groupOf[root]];
+        const int64_t c = static_cast<int64_t>(cornerTable[cb + i]);
+        const int64_t p = polygonOf(c);
+        const int64_t b = m.offsets[p], n = m.offsets[p + 1] - b;
+        if (n < 3)
+        {
+          continue;
+        }
+        if (point != v)
+        {
+          moved.emplace_back(c, point);
+        }
+        const V3 w = CornerContribution(m, b, n, c - b, area[p], areaLength[p], opt.weighting);
+        normals[3 * point] += w.x;
+        normals[3 * point + 1] += w.y;
+        normals[3 * point + 2] += w.z;
       }
-      if (point != v)
-      {
-        moved.emplace_back(c, point);
-      }
-      const V3 w = CornerContribution(m, b, n, c - b, area[p], areaLength[p], opt.weighting);
-      normals[3 * point] += w.x;
-      normals[3 * point + 1] += w.y;
-      normals[3 * point + 2] += w.z;
     }
+  };
+  if (narrow)
+  {
+    vertexPass(corners32.data());
+  }
+  else
+  {
+    vertexPass(corners64.data());
   }
   for (size_t i = 0; i < normals.size(); i += 3)
   {

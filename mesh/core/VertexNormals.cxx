@@ -259,9 +259,10 @@ __attribute__((always_inline)) inline void AngleWeights(AngleBatch& b, int64_t c
     b.e1x[i] = ax; // e1 is read no more
     b.e1y[i] = ay;
     b.e1z[i] = az;
-    b.w0[i] = usable ? a0 * inv : 0.0;
-    b.w1[i] = usable ? a1 * inv : 0.0;
-    b.w2[i] = usable ? (3.14159265358979323846 - a0 - a1) * inv : 0.0;
+    // (inv = 0 weighs unusable triangles out: their angles are finite.)
+    b.w0[i] = a0 * inv;
+    b.w1[i] = a1 * inv;
+    b.w2[i] = (3.14159265358979323846 - a0 - a1) * inv;
   }
 }
 

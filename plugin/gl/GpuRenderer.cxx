@@ -22,7 +22,6 @@
 #include <X11/Xlib.h>
 
 #include <chrono>
-#include <cstring>
 #include <cstdlib>
 #include <stdexcept>
 
@@ -54,11 +53,6 @@ bool GpuAvailable(std::string& why)
   }
   return true;
 }
-
-namespace
-{
-
-} // namespace
 
 struct GpuRenderer::Internals
 {

@@ -203,7 +203,6 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh,
     fastPhongMayFallBack && !F.Opt.countCoverage && pixelsPerTriangle < kFastPhongMinPixels;
 
   const int64_t nv = mesh.NumberOfPoints();
-  const int64_t np = mesh.NumberOfPolygons();
   bool computedNormals = false;
   if (F.Opt.mode != ShadingMode::Flat)
   {
@@ -280,8 +279,8 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh,
   if (stats)
   {
     *stats = RenderStats();
-    stats->polygons = np;
-    for (int64_t p = 0; p < np; ++p)
+    stats->polygons = polygons;
+    for (int64_t p = 0; p < polygons; ++p)
     {
       stats->triangles += std::max<int64_t>(0, mesh.offsets[p + 1] - mesh.offsets[p] - 2);
     }

@@ -127,9 +127,11 @@ bool IsClosedOutwardTriangleMesh(const render::Mesh& mesh)
   return true;
 }
 
-bool ClosedMeshCache::IsClosedOutward(const render::Mesh& mesh, bool mayTest, int threads)
+bool ClosedMeshCache::IsClosedOutward(
+  const render::Mesh& mesh, bool mayTest, WorkerPool& pool, int threads)
 {
-  const uint64_t fingerprint = mesh.ContentHash(threads);
+  const uint64_t fingerprint = mesh.ContentHash(
+    threads, [&pool](int n, const std::function<void(int)>& task) { pool.Run(n, task); });
   if (!this->Known || fingerprint != this->Fingerprint)
   {
     if (!mayTest)

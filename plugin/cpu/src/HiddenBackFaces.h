@@ -15,6 +15,7 @@
 // The test is cached against the mesh's content hash (render::Mesh::ContentHash).
 #pragma once
 
+#include "WorkerPool.h"
 #include "shadinglab/render/Scene.h"
 
 #include <cstdint>
@@ -30,7 +31,8 @@ public:
   /// `mayTest`: whether the test may run if the answer is not cached (it
   /// costs ~120 ns per triangle, once); without it an unknown mesh is
   /// treated as open.
-  bool IsClosedOutward(const render::Mesh& mesh, bool mayTest, int threads = 1);
+  /// The mesh's content hash (the cache key) is computed on `pool`'s threads.
+  bool IsClosedOutward(const render::Mesh& mesh, bool mayTest, WorkerPool& pool, int threads);
 
 private:
   uint64_t Fingerprint = 0;

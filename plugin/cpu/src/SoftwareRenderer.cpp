@@ -192,8 +192,9 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh,
     : ScreenBounds();
   const double imagePixels = static_cast<double>(F.Width) * F.Height;
   const bool hiddenBackFaces = mayCullHidden && onScreen.inFrontOfNearPlane &&
-    this->Closed.IsClosedOutward(
-      mesh, imagePixels >= kCullTestMinPixelsPerPolygon * static_cast<double>(polygons), F.Threads);
+    this->Closed.IsClosedOutward(mesh,
+      imagePixels >= kCullTestMinPixelsPerPolygon * static_cast<double>(polygons),
+      this->Buffers.Pool, F.Threads);
   F.CullBack = F.Opt.cullBackFaces || hiddenBackFaces;
   // Pixels per triangle: the projected box over the triangles (about half
   // of a closed mesh's triangles face the viewer and cover about half the

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
-#include <thread>
 
 namespace shadinglab::render
 {
@@ -53,35 +52,33 @@ uint64_t HashWords(const void* data, size_t bytes, uint64_t seed)
   return out ^ bytes;
 }
 
-/// One array in slices of whole 32-byte blocks (at most `threads`), hashed
-/// at once and folded in order (the value depends on the size and `threads`
-/// only, never on timing).
-uint64_t HashArray(const void* data, size_t bytes, int threads, uint64_t seed)
+/// One array in slices of whole 32-byte blocks (at most `slices`), hashed
+/// by `run` when there is more than one and folded in order.
+uint64_t HashArray(
+  const void* data, size_t bytes, int slices, const Mesh::TaskRunner& run, uint64_t seed)
 {
-  // Starting a thread costs ~0.05-0.1 ms on the test VMs, about what the
-  // hash takes for 0.3 MB at ~3 GB/s: an array gets one slice per full
-  // 1 MB, so a small mesh (every frame of the explorer) starts none.
+  // A slice under 1 MB (~0.3 ms at ~3 GB/s) is not worth handing to another
+  // thread: a small mesh (every frame of the explorer) is hashed in one.
   constexpr size_t kMinBytesPerSlice = size_t(1) << 20;
-  const int slices = static_cast<int>(
-    std::max<size_t>(1, std::min<size_t>(static_cast<size_t>(threads), bytes / kMinBytesPerSlice)));
-  std::vector<uint64_t> part(static_cast<size_t>(slices), 0);
-  const size_t blocks = bytes / 32, per = (blocks + slices - 1) / slices;
+  const int n = run ? static_cast<int>(std::max<size_t>(1,
+                        std::min<size_t>(static_cast<size_t>(slices), bytes / kMinBytesPerSlice)))
+                    : 1;
+  std::vector<uint64_t> part(static_cast<size_t>(n), 0);
+  const size_t blocks = bytes / 32, per = (blocks + n - 1) / n;
   auto hashSlice = [&](int s)
   {
     const size_t first = std::min(blocks, s * per) * 32;
-    const size_t last = s + 1 == slices ? bytes : std::min(blocks, (s + 1) * per) * 32;
+    const size_t last = s + 1 == n ? bytes : std::min(blocks, (s + 1) * per) * 32;
     part[s] = HashWords(static_cast<const unsigned char*>(data) + first, last - first,
       static_cast<uint64_t>(s) + 1);
   };
-  std::vector<std::thread> pool;
-  for (int s = 1; s < slices; ++s)
+  if (n > 1)
   {
-    pool.emplace_back(hashSlice, s);
+    run(n, hashSlice);
   }
-  hashSlice(0);
-  for (auto& t : pool)
+  else
   {
-    t.join();
+    hashSlice(0);
   }
   uint64_t h = seed;
   for (const uint64_t p : part)
@@ -93,17 +90,17 @@ uint64_t HashArray(const void* data, size_t bytes, int threads, uint64_t seed)
 
 } // namespace
 
-uint64_t Mesh::ContentHash(int threads) const
+uint64_t Mesh::ContentHash(int slices, const TaskRunner& run) const
 {
-  const int t = std::max(1, threads);
   uint64_t h = 1;
-  h = HashArray(this->points.data(), this->points.size() * sizeof(float), t, h);
-  h = HashArray(this->normals.data(), this->normals.size() * sizeof(float), t, h);
-  h = HashArray(this->colors.data(), this->colors.size() * sizeof(float), t, h);
-  h = HashArray(this->offsets.data(), this->offsets.size() * sizeof(int64_t), t, h);
+  h = HashArray(this->points.data(), this->points.size() * sizeof(float), slices, run, h);
+  h = HashArray(this->normals.data(), this->normals.size() * sizeof(float), slices, run, h);
+  h = HashArray(this->colors.data(), this->colors.size() * sizeof(float), slices, run, h);
+  h = HashArray(this->offsets.data(), this->offsets.size() * sizeof(int64_t), slices, run, h);
   h = HashArray(
-    this->connectivity.data(), this->connectivity.size() * sizeof(int64_t), t, h);
-  return HashArray(this->faceNormals.data(), this->faceNormals.size() * sizeof(float), t, h);
+    this->connectivity.data(), this->connectivity.size() * sizeof(int64_t), slices, run, h);
+  return HashArray(
+    this->faceNormals.data(), this->faceNormals.size() * sizeof(float), slices, run, h);
 }
 
 void Mesh::Bounds(double bounds[6]) const

@@ -6,6 +6,7 @@
 #include "shadinglab/model/Shading.h"
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace shadinglab::render
@@ -27,11 +28,15 @@ struct Mesh
     return offsets.empty() ? 0 : static_cast<int64_t>(offsets.size() - 1);
   }
   void Bounds(double bounds[6]) const;
+  /// Runs task(0) .. task(n - 1), possibly at once, returning when all have
+  /// (the CPU renderer passes its kept threads: cpu::WorkerPool::Run).
+  using TaskRunner = std::function<void(int n, const std::function<void(int)>& task)>;
   /// A hash of every array's contents and size, for caches keyed on the
   /// mesh (the GL backend's upload, the CPU backend's closed-mesh test).
-  /// Each array is hashed in `threads` slices at once: a renderer reads it
-  /// every frame (~60 MB for a 1.3M-triangle mesh).
-  uint64_t ContentHash(int threads = 1) const;
+  /// With a runner, each array of 1 MB or more is hashed in up to `slices`
+  /// slices at once: a renderer reads it every frame (~60 MB for a
+  /// 1.3M-triangle mesh). The value depends on `slices`, never on timing.
+  uint64_t ContentHash(int slices = 1, const TaskRunner& run = {}) const;
 };
 
 /**

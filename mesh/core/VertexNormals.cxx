@@ -395,17 +395,11 @@ NormalResult ComputeVertexNormals(const MeshView& m, const NormalOptions& opt)
   // Scratch arrays persist per thread across calls: a filter re-run on a
   // large mesh then reuses their pages instead of faulting in ~100 MB anew
   // (measured: a third of the time was the kernel zeroing fresh pages).
-  static thread_local std::vector<V3> area;
-  static thread_local std::vector<double> areaLength;
+  // No per-polygon table of area vectors is kept (160 MB on 5M triangles):
+  // the vertex pass computes the area vectors of the polygons around each
+  // vertex as it reaches it, the same arithmetic, so the same bits.
   static thread_local std::vector<int64_t> start, corners64, cornerPolygon;
   static thread_local std::vector<uint32_t> corners32;
-  area.resize(static_cast<size_t>(np));
-  areaLength.resize(static_cast<size_t>(np));
-  for (int64_t p = 0; p < np; ++p)
-  {
-    area[p] = AreaVector(m, p);
-    areaLength[p] = std::sqrt(Dot(area[p], area[p]));
-  }
 
   // Vertex -> corners (CSR by counting sort): corner index c = offset + k.
   start.assign(static_cast<size_t>(nv + 1), 0);
@@ -482,6 +476,9 @@ NormalResult ComputeVertexNormals(const MeshView& m, const NormalOptions& opt)
   std::vector<int32_t> parent;
   std::vector<int32_t> groupOf;
   std::vector<int64_t> groupPoint;
+  // Area vector and its length of each polygon around the current vertex.
+  std::vector<V3> area;
+  std::vector<double> areaLength;
   // The vertex pass, compiled once per width of the corner table (no
   // per-corner branch on it).
   auto vertexPass = [&](const auto* cornerTable)
@@ -497,6 +494,24 @@ NormalResult ComputeVertexNormals(const MeshView& m, const NormalOptions& opt)
       }
       parent.resize(static_cast<size_t>(count));
       std::iota(parent.begin(), parent.end(), 0);
+      area.resize(static_cast<size_t>(count));
+      areaLength.resize(static_cast<size_t>(count));
+      for (int32_t i = 0; i < count; ++i)
+      {
+        const int64_t p = polygonOf(static_cast<int64_t>(cornerTable[cb + i]));
+        if (trianglesOnly)
+        {
+          // AreaVector's triangle case, without reading the offsets.
+          const int64_t* t = m.connectivity + 3 * p;
+          const double* p0 = m.points + 3 * t[0];
+          area[i] = Cross(Sub(m.points + 3 * t[1], p0), Sub(m.points + 3 * t[2], p0));
+        }
+        else
+        {
+          area[i] = AreaVector(m, p);
+        }
+        areaLength[i] = std::sqrt(Dot(area[i], area[i]));
+      }
       auto find = [&](int32_t x)
       {
         while (parent[x] != x)
@@ -560,11 +575,9 @@ NormalResult ComputeVertexNormals(const MeshView& m, const NormalOptions& opt)
           else
           {
             const int32_t a = ends[i].local, b = ends[i + 1].local;
-            const int64_t pa = polygonOf(static_cast<int64_t>(cornerTable[cb + a])),
-                          pb = polygonOf(static_cast<int64_t>(cornerTable[cb + b]));
             // cos(dihedral) < cosFeature, without dividing: a.b < cos |a||b|.
             const bool crease =
-              Dot(area[pa], area[pb]) < cosFeature * areaLength[pa] * areaLength[pb] ||
+              Dot(area[a], area[b]) < cosFeature * areaLength[a] * areaLength[b] ||
               isFeature(v, w);
             if (crease)
             {
@@ -617,7 +630,7 @@ NormalResult ComputeVertexNormals(const MeshView& m, const NormalOptions& opt)
         {
           moved.emplace_back(c, point);
         }
-        const V3 w = CornerContribution(m, b, n, c - b, area[p], areaLength[p], opt.weighting);
+        const V3 w = CornerContribution(m, b, n, c - b, area[i], areaLength[i], opt.weighting);
         normals[3 * point] += w.x;
         normals[3 * point + 1] += w.y;
         normals[3 * point + 2] += w.z;

@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <complex>
 #include <vector>
 
 namespace sl = shadinglab;
@@ -24,6 +25,19 @@ double FresnelLectureForm(double thetaI, double eta)
   const double sMinus = std::sin(thetaI - thetaT), sPlus = std::sin(thetaI + thetaT);
   const double cMinus = std::cos(thetaI - thetaT), cPlus = std::cos(thetaI + thetaT);
   return 0.5 * (sMinus * sMinus) / (sPlus * sPlus) * (1.0 + (cPlus * cPlus) / (cMinus * cMinus));
+}
+
+// The conductor's Fresnel in complex arithmetic, as Born & Wolf write it
+// (pbrt-v4's FrComplex): cos(theta_t) from Snell's law with n = eta + i k.
+double FresnelComplexForm(double cosTheta_i, double eta, double k)
+{
+  using C = std::complex<double>;
+  const C n(eta, k);
+  const C sin2Theta_t = C(1.0 - cosTheta_i * cosTheta_i) / (n * n);
+  const C cosTheta_t = std::sqrt(C(1.0) - sin2Theta_t);
+  const C rs = (C(cosTheta_i) - n * cosTheta_t) / (C(cosTheta_i) + n * cosTheta_t);
+  const C rp = (n * C(cosTheta_i) - cosTheta_t) / (n * C(cosTheta_i) + cosTheta_t);
+  return 0.5 * (std::norm(rs) + std::norm(rp));
 }
 } // namespace
 
@@ -114,6 +128,48 @@ TEST(FresnelTest, ConductorGoldAtNormalIncidence)
   // REFERENCE.md: gold at 550 nm, n = 0.350, k = 2.714: F0 = 0.8476.
   EXPECT_NEAR(sl::F0_Conductor(0.350, 2.714), 0.8476, 5e-5);
   EXPECT_NEAR(sl::F_Conductor(1.0, 0.350, 2.714), sl::F0_Conductor(0.350, 2.714), 1e-12);
+}
+
+TEST(FresnelTest, ConductorRealFormEqualsTheComplexForm)
+{
+  // The metal presets' channels (Materials.cpp) and a few made-up indices,
+  // including eta < 1 with little absorption (near total reflection).
+  const double indices[][2] = { { 0.14, 3.697 }, { 0.43, 2.455 }, { 1.38, 1.914 },
+    { 0.272, 3.24 }, { 1.037, 2.59 }, { 1.49, 7.61 }, { 0.686, 5.64 }, { 0.35, 2.714 },
+    { 0.6, 0.01 }, { 2.5, 0.3 }, { 1.0, 1e-3 }, { 30.0, 40.0 } };
+  for (const auto& [eta, k] : indices)
+  {
+    for (double a = 0.0; a <= 90.0; a += 0.25)
+    {
+      const double c = std::cos(a * kDeg);
+      EXPECT_NEAR(sl::F_Conductor(c, eta, k), FresnelComplexForm(c, eta, k), 1e-12)
+        << "eta " << eta << " k " << k << " angle " << a;
+      // Float, as both renderers evaluate it, against the exact value at
+      // the same (float) arguments. The complex form in float is 2.4e-6 off
+      // at eta = 1, k = 1e-3 (F ~ 0 there: cancellation in rs and rp).
+      const float cf = static_cast<float>(c), etaf = static_cast<float>(eta),
+                  kf = static_cast<float>(k);
+      EXPECT_NEAR(sl::F_Conductor(cf, etaf, kf), FresnelComplexForm(cf, etaf, kf), 3e-6)
+        << "eta " << eta << " k " << k << " angle " << a;
+    }
+  }
+}
+
+TEST(FresnelTest, ConductorIsFiniteAndBoundedForExtremeIndices)
+{
+  for (double eta : { 1e-3, 0.05, 1.0, 1.5, 1e3 })
+  {
+    for (double k : { 1e-30, 1e-6, 0.5, 3.0, 1e3 })
+    {
+      for (double c : { 0.0, 1e-8, 1e-3, 0.3, 0.7, 1.0 })
+      {
+        const float F = sl::F_Conductor(
+          static_cast<float>(c), static_cast<float>(eta), static_cast<float>(k));
+        EXPECT_TRUE(std::isfinite(F) && F >= 0.0f && F <= 1.0f + 1e-6f)
+          << F << " at eta " << eta << " k " << k << " cos " << c;
+      }
+    }
+  }
 }
 
 TEST(FresnelTest, ConductorWithoutAbsorptionIsTheDielectric)

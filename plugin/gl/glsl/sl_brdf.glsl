@@ -85,19 +85,9 @@ float F_Dielectric(float cosTheta_i, float eta)
   return eta == 1.0 ? 0.0 : (tir ? 1.0 : F);
 }
 
-// Complex arithmetic for the conductor Fresnel (vec2 = re, im).
-vec2 sl_cmul(vec2 a, vec2 b) { return vec2(a.x * b.x - a.y * b.y, a.x * b.y + a.y * b.x); }
-vec2 sl_cdiv(vec2 a, vec2 b) { return sl_cmul(a, vec2(b.x, -b.y)) / dot(b, b); }
-vec2 sl_csqrt(vec2 z)
-{
-  float r = length(z);
-  float re = sqrt(max(0.0, 0.5 * (r + z.x)));
-  float im = sqrt(max(0.0, 0.5 * (r - z.x)));
-  return vec2(re, z.y < 0.0 ? -im : im);
-}
-
 // Exact Fresnel of a conductor with complex index eta + i k (Born & Wolf
-// sec. 14.2; pbrt-v4 FrComplex).
+// sec. 14.2; docs/model.md eq. 1.9), in real arithmetic: a^2 + b^2 and a
+// with n cos(theta_t) = a + i b. The same terms as F_Conductor in Fresnel.h.
 float F_Conductor(float cosTheta_i, float eta, float k)
 {
   if (k == 0.0)
@@ -105,14 +95,20 @@ float F_Conductor(float cosTheta_i, float eta, float k)
     return F_Dielectric(cosTheta_i, eta);
   }
   cosTheta_i = clamp(cosTheta_i, 0.0, 1.0);
-  vec2 n = vec2(eta, k);
-  float sin2Theta_i = max(0.0, 1.0 - cosTheta_i * cosTheta_i);
-  vec2 sin2Theta_t = sl_cdiv(vec2(sin2Theta_i, 0.0), sl_cmul(n, n));
-  vec2 cosTheta_t = sl_csqrt(vec2(1.0, 0.0) - sin2Theta_t);
-  vec2 ci = vec2(cosTheta_i, 0.0);
-  vec2 rs = sl_cdiv(ci - sl_cmul(n, cosTheta_t), ci + sl_cmul(n, cosTheta_t));
-  vec2 rp = sl_cdiv(sl_cmul(n, ci) - cosTheta_t, sl_cmul(n, ci) + cosTheta_t);
-  return 0.5 * (dot(rs, rs) + dot(rp, rp));
+  float cos2Theta_i = cosTheta_i * cosTheta_i;
+  float sin2Theta_i = max(0.0, 1.0 - cos2Theta_i);
+  float t0 = eta * eta - k * k - sin2Theta_i;
+  float etaK2 = eta * eta * k * k;
+  float a2plusb2 = sqrt(t0 * t0 + 4.0 * etaK2);
+  float sum = a2plusb2 + abs(t0);
+  float a = sqrt(t0 >= 0.0 ? 0.5 * sum : 2.0 * etaK2 / sum);
+  float t1 = a2plusb2 + cos2Theta_i;
+  float t2 = 2.0 * cosTheta_i * a;
+  float Rs = (t1 - t2) / max(t1 + t2, SL_TINY_DENOMINATOR);
+  float t3 = cos2Theta_i * a2plusb2 + sin2Theta_i * sin2Theta_i;
+  float t4 = t2 * sin2Theta_i;
+  float Rp = Rs * (t3 - t4) / (t3 + t4);
+  return 0.5 * (Rs + Rp);
 }
 
 vec3 F_RGB(float cosTheta_i, vec3 eta, vec3 k)

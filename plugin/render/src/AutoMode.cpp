@@ -35,22 +35,21 @@ constexpr Fit kPhong = { 3.9660, 1.6892, -0.2412, 0.1011, 0.4186 };
 
 /// eq. 4.2's coefficients (ms, ms per 1000 triangles, ms per 1000 front
 /// pixels) per mode and model class: [0] not Cook-Torrance, [1] Cook-Torrance
-/// dielectric, [2] Cook-Torrance conductor (its complex Fresnel: Gouraud
-/// pays it per vertex, flat per front triangle, Phong per pixel, where the
-/// SIMD lanes hide most of it). Weighted least squares on the relative error
-/// (78 rows each; median relative error 0.12-0.22), refitted 2026-11-25 after
-/// the SIMD pixel kernels, hidden back-face culling and the kept worker
-/// threads (a frame's fixed cost fell from ~0.6-1.0 to ~0.15 ms).
+/// dielectric, [2] Cook-Torrance conductor. Weighted least squares on the
+/// relative error (156 rows each: two runs of the study, side by side),
+/// refitted 2026-11-25 after the conductor Fresnel went to real arithmetic:
+/// a conductor now costs what a dielectric does in every mode (it cost 1.1x
+/// in Phong and 1.7x in Gouraud with the complex form).
 struct CostFit
 {
   double a, b, c;
 };
-constexpr CostFit kCostFlat[3] = { { 0.1745, 0.03702, 0.00748 }, { 0.1668, 0.03951, 0.00898 },
-  { 0.1964, 0.05132, 0.00800 } };
-constexpr CostFit kCostGouraud[3] = { { 0.1681, 0.04301, 0.00701 },
-  { 0.1218, 0.05139, 0.00837 }, { 0.1354, 0.08718, 0.00692 } };
-constexpr CostFit kCostPhong[3] = { { 0.1653, 0.03475, 0.01562 }, { 0.1421, 0.03561, 0.01713 },
-  { 0.1501, 0.03652, 0.02119 } };
+constexpr CostFit kCostFlat[3] = { { 0.2903, 0.05254, 0.00423 }, { 0.2697, 0.05378, 0.00477 },
+  { 0.2300, 0.05503, 0.00745 } };
+constexpr CostFit kCostGouraud[3] = { { 0.1913, 0.06018, 0.00725 },
+  { 0.1917, 0.06709, 0.00718 }, { 0.1958, 0.06740, 0.00656 } };
+constexpr CostFit kCostPhong[3] = { { 0.2064, 0.04906, 0.01800 }, { 0.2064, 0.04830, 0.01776 },
+  { 0.2069, 0.04730, 0.01854 } };
 
 const Fit& FitOf(ShadingMode mode)
 {

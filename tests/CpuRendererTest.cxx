@@ -227,6 +227,45 @@ TEST(CpuRendererTest, ClosedConvexMeshCoversEveryPixelExactlyOnce)
   EXPECT_EQ(multiple, 0);
 }
 
+TEST(CpuRendererTest, OneRendererOverManyFramesDrawsWhatFreshOnesDo)
+{
+  // The renderer keeps one set of frame buffers and draws into the previous
+  // image's: sizes, modes, supersampling and coverage counting changing
+  // from frame to frame must leave nothing of an earlier frame behind.
+  const render::Mesh torus = MeshOf(sl::datasets::MakeTorus(1.0, 0.4, 48, 24), true);
+  const auto cam = CameraLookingAt(Vec3d(0.5, 2.0, 3.0), Vec3d(0, 0, 0), 35);
+  struct FrameSpec
+  {
+    int width, height, ssaa;
+    render::ShadingMode mode;
+    bool coverage;
+  };
+  const FrameSpec frames[] = { { 96, 64, 1, render::ShadingMode::Phong, true },
+    { 96, 64, 1, render::ShadingMode::Flat, false }, { 40, 30, 2, render::ShadingMode::Gouraud, false },
+    { 96, 64, 1, render::ShadingMode::Phong, false }, { 120, 90, 1, render::ShadingMode::Flat, true },
+    { 96, 64, 1, render::ShadingMode::Gouraud, false } };
+  sl::cpu::SoftwareRenderer kept;
+  for (const FrameSpec& f : frames)
+  {
+    render::RenderOptions opt;
+    opt.width = f.width;
+    opt.height = f.height;
+    opt.ssaa = f.ssaa;
+    opt.mode = f.mode;
+    opt.countCoverage = f.coverage;
+    opt.threads = 2;
+    const render::Image again =
+      test::RenderWith(kept, torus, cam, OneLight(Vec3f(0, 0, 1)), BlinnPhong(), opt);
+    const render::Image fresh =
+      test::RenderCpu(torus, cam, OneLight(Vec3f(0, 0, 1)), BlinnPhong(), opt);
+    ASSERT_EQ(again.width, f.width);
+    EXPECT_EQ(again.rgb, fresh.rgb) << f.width << "x" << f.height;
+    EXPECT_EQ(again.covered, fresh.covered);
+    EXPECT_EQ(again.coverage, fresh.coverage);
+    EXPECT_EQ(again.coverage.empty(), !f.coverage);
+  }
+}
+
 TEST(CpuRendererTest, TessellatedPlaneHasNoCracksOrOverlaps)
 {
   // A 40 x 30 grid with jittered interior vertices (sub-pixel positions

@@ -444,6 +444,11 @@ NormalResult ComputeVertexNormals(const MeshView& m, const NormalOptions& opt)
   }
   start[0] = 0;
   auto polygonOf = [&](int64_t c) { return trianglesOnly ? c / 3 : cornerPolygon[c]; };
+  // A polygon's first corner and corner count, without reading the offsets
+  // of a mesh of triangles only.
+  auto firstCorner = [&](int64_t p) { return trianglesOnly ? 3 * p : m.offsets[p]; };
+  auto cornerCount = [&](int64_t p)
+  { return trianglesOnly ? int64_t(3) : m.offsets[p + 1] - m.offsets[p]; };
 
   // Explicit feature edges, as sorted (min, max) pairs.
   std::vector<std::pair<int64_t, int64_t>> features;
@@ -528,7 +533,7 @@ NormalResult ComputeVertexNormals(const MeshView& m, const NormalOptions& opt)
         {
           const int64_t c = static_cast<int64_t>(cornerTable[cb + i]);
           const int64_t p = polygonOf(c);
-          const int64_t b = m.offsets[p], n = m.offsets[p + 1] - b, k = c - b;
+          const int64_t b = firstCorner(p), n = cornerCount(p), k = c - b;
           ends[2 * i] = { m.connectivity[b + (k + 1 == n ? 0 : k + 1)], i };
           ends[2 * i + 1] = { m.connectivity[b + (k == 0 ? n - 1 : k - 1)], i };
         }
@@ -621,7 +626,7 @@ NormalResult ComputeVertexNormals(const MeshView& m, const NormalOptions& opt)
         const int64_t point = groupPoint[groupOf[root]];
         const int64_t c = static_cast<int64_t>(cornerTable[cb + i]);
         const int64_t p = polygonOf(c);
-        const int64_t b = m.offsets[p], n = m.offsets[p + 1] - b;
+        const int64_t b = firstCorner(p), n = cornerCount(p);
         if (n < 3)
         {
           continue;

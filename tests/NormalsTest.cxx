@@ -241,6 +241,34 @@ TEST(NormalsTest, AbramowitzStegunAcosIsAccurate)
   EXPECT_LT(worst, 2.5e-8);
 }
 
+TEST(NormalsTest, PolygonSizesThatSumLikeTrianglesAreNotTakenForTriangles)
+{
+  // A 2-gon beside a quad has 6 corners for 2 polygons, as two triangles
+  // would: the crease pass must still find each corner's own polygon. The
+  // quad lies in z = 0; the 2-gon's points stand above it, so a corner
+  // filed under the wrong polygon would tilt the quad's normals.
+  const std::vector<double> pts{ 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1 };
+  const std::vector<int64_t> offsets{ 0, 2, 6 };
+  const std::vector<int64_t> conn{ 4, 5, 0, 1, 2, 3 };
+  const shadinglab::mesh::MeshView mesh{ pts.data(), 6, offsets.data(), conn.data(), 2 };
+  for (auto w : { shadinglab::mesh::NormalWeighting::Uniform, shadinglab::mesh::NormalWeighting::Area,
+         shadinglab::mesh::NormalWeighting::Angle, shadinglab::mesh::NormalWeighting::Max })
+  {
+    shadinglab::mesh::NormalOptions opt;
+    opt.weighting = w;
+    const auto r = shadinglab::mesh::ComputeVertexNormals(mesh, opt);
+    ASSERT_EQ(r.normals.size(), 18u);
+    for (int v = 0; v < 6; ++v)
+    {
+      // The quad's corners: its normal; the 2-gon's points: no usable face.
+      EXPECT_NEAR(r.normals[3 * v], 0.0, 1e-12) << v;
+      EXPECT_NEAR(r.normals[3 * v + 1], 0.0, 1e-12) << v;
+      EXPECT_NEAR(r.normals[3 * v + 2], 1.0, 1e-12) << v;
+    }
+    EXPECT_EQ(r.boundaryEdges, 4); // the quad's four edges
+  }
+}
+
 TEST(NormalsTest, AngleAndMaxTrianglePathsMatchTheGeneralCornerFormula)
 {
   // Quads go through the general per-corner code, triangles through the

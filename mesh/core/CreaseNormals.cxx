@@ -148,17 +148,7 @@ NormalResult ComputeVertexNormals(const MeshView& m, const NormalOptions& opt)
       for (int32_t i = 0; i < count; ++i)
       {
         const int64_t p = polygonOf(static_cast<int64_t>(cornerTable[cb + i]));
-        if (trianglesOnly)
-        {
-          // AreaVector's triangle case, without reading the offsets.
-          const int64_t* t = m.connectivity + 3 * p;
-          const double* p0 = m.points + 3 * t[0];
-          area[i] = Cross(Sub(m.points + 3 * t[1], p0), Sub(m.points + 3 * t[2], p0));
-        }
-        else
-        {
-          area[i] = AreaVector(m, p);
-        }
+        area[i] = AreaVectorAt(m, firstCorner(p), cornerCount(p));
         areaLength[i] = std::sqrt(Dot(area[i], area[i]));
       }
       auto find = [&](int32_t x)

@@ -29,11 +29,11 @@ inline V3 Sub(const double* a, const double* b)
   return { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
 }
 
-/// Area vector of polygon p: twice its area times the unit normal (Geometry.h).
-inline V3 AreaVector(const MeshView& m, int64_t p)
+/// Area vector of the polygon of n corners from corner b: twice its area
+/// times the unit normal (Geometry.h).
+inline V3 AreaVectorAt(const MeshView& m, int64_t b, int64_t n)
 {
-  const int64_t b = m.offsets[p], e = m.offsets[p + 1];
-  if (e - b == 3)
+  if (n == 3)
   {
     const double* p0 = m.points + 3 * m.connectivity[b];
     const double* p1 = m.points + 3 * m.connectivity[b + 1];
@@ -41,7 +41,13 @@ inline V3 AreaVector(const MeshView& m, int64_t p)
     return Cross(Sub(p1, p0), Sub(p2, p0));
   }
   return NewellAreaVector<double>(
-    e - b, [&](int64_t k) { return PointOf(m.points, m.connectivity[b + k]); });
+    n, [&](int64_t k) { return PointOf(m.points, m.connectivity[b + k]); });
+}
+
+/// Area vector of polygon p.
+inline V3 AreaVector(const MeshView& m, int64_t p)
+{
+  return AreaVectorAt(m, m.offsets[p], m.offsets[p + 1] - m.offsets[p]);
 }
 
 /// The contribution of polygon p's corner k (vertex connectivity[b + k]).

@@ -52,17 +52,20 @@ uint64_t HashWords(const void* data, size_t bytes, uint64_t seed)
   return out ^ bytes;
 }
 
-/// One array in slices of whole 32-byte blocks (at most `slices`), hashed
-/// by `run` when there is more than one and folded in order.
-uint64_t HashArray(
-  const void* data, size_t bytes, int slices, const Mesh::TaskRunner& run, uint64_t seed)
+/// One array in slices of whole 32-byte blocks, hashed by `run` when there
+/// is more than one and folded in order. The slices depend on the size
+/// alone, so the value is the same with or without a runner and for any
+/// number of threads behind it: a cache keyed on it survives a change of
+/// thread count.
+uint64_t HashArray(const void* data, size_t bytes, const Mesh::TaskRunner& run, uint64_t seed)
 {
   // A slice under 1 MB (~0.3 ms at ~3 GB/s) is not worth handing to another
   // thread: a small mesh (every frame of the explorer) is hashed in one.
+  // 16 slices keep up to 16 threads busy on the largest arrays.
   constexpr size_t kMinBytesPerSlice = size_t(1) << 20;
-  const int n = run ? static_cast<int>(std::max<size_t>(1,
-                        std::min<size_t>(static_cast<size_t>(slices), bytes / kMinBytesPerSlice)))
-                    : 1;
+  constexpr size_t kMaxSlices = 16;
+  const int n = static_cast<int>(
+    std::max<size_t>(1, std::min<size_t>(kMaxSlices, bytes / kMinBytesPerSlice)));
   std::vector<uint64_t> part(static_cast<size_t>(n), 0);
   const size_t blocks = bytes / 32, per = (blocks + n - 1) / n;
   auto hashSlice = [&](int s)
@@ -72,13 +75,16 @@ uint64_t HashArray(
     part[s] = HashWords(static_cast<const unsigned char*>(data) + first, last - first,
       static_cast<uint64_t>(s) + 1);
   };
-  if (n > 1)
+  if (n > 1 && run)
   {
     run(n, hashSlice);
   }
   else
   {
-    hashSlice(0);
+    for (int k = 0; k < n; ++k)
+    {
+      hashSlice(k);
+    }
   }
   uint64_t h = seed;
   for (const uint64_t p : part)
@@ -90,17 +96,15 @@ uint64_t HashArray(
 
 } // namespace
 
-uint64_t Mesh::ContentHash(int slices, const TaskRunner& run) const
+uint64_t Mesh::ContentHash(const TaskRunner& run) const
 {
   uint64_t h = 1;
-  h = HashArray(this->points.data(), this->points.size() * sizeof(float), slices, run, h);
-  h = HashArray(this->normals.data(), this->normals.size() * sizeof(float), slices, run, h);
-  h = HashArray(this->colors.data(), this->colors.size() * sizeof(float), slices, run, h);
-  h = HashArray(this->offsets.data(), this->offsets.size() * sizeof(int64_t), slices, run, h);
-  h = HashArray(
-    this->connectivity.data(), this->connectivity.size() * sizeof(int64_t), slices, run, h);
-  return HashArray(
-    this->faceNormals.data(), this->faceNormals.size() * sizeof(float), slices, run, h);
+  h = HashArray(this->points.data(), this->points.size() * sizeof(float), run, h);
+  h = HashArray(this->normals.data(), this->normals.size() * sizeof(float), run, h);
+  h = HashArray(this->colors.data(), this->colors.size() * sizeof(float), run, h);
+  h = HashArray(this->offsets.data(), this->offsets.size() * sizeof(int64_t), run, h);
+  h = HashArray(this->connectivity.data(), this->connectivity.size() * sizeof(int64_t), run, h);
+  return HashArray(this->faceNormals.data(), this->faceNormals.size() * sizeof(float), run, h);
 }
 
 void Mesh::Bounds(double bounds[6]) const

@@ -33,10 +33,11 @@ struct Mesh
   using TaskRunner = std::function<void(int n, const std::function<void(int)>& task)>;
   /// A hash of every array's contents and size, for caches keyed on the
   /// mesh (the GL backend's upload, the CPU backend's closed-mesh test).
-  /// With a runner, each array of 1 MB or more is hashed in up to `slices`
-  /// slices at once: a renderer reads it every frame (~60 MB for a
-  /// 1.3M-triangle mesh). The value depends on `slices`, never on timing.
-  uint64_t ContentHash(int slices = 1, const TaskRunner& run = {}) const;
+  /// An array of 1 MB or more is hashed in slices (one per MB, at most 16)
+  /// that a runner may hash at once: a renderer reads it every frame (~60
+  /// MB for a 1.3M-triangle mesh). The value depends on the contents only,
+  /// not on the runner or its threads.
+  uint64_t ContentHash(const TaskRunner& run = {}) const;
 };
 
 /**

@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <functional>
 #include <string>
 
@@ -168,18 +169,19 @@ TEST(HiddenBackFacesTest, TheMeshHashIsTheSameForAnyThreadsBehindIt)
 {
   // The closed-mesh cache is keyed on Mesh::ContentHash: its value must not
   // depend on whether, or on how many threads, hash the slices, or a change
-  // of thread count would re-run the test. 316 x 158 torus: connectivity
-  // 2.4 MB, two slices.
+  // of thread count would re-run the test. 316 x 158 torus: 4.4 MB in all,
+  // connectivity 2.4 MB (nine slices), points 0.6 MB (two).
   const render::Mesh torus = MeshOf(sl::datasets::MakeTorus(1.0, 0.4, 316, 158));
   const uint64_t alone = torus.ContentHash();
   sl::cpu::WorkerPool pool;
   for (int threads : { 1, 2, 3 })
   {
-    int calls = 0;
+    int calls = 0, tasks = 0;
     const uint64_t ran = torus.ContentHash(
       [&](int n, const std::function<void(int)>& task)
       {
         ++calls;
+        tasks = n;
         sl::cpu::ParallelFor(pool, n, threads,
           [&](int64_t b, int64_t e, int)
           {
@@ -190,9 +192,49 @@ TEST(HiddenBackFacesTest, TheMeshHashIsTheSameForAnyThreadsBehindIt)
           });
       });
     EXPECT_EQ(ran, alone) << threads;
-    EXPECT_GT(calls, 0); // the runner was used for the large array
+    EXPECT_EQ(calls, 1); // every array's slices in one batch
+    EXPECT_GE(tasks, 14);
+    // The renderer's own runner, which hands out slices as threads free up.
+    EXPECT_EQ(torus.ContentHash(sl::cpu::SpreadOver(pool, threads)), alone) << threads;
   }
   render::Mesh edited = torus;
   edited.connectivity.back() = edited.connectivity.front();
   EXPECT_NE(edited.ContentHash(), alone);
+  edited = torus;
+  edited.points[1] = std::nextafter(edited.points[1], 2.0f); // one bit of one point
+  EXPECT_NE(edited.ContentHash(sl::cpu::SpreadOver(pool, 2)), alone);
+}
+
+TEST(HiddenBackFacesTest, BoundsAreExactForAnyThreadsBehindThem)
+{
+  // The renderer reads the bounds every frame, in slices of 64k points over
+  // its threads: the box must be the serial one, NaN coordinates skipped.
+  render::Mesh sphere = MeshOf(sl::datasets::MakeIcosphere(6)); // 40,962 points
+  render::Mesh big = MeshOf(sl::datasets::MakeTorus(1.0, 0.4, 600, 300)); // 180,000
+  big.points[3 * 170000 + 2] = 7.5f;       // the top, in the last slice
+  big.points[3 * 70000] = -3.25f;          // the left, in the second
+  big.points[3 * 100000 + 1] = std::nanf(""); // skipped
+  sl::cpu::WorkerPool pool;
+  for (const render::Mesh* mesh : { &sphere, &big })
+  {
+    double serial[6];
+    mesh->Bounds(serial);
+    for (int threads : { 1, 2, 3 })
+    {
+      double spread[6];
+      mesh->Bounds(spread, sl::cpu::SpreadOver(pool, threads));
+      for (int c = 0; c < 6; ++c)
+      {
+        EXPECT_EQ(spread[c], serial[c]) << threads << " " << c;
+      }
+    }
+  }
+  double b[6];
+  big.Bounds(b, sl::cpu::SpreadOver(pool, 2));
+  EXPECT_EQ(b[0], -3.25);
+  EXPECT_EQ(b[5], 7.5);
+  EXPECT_TRUE(std::isfinite(b[2]) && std::isfinite(b[3]));
+  render::Mesh empty;
+  empty.Bounds(b, sl::cpu::SpreadOver(pool, 2));
+  EXPECT_GT(b[0], b[1]); // no points: an empty box
 }

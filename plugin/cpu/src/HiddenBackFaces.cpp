@@ -131,18 +131,7 @@ bool ClosedMeshCache::IsClosedOutward(
   const render::Mesh& mesh, bool mayTest, WorkerPool& pool, int threads)
 {
   // The hash's slices spread over the frame's threads.
-  const uint64_t fingerprint = mesh.ContentHash(
-    [&](int n, const std::function<void(int)>& task)
-    {
-      ParallelFor(pool, n, threads,
-        [&](int64_t b, int64_t e, int)
-        {
-          for (int64_t k = b; k < e; ++k)
-          {
-            task(static_cast<int>(k));
-          }
-        });
-    });
+  const uint64_t fingerprint = mesh.ContentHash(SpreadOver(pool, threads));
   if (!this->Known || fingerprint != this->Fingerprint)
   {
     if (!mayTest)

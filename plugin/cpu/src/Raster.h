@@ -83,13 +83,18 @@ inline Matrix4 Multiply(const Matrix4& a, const Matrix4& b)
   return r;
 }
 
-/// Per-thread scratch space and counters of the raster stage.
-struct ThreadState
+/// Per-thread scratch space and counters of the raster stage. Each on its
+/// own cache lines (kCacheLine): the threads' states sit side by side in one
+/// vector, and one thread's counters shared a line with the next one's
+/// queue count, both written per pixel.
+inline constexpr size_t kCacheLine = 64;
+struct alignas(kCacheLine) ThreadState
 {
   std::vector<ScreenVertex> clipped; ///< vertices made by near-plane clipping
   PixelQueue queue;                  ///< depth-tested pixels awaiting the model (Phong)
   int64_t clippedPolygons = 0, degenerate = 0, rasterized = 0, shaded = 0, fastPhongExact = 0;
   int64_t culled = 0; ///< back faces culled (by the binning worker or the owner)
+  int64_t triangles = 0; ///< triangles of the polygons this thread binned (n - 2 each)
   int64_t covered = 0; ///< covered pixels in this thread's bands (full resolution)
 };
 

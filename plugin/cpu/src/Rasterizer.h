@@ -66,7 +66,7 @@ public:
   /// found degenerate before any row was known.
   int64_t Run(std::vector<ThreadState>& states)
   {
-    // (Binning worker w keeps its culled count in states[w].)
+    // (Binning worker w keeps its culled and triangle counts in states[w].)
     this->ProjectPositions();
     const int T = F.Threads;
     this->Bands = (F.Height + kBandRows - 1) / kBandRows;
@@ -231,8 +231,9 @@ private:
     for (int64_t p = begin; p < end; ++p)
     {
       const int64_t first = offsets[p];
-      const int n =
-        static_cast<int>(std::min<int64_t>(offsets[p + 1] - first, kMaxPolygonVertices - 1));
+      const int64_t size = offsets[p + 1] - first;
+      state.triangles += std::max<int64_t>(0, size - 2); // for the stats
+      const int n = static_cast<int>(std::min<int64_t>(size, kMaxPolygonVertices - 1));
       if (n < 3)
       {
         continue;

@@ -89,10 +89,10 @@ struct ScreenBounds
   double area = 0;
 };
 
-ScreenBounds ProjectBounds(const Frame& frame, const Mesh& mesh)
+ScreenBounds ProjectBounds(const Frame& frame, const Mesh& mesh, WorkerPool& pool)
 {
   double b[6];
-  mesh.Bounds(b);
+  mesh.Bounds(b, SpreadOver(pool, frame.Threads));
   double x0 = frame.Width, x1 = 0, y0 = frame.Height, y1 = 0;
   for (int corner = 0; corner < 8; ++corner)
   {
@@ -188,7 +188,7 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh,
   const bool mayCullHidden = !F.Opt.cullBackFaces && F.Opt.cullHiddenBackFaces && polygons > 0;
   const bool fastPhongMayFallBack = F.Opt.mode == ShadingMode::FastPhong && F.Opt.fastPhongFallback;
   const ScreenBounds onScreen = !F.Opt.countCoverage && (mayCullHidden || fastPhongMayFallBack)
-    ? ProjectBounds(F, mesh)
+    ? ProjectBounds(F, mesh, this->Buffers.Pool)
     : ScreenBounds();
   const double imagePixels = static_cast<double>(F.Width) * F.Height;
   const bool hiddenBackFaces = mayCullHidden && onScreen.inFrontOfNearPlane &&
@@ -295,12 +295,9 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh,
   {
     *stats = RenderStats();
     stats->polygons = polygons;
-    for (int64_t p = 0; p < polygons; ++p)
-    {
-      stats->triangles += std::max<int64_t>(0, mesh.offsets[p + 1] - mesh.offsets[p] - 2);
-    }
     for (const auto& st : states)
     {
+      stats->triangles += st.triangles; // counted by binning, which reads every polygon's size
       stats->rasterized += st.rasterized;
       stats->clipped += st.clippedPolygons;
       stats->degenerate += st.degenerate;

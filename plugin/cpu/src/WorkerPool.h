@@ -6,6 +6,8 @@
 // triangles took 1.2 ms with fresh threads).
 #pragma once
 
+#include <algorithm>
+#include <atomic>
 #include <condition_variable>
 #include <cstdint>
 #include <exception>
@@ -67,6 +69,34 @@ void ParallelFor(WorkerPool& pool, int64_t count, int threads, Fn&& fn)
       const int64_t b = t * per;
       fn(b, std::min(count, b + per), t);
     });
+}
+
+/// A task runner over the pool (render::Mesh::TaskRunner's signature):
+/// runs task(0) .. task(n - 1) on `threads` threads, each taking the next
+/// task as it finishes one, so tasks of unequal size still end together.
+inline std::function<void(int, const std::function<void(int)>&)> SpreadOver(
+  WorkerPool& pool, int threads)
+{
+  return [&pool, threads](int n, const std::function<void(int)>& task)
+  {
+    if (threads <= 1 || n < 2)
+    {
+      for (int k = 0; k < n; ++k)
+      {
+        task(k);
+      }
+      return;
+    }
+    std::atomic<int> next{ 0 };
+    pool.Run(std::min(threads, n),
+      [&](int)
+      {
+        for (int k; (k = next.fetch_add(1, std::memory_order_relaxed)) < n;)
+        {
+          task(k);
+        }
+      });
+  };
 }
 
 } // namespace shadinglab::cpu

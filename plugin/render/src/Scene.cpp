@@ -2,6 +2,7 @@
 #include "shadinglab/render/Scene.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -52,71 +53,133 @@ uint64_t HashWords(const void* data, size_t bytes, uint64_t seed)
   return out ^ bytes;
 }
 
-/// One array in slices of whole 32-byte blocks, hashed by `run` when there
-/// is more than one and folded in order. The slices depend on the size
-/// alone, so the value is the same with or without a runner and for any
-/// number of threads behind it: a cache keyed on it survives a change of
-/// thread count.
-uint64_t HashArray(const void* data, size_t bytes, const Mesh::TaskRunner& run, uint64_t seed)
+/// One array's share of the hash: `slices` slices of whole 32-byte blocks
+/// (the last takes the rest), each hashed on its own and folded in order.
+struct HashedArray
 {
-  // A slice under 1 MB (~0.3 ms at ~3 GB/s) is not worth handing to another
-  // thread: a small mesh (every frame of the explorer) is hashed in one.
-  // 16 slices keep up to 16 threads busy on the largest arrays.
-  constexpr size_t kMinBytesPerSlice = size_t(1) << 20;
-  constexpr size_t kMaxSlices = 16;
-  const int n = static_cast<int>(
-    std::max<size_t>(1, std::min<size_t>(kMaxSlices, bytes / kMinBytesPerSlice)));
-  std::vector<uint64_t> part(static_cast<size_t>(n), 0);
-  const size_t blocks = bytes / 32, per = (blocks + n - 1) / n;
-  auto hashSlice = [&](int s)
+  const unsigned char* data;
+  size_t bytes;
+  int slices;
+  int firstPart; ///< its first slice's index among all the mesh's slices
+};
+
+/// A slice under 256 KB (~40 us at the ~7 GB/s HashWords reads) is not
+/// worth handing to another thread; 64 keep up to 64 threads busy on the
+/// largest arrays and bound the fold. The slices depend on the sizes alone,
+/// so the value is the same with or without a runner and for any number of
+/// threads behind it: a cache keyed on it survives a change of thread count.
+constexpr size_t kMinBytesPerSlice = size_t(256) << 10;
+constexpr size_t kMaxSlices = 64;
+/// A mesh with less than this in all (every frame of the explorer's
+/// meshes) is hashed on the calling thread: waking others costs more.
+constexpr size_t kMinBytesToSpread = size_t(1) << 20;
+
+/// Runs task(0) .. task(n - 1) on `run` when given and worth it, else here.
+void RunOrInline(int n, bool spread, const Mesh::TaskRunner& run,
+  const std::function<void(int)>& task)
+{
+  if (n > 1 && spread && run)
   {
-    const size_t first = std::min(blocks, s * per) * 32;
-    const size_t last = s + 1 == n ? bytes : std::min(blocks, (s + 1) * per) * 32;
-    part[s] = HashWords(static_cast<const unsigned char*>(data) + first, last - first,
-      static_cast<uint64_t>(s) + 1);
-  };
-  if (n > 1 && run)
-  {
-    run(n, hashSlice);
+    run(n, task);
+    return;
   }
-  else
+  for (int k = 0; k < n; ++k)
   {
-    for (int k = 0; k < n; ++k)
-    {
-      hashSlice(k);
-    }
+    task(k);
   }
-  uint64_t h = seed;
-  for (const uint64_t p : part)
-  {
-    h = HashWords(&p, sizeof(p), h);
-  }
-  return h ^ bytes;
 }
 
 } // namespace
 
 uint64_t Mesh::ContentHash(const TaskRunner& run) const
 {
+  auto arrayOf = [](const auto& v)
+  {
+    return HashedArray{ reinterpret_cast<const unsigned char*>(v.data()),
+      v.size() * sizeof(v[0]), 0, 0 };
+  };
+  HashedArray arrays[] = { arrayOf(this->points), arrayOf(this->normals), arrayOf(this->colors),
+    arrayOf(this->offsets), arrayOf(this->connectivity), arrayOf(this->faceNormals) };
+  // Every array's slices in one batch, so all the runner's threads share
+  // the whole mesh (one batch per array left a 600 KB array to one thread).
+  int parts = 0;
+  size_t total = 0;
+  std::vector<std::pair<int, int>> sliceOf; // part -> (array, slice)
+  for (int a = 0; a < 6; ++a)
+  {
+    HashedArray& arr = arrays[a];
+    arr.slices = static_cast<int>(
+      std::max<size_t>(1, std::min<size_t>(kMaxSlices, arr.bytes / kMinBytesPerSlice)));
+    arr.firstPart = parts;
+    for (int s = 0; s < arr.slices; ++s)
+    {
+      sliceOf.emplace_back(a, s);
+    }
+    parts += arr.slices;
+    total += arr.bytes;
+  }
+  std::vector<uint64_t> part(static_cast<size_t>(parts), 0);
+  RunOrInline(parts, total >= kMinBytesToSpread, run,
+    [&](int k)
+    {
+      const auto [a, s] = sliceOf[static_cast<size_t>(k)];
+      const HashedArray& arr = arrays[a];
+      const size_t blocks = arr.bytes / 32, per = (blocks + arr.slices - 1) / arr.slices;
+      const size_t first = std::min(blocks, s * per) * 32;
+      const size_t last = s + 1 == arr.slices ? arr.bytes : std::min(blocks, (s + 1) * per) * 32;
+      part[static_cast<size_t>(k)] =
+        HashWords(arr.data + first, last - first, static_cast<uint64_t>(s) + 1);
+    });
+  // Fold: each array's slices in order, seeded by the arrays before it.
   uint64_t h = 1;
-  h = HashArray(this->points.data(), this->points.size() * sizeof(float), run, h);
-  h = HashArray(this->normals.data(), this->normals.size() * sizeof(float), run, h);
-  h = HashArray(this->colors.data(), this->colors.size() * sizeof(float), run, h);
-  h = HashArray(this->offsets.data(), this->offsets.size() * sizeof(int64_t), run, h);
-  h = HashArray(this->connectivity.data(), this->connectivity.size() * sizeof(int64_t), run, h);
-  return HashArray(this->faceNormals.data(), this->faceNormals.size() * sizeof(float), run, h);
+  for (const HashedArray& arr : arrays)
+  {
+    for (int s = 0; s < arr.slices; ++s)
+    {
+      h = HashWords(&part[static_cast<size_t>(arr.firstPart + s)], sizeof(uint64_t), h);
+    }
+    h ^= arr.bytes;
+  }
+  return h;
 }
 
-void Mesh::Bounds(double bounds[6]) const
+void Mesh::Bounds(double bounds[6], const TaskRunner& run) const
 {
+  // Slices of kPointsPerSlice points (their min and max are exact, so the
+  // result does not depend on the slicing): a renderer reads the bounds
+  // every frame, ~2 ms for the 1.3M-triangle icosphere's 655k points.
+  constexpr int64_t kPointsPerSlice = 65536;
+  const int64_t n = this->NumberOfPoints();
+  const int slices = static_cast<int>(std::max<int64_t>(1, (n + kPointsPerSlice - 1) / kPointsPerSlice));
+  std::vector<std::array<float, 6>> part(static_cast<size_t>(slices));
+  RunOrInline(slices, true, run,
+    [&](int s)
+    {
+      // float min/max (exact; NaN coordinates are skipped, as by std::min);
+      // written as selects so the loop vectorizes.
+      constexpr float kInf = std::numeric_limits<float>::infinity();
+      float lo[3] = { kInf, kInf, kInf }, hi[3] = { -kInf, -kInf, -kInf };
+      const float* p = this->points.data();
+      const int64_t end = std::min(n, (s + 1) * kPointsPerSlice);
+      for (int64_t v = s * kPointsPerSlice; v < end; ++v)
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          const float x = p[3 * v + c];
+          lo[c] = x < lo[c] ? x : lo[c];
+          hi[c] = x > hi[c] ? x : hi[c];
+        }
+      }
+      part[static_cast<size_t>(s)] = { lo[0], hi[0], lo[1], hi[1], lo[2], hi[2] };
+    });
   bounds[0] = bounds[2] = bounds[4] = std::numeric_limits<double>::infinity();
   bounds[1] = bounds[3] = bounds[5] = -std::numeric_limits<double>::infinity();
-  for (size_t i = 0; i + 2 < this->points.size(); i += 3)
+  for (const auto& b : part)
   {
     for (int c = 0; c < 3; ++c)
     {
-      bounds[2 * c] = std::min(bounds[2 * c], static_cast<double>(this->points[i + c]));
-      bounds[2 * c + 1] = std::max(bounds[2 * c + 1], static_cast<double>(this->points[i + c]));
+      bounds[2 * c] = std::min(bounds[2 * c], static_cast<double>(b[2 * c]));
+      bounds[2 * c + 1] = std::max(bounds[2 * c + 1], static_cast<double>(b[2 * c + 1]));
     }
   }
 }

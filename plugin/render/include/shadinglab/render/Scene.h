@@ -27,16 +27,19 @@ struct Mesh
   {
     return offsets.empty() ? 0 : static_cast<int64_t>(offsets.size() - 1);
   }
-  void Bounds(double bounds[6]) const;
   /// Runs task(0) .. task(n - 1), possibly at once, returning when all have
-  /// (the CPU renderer passes its kept threads: cpu::WorkerPool::Run).
+  /// (the CPU renderer passes its kept threads: cpu::SpreadOver).
   using TaskRunner = std::function<void(int n, const std::function<void(int)>& task)>;
+  /// The points' axis-aligned box (xmin, xmax, ymin, ymax, zmin, zmax); NaN
+  /// coordinates are skipped. In slices of 64k points a runner may take at
+  /// once (a renderer reads it every frame); exact for any runner.
+  void Bounds(double bounds[6], const TaskRunner& run = {}) const;
   /// A hash of every array's contents and size, for caches keyed on the
   /// mesh (the GL backend's upload, the CPU backend's closed-mesh test).
-  /// An array of 1 MB or more is hashed in slices (one per MB, at most 16)
-  /// that a runner may hash at once: a renderer reads it every frame (~60
-  /// MB for a 1.3M-triangle mesh). The value depends on the contents only,
-  /// not on the runner or its threads.
+  /// Arrays are hashed in slices of at least 256 KB (at most 64 per array),
+  /// all of them one batch a runner may hash at once: a renderer reads it
+  /// every frame (~57 MB for the 1.3M-triangle icosphere). The value
+  /// depends on the contents only, not on the runner or its threads.
   uint64_t ContentHash(const TaskRunner& run = {}) const;
 };
 

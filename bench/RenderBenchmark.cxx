@@ -30,10 +30,14 @@
 #include <vtkRenderer.h>
 #include <vtkSmartPointer.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <map>
 #include <memory>
+#include <thread>
+#include <vector>
 
 namespace sl = shadinglab;
 namespace cpu = shadinglab::cpu;
@@ -145,6 +149,157 @@ void BM_CpuCookTorrance(benchmark::State& state)
     "two-lobe conductor" };
   state.SetLabel(std::string("phong/cook-torrance ") + names[variant] +
     " threads=" + std::to_string(opt.threads));
+}
+
+/// Times run(1) and run(2) in alternating pairs (which goes first
+/// alternates too), so both see the same moments of a noisy machine: a
+/// BM_Cpu row's 1- and 2-thread runs are seconds apart, and these VMs'
+/// speed drifts by 1.5x over seconds (the same frame took 19 and 27 ms in
+/// one run). Reports the median of each (`ms_1_thread`, `ms_2_threads`)
+/// and `scaling`, the median over the pairs of one thread's time over two
+/// threads': the two runs of a pair are back to back, so a drift cancels
+/// in their ratio where it would not in the ratio of the two medians.
+template<typename Run>
+void AlternateOneAndTwoThreads(benchmark::State& state, Run&& run)
+{
+  run(1); // steady state, as in BM_Cpu
+  run(2);
+  std::vector<double> ms[2];
+  int64_t pairIndex = 0;
+  for (auto _ : state)
+  {
+    double pair = 0;
+    for (int k = 0; k < 2; ++k)
+    {
+      const int r = static_cast<int>((pairIndex + k) % 2);
+      const auto start = std::chrono::steady_clock::now();
+      run(r + 1);
+      const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      ms[r].push_back(1e3 * t);
+      pair += t;
+    }
+    ++pairIndex;
+    state.SetIterationTime(pair);
+  }
+  auto median = [](std::vector<double> v)
+  {
+    std::sort(v.begin(), v.end());
+    return v.empty() ? 0.0 : 0.5 * (v[(v.size() - 1) / 2] + v[v.size() / 2]);
+  };
+  std::vector<double> ratios;
+  for (size_t k = 0; k < std::min(ms[0].size(), ms[1].size()); ++k)
+  {
+    ratios.push_back(ms[1][k] > 0 ? ms[0][k] / ms[1][k] : 0.0);
+  }
+  state.counters["ms_1_thread"] = median(ms[0]);
+  state.counters["ms_2_threads"] = median(ms[1]);
+  state.counters["scaling"] = median(ratios);
+}
+
+/// Two threads against one, frame by frame (AlternateOneAndTwoThreads): a
+/// renderer with one thread and one with two draw alternate frames.
+/// Variants: 0-3 the modes with Blinn-Phong, 4 Phong with Cook-Torrance
+/// (dielectric), 5-7 BM_CpuCookTorrance's two-lobe dielectric, gold,
+/// two-lobe gold. BM_MachineScaling is the same measurement of work with
+/// nothing serial in it: the ceiling this machine puts on the ratio.
+void BM_CpuThreadScaling(benchmark::State& state)
+{
+  const Scene& scene = GetScene(static_cast<int>(state.range(0)));
+  const int variant = static_cast<int>(state.range(1));
+  render::RenderOptions opt;
+  opt.width = kWidth;
+  opt.height = kHeight;
+  opt.mode = static_cast<render::ShadingMode>(variant < 4 ? variant : 2);
+  sl::Material<double> material;
+  if (variant == 4)
+  {
+    material.model = sl::ReflectanceModel::CookTorrance;
+  }
+  else if (variant > 4)
+  {
+    material = sl::FindMaterialPreset(variant == 5 ? "plastic" : "gold")->material;
+    if (variant != 6)
+    {
+      material.lobeCount = 2;
+      material.lobes[0] = { 0.6, 0.1 };
+      material.lobes[1] = { 0.4, 0.4 };
+    }
+  }
+  const render::Scene renderScene{ &scene.mesh, scene.camera, Headlight(scene.camera), material };
+  cpu::SoftwareRenderer renderers[2];
+  render::RenderOptions opts[2] = { opt, opt };
+  opts[0].threads = 1;
+  opts[1].threads = 2;
+  AlternateOneAndTwoThreads(state,
+    [&](int threads)
+    {
+      benchmark::DoNotOptimize(
+        renderers[threads - 1].Render(renderScene, opts[threads - 1]).rgb.data());
+    });
+  static const char* names[] = { "flat", "gouraud", "phong", "fast-phong", "phong/cook-torrance",
+    "cook-torrance two-lobe dielectric", "cook-torrance conductor (gold)",
+    "cook-torrance two-lobe conductor" };
+  state.SetLabel(std::string(names[variant]) + ", 1 and 2 threads alternating");
+}
+
+/// What this machine gives two threads, measured as BM_CpuThreadScaling
+/// measures the renderer, on work split in two halves with no serial part
+/// and no shared data: 0, compute (independent multiply-add chains in
+/// registers, ~20 ms on one thread); 1, memory (read-modify-write of a
+/// 34 MB float buffer, the size of a 1080p frame's colour, depth and
+/// coverage, ~8 passes). A renderer cannot scale better than this in the
+/// same run; these VMs share their host's cores, caches and memory with
+/// other machines.
+void BM_MachineScaling(benchmark::State& state)
+{
+  const bool memory = state.range(0) == 1;
+  constexpr int64_t kChains = 8, kSteps = 6000000;
+  constexpr size_t kFloats = 34u << 18; // 34 MB
+  std::vector<float> buffer(memory ? kFloats : 0, 1.0f);
+  auto half = [&](int part, int parts)
+  {
+    if (memory)
+    {
+      const size_t b = kFloats * part / parts, e = kFloats * (part + 1) / parts;
+      for (int pass = 0; pass < 8; ++pass)
+      {
+        for (size_t i = b; i < e; ++i)
+        {
+          buffer[i] = buffer[i] * 0.999f + 1e-3f;
+        }
+      }
+      benchmark::DoNotOptimize(buffer.data());
+      return;
+    }
+    float acc[kChains];
+    for (int64_t c = 0; c < kChains; ++c)
+    {
+      acc[c] = 1.0f + 1e-3f * static_cast<float>(c + part);
+    }
+    for (int64_t k = 0; k < kSteps / parts; ++k)
+    {
+      for (int64_t c = 0; c < kChains; ++c)
+      {
+        acc[c] = acc[c] * 0.9999999f + 1e-7f;
+      }
+      benchmark::ClobberMemory();
+    }
+    benchmark::DoNotOptimize(acc);
+  };
+  AlternateOneAndTwoThreads(state,
+    [&](int threads)
+    {
+      if (threads == 1)
+      {
+        half(0, 1);
+        return;
+      }
+      std::thread other([&] { half(1, 2); });
+      half(0, 2);
+      other.join();
+    });
+  state.SetLabel(memory ? "memory: 34 MB read-modify-write, 1 and 2 threads alternating"
+                        : "compute: multiply-add chains, 1 and 2 threads alternating");
 }
 
 /// The Phong stage's pixel kernels side by side: one pixel at a time (the
@@ -392,6 +547,11 @@ BENCHMARK(BM_CpuCookTorrance)
   ->ArgsProduct({ { 0, 1 }, { 0, 1, 2 }, { 1, 2 } })
   ->Unit(benchmark::kMillisecond)
   ->UseRealTime();
+BENCHMARK(BM_MachineScaling)->DenseRange(0, 1)->Unit(benchmark::kMillisecond)->UseManualTime();
+BENCHMARK(BM_CpuThreadScaling)
+  ->ArgsProduct({ { 0, 1 }, { 0, 1, 2, 3, 4, 5, 6, 7 } })
+  ->Unit(benchmark::kMillisecond)
+  ->UseManualTime();
 BENCHMARK(BM_CpuModeBySize)
   ->ArgsProduct({ { 1, 2, 3, 4, 5, 6, 7 }, { 2, 3 } })
   ->Unit(benchmark::kMillisecond)

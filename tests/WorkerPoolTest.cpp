@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
 #include <set>
 #include <stdexcept>
 #include <thread>
@@ -84,4 +85,42 @@ TEST(WorkerPoolTest, ParallelForCoversTheRangeOnceInContiguousPieces)
       EXPECT_LT(maxWorker.load(), threads);
     }
   }
+}
+
+// Workers spin a moment after a task and then sleep on the condition
+// variable (WorkerPool.cpp, kSpin = 200 us): runs that follow at once (the
+// spinning hand-off) and runs after a pause long enough for every worker
+// to have gone to sleep (the sleeping hand-off) both run every task once
+// and see what the caller wrote before the run.
+TEST(WorkerPoolTest, RunsAfterSpinningAndAfterSleepingWorkersSeeTheCallersWrites)
+{
+  cpu::WorkerPool pool;
+  std::vector<int> input(3, 0);
+  for (int run = 0; run < 40; ++run)
+  {
+    for (int t = 0; t < 3; ++t)
+    {
+      input[static_cast<size_t>(t)] = run * 10 + t; // plain writes, before the run
+    }
+    std::vector<int> seen(3, -1);
+    pool.Run(3, [&](int t) { seen[static_cast<size_t>(t)] = input[static_cast<size_t>(t)]; });
+    for (int t = 0; t < 3; ++t)
+    {
+      ASSERT_EQ(seen[static_cast<size_t>(t)], run * 10 + t) << "run " << run;
+    }
+    if (run % 4 == 3)
+    {
+      std::this_thread::sleep_for(std::chrono::milliseconds(3)); // past the spin: workers asleep
+    }
+  }
+}
+
+TEST(WorkerPoolTest, MoreTasksThanARunCanCountIsAnErrorNotAShorterRun)
+{
+  cpu::WorkerPool pool;
+  std::atomic<int> calls{ 0 };
+  EXPECT_THROW(pool.Run(70000, [&](int) { calls.fetch_add(1); }), std::length_error);
+  EXPECT_EQ(calls.load(), 0);
+  pool.Run(2, [&](int) { calls.fetch_add(1); }); // and the pool goes on
+  EXPECT_EQ(calls.load(), 2);
 }

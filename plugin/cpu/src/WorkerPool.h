@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The CPU renderer's threads, started once and kept: a frame runs four
-// parallel phases (project, bin, light vertices, draw bands), and starting
-// and joining fresh std::threads for each cost ~0.1 ms a phase on the test
-// VMs, most of a small frame (BM_CpuSmallFrame: a 320x240 frame of 2,304
-// triangles took 1.2 ms with fresh threads).
+// The CPU renderer's threads, started once and kept: a frame runs six
+// parallel phases (bounds, hash, project, bin, light vertices, draw bands),
+// and starting and joining fresh std::threads for each cost ~0.1 ms a phase
+// on the test VMs, most of a small frame (BM_CpuSmallFrame: a 320x240 frame
+// of 2,304 triangles took 1.2 ms with fresh threads). A worker that has
+// finished a task spins a moment for the next before it sleeps, and so
+// does the caller waiting for the workers (WorkerPool.cpp).
 #pragma once
 
 #include <algorithm>
@@ -44,10 +46,11 @@ private:
   std::condition_variable Wake, Done;
   std::vector<std::thread> Threads;
   const std::function<void(int)>* Task = nullptr;
-  int Tasks = 0;           ///< tasks of the current Run
-  int Pending = 0;         ///< workers of the current Run not yet finished
-  uint64_t Generation = 0; ///< bumped by each Run; a worker runs each once
-  bool Stopping = false;
+  /// The current run, as generation << 16 | tasks: one load gives a worker
+  /// both, so it never pairs one run's number with another's task count.
+  std::atomic<uint64_t> Current{ 0 };
+  std::atomic<int> Pending{ 0 }; ///< workers of the current run not yet finished
+  std::atomic<bool> Stopping{ false };
   std::exception_ptr Error;
 };
 

@@ -124,3 +124,45 @@ TEST(WorkerPoolTest, MoreTasksThanARunCanCountIsAnErrorNotAShorterRun)
   pool.Run(2, [&](int) { calls.fetch_add(1); }); // and the pool goes on
   EXPECT_EQ(calls.load(), 2);
 }
+
+TEST(WorkerPoolTest, ParallelChunksCoversTheRangeOnceInNumberedPieces)
+{
+  cpu::WorkerPool pool;
+  for (int64_t count : { 0, 1, 5, 4096, 10000 })
+  {
+    for (int threads : { 1, 2, 3 })
+    {
+      for (int64_t chunk : { 1, 7, 1000 })
+      {
+        std::vector<std::atomic<int>> hits(static_cast<size_t>(count));
+        std::atomic<bool> wrongPiece{ false }, wrongWorker{ false };
+        cpu::ParallelChunks(pool, count, threads, chunk,
+          [&](int64_t piece, int64_t b, int64_t e, int w)
+          {
+            // One piece on one thread (count <= chunk, or one thread) is
+            // piece 0 over everything; otherwise piece k is [k chunk, ..).
+            const bool whole = threads <= 1 || count <= chunk;
+            if (whole ? (piece != 0 || b != 0 || e != count)
+                      : (b != piece * chunk || e != std::min(count, b + chunk)))
+            {
+              wrongPiece = true;
+            }
+            if (w < 0 || w >= std::max(1, threads))
+            {
+              wrongWorker = true;
+            }
+            for (int64_t i = b; i < e; ++i)
+            {
+              hits[static_cast<size_t>(i)].fetch_add(1);
+            }
+          });
+        EXPECT_FALSE(wrongPiece.load()) << count << " " << threads << " " << chunk;
+        EXPECT_FALSE(wrongWorker.load());
+        for (int64_t i = 0; i < count; ++i)
+        {
+          ASSERT_EQ(hits[static_cast<size_t>(i)].load(), 1) << "item " << i;
+        }
+      }
+    }
+  }
+}

@@ -74,6 +74,33 @@ void ParallelFor(WorkerPool& pool, int64_t count, int threads, Fn&& fn)
     });
 }
 
+/// Splits [0, count) into pieces of `chunk` and lets `threads` threads
+/// take them from one counter as they finish the last: for per-item work
+/// whose cost is uneven along the range (a vertex's lighting runs only if
+/// binning marked it, and the marked vertices cluster), where fixed halves
+/// leave one thread waiting for the other. fn(piece, begin, end, worker)
+/// per piece, worker in [0, threads) the thread's index.
+template<typename Fn>
+void ParallelChunks(WorkerPool& pool, int64_t count, int threads, int64_t chunk, Fn&& fn)
+{
+  chunk = std::max<int64_t>(1, chunk);
+  if (threads <= 1 || count <= chunk)
+  {
+    fn(int64_t(0), int64_t(0), count, 0);
+    return;
+  }
+  const int64_t pieces = (count + chunk - 1) / chunk;
+  std::atomic<int64_t> next{ 0 };
+  pool.Run(static_cast<int>(std::min<int64_t>(threads, pieces)),
+    [&](int worker)
+    {
+      for (int64_t k; (k = next.fetch_add(1, std::memory_order_relaxed)) < pieces;)
+      {
+        fn(k, k * chunk, std::min(count, (k + 1) * chunk), worker);
+      }
+    });
+}
+
 /// A task runner over the pool (render::Mesh::TaskRunner's signature):
 /// runs task(0) .. task(n - 1) on `threads` threads, each taking the next
 /// task as it finishes one, so tasks of unequal size still end together.

@@ -139,11 +139,8 @@ TEST(WorkerPoolTest, ParallelChunksCoversTheRangeOnceInNumberedPieces)
         cpu::ParallelChunks(pool, count, threads, chunk,
           [&](int64_t piece, int64_t b, int64_t e, int w)
           {
-            // One piece on one thread (count <= chunk, or one thread) is
-            // piece 0 over everything; otherwise piece k is [k chunk, ..).
-            const bool whole = threads <= 1 || count <= chunk;
-            if (whole ? (piece != 0 || b != 0 || e != count)
-                      : (b != piece * chunk || e != std::min(count, b + chunk)))
+            // Piece k is [k chunk, (k + 1) chunk) on any number of threads.
+            if (b != piece * chunk || e != std::min(count, b + chunk))
             {
               wrongPiece = true;
             }

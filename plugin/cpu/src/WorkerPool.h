@@ -74,22 +74,26 @@ void ParallelFor(WorkerPool& pool, int64_t count, int threads, Fn&& fn)
     });
 }
 
-/// Splits [0, count) into pieces of `chunk` and lets `threads` threads
-/// take them from one counter as they finish the last: for per-item work
-/// whose cost is uneven along the range (a vertex's lighting runs only if
-/// binning marked it, and the marked vertices cluster), where fixed halves
-/// leave one thread waiting for the other. fn(piece, begin, end, worker)
-/// per piece, worker in [0, threads) the thread's index.
+/// Splits [0, count) into pieces of `chunk` (piece k is [k chunk, (k + 1)
+/// chunk), the last one shorter) and lets `threads` threads take them from
+/// one counter as they finish the last: for per-item work whose cost is
+/// uneven along the range (a vertex's lighting runs only if binning marked
+/// it, and the marked vertices cluster), where fixed ranges leave one
+/// thread waiting for the other. fn(piece, begin, end, worker), worker in
+/// [0, threads) the thread's index; on one thread, the pieces in order.
 template<typename Fn>
 void ParallelChunks(WorkerPool& pool, int64_t count, int threads, int64_t chunk, Fn&& fn)
 {
   chunk = std::max<int64_t>(1, chunk);
-  if (threads <= 1 || count <= chunk)
+  const int64_t pieces = (std::max<int64_t>(0, count) + chunk - 1) / chunk;
+  if (threads <= 1 || pieces < 2)
   {
-    fn(int64_t(0), int64_t(0), count, 0);
+    for (int64_t k = 0; k < pieces; ++k)
+    {
+      fn(k, k * chunk, std::min(count, (k + 1) * chunk), 0);
+    }
     return;
   }
-  const int64_t pieces = (count + chunk - 1) / chunk;
   std::atomic<int64_t> next{ 0 };
   pool.Run(static_cast<int>(std::min<int64_t>(threads, pieces)),
     [&](int worker)
@@ -109,23 +113,8 @@ inline std::function<void(int, const std::function<void(int)>&)> SpreadOver(
 {
   return [&pool, threads](int n, const std::function<void(int)>& task)
   {
-    if (threads <= 1 || n < 2)
-    {
-      for (int k = 0; k < n; ++k)
-      {
-        task(k);
-      }
-      return;
-    }
-    std::atomic<int> next{ 0 };
-    pool.Run(std::min(threads, n),
-      [&](int)
-      {
-        for (int k; (k = next.fetch_add(1, std::memory_order_relaxed)) < n;)
-        {
-          task(k);
-        }
-      });
+    ParallelChunks(pool, n, threads, 1,
+      [&](int64_t k, int64_t, int64_t, int) { task(static_cast<int>(k)); });
   };
 }
 

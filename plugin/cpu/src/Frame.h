@@ -40,7 +40,6 @@ struct Frame
 
   // Frame buffers (full resolution), owned by the renderer.
   float* Rgb = nullptr;
-  float* Depth = nullptr;
   uint8_t* Covered = nullptr;
   uint16_t* Coverage = nullptr;
 
@@ -83,7 +82,7 @@ struct Frame
   }
   /// Depth test at pixel (i, j): on a pass, writes the depth, marks the
   /// pixel covered and returns its RGB slot; else nullptr.
-  float* DepthTest(int j, int i, const float* a) const
+  float* DepthTest(int j, int i, const float* a, const raster::ThreadState& state) const
   {
     const float z = a[raster::kAttrZ];
     if (!(z <= 1.0f))
@@ -91,7 +90,7 @@ struct Frame
       return nullptr; // beyond the far plane
     }
     const size_t pix = static_cast<size_t>(j) * this->Width + i;
-    float& d = this->Depth[pix];
+    float& d = state.bandDepth[pix - state.bandFirst];
     if (!(z < d))
     {
       return nullptr;

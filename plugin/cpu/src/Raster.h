@@ -96,6 +96,13 @@ struct alignas(kCacheLine) ThreadState
   int64_t culled = 0; ///< back faces culled (by the binning worker or the owner)
   int64_t triangles = 0; ///< triangles of the polygons this thread binned (n - 2 each)
   int64_t covered = 0; ///< covered pixels in this thread's bands (full resolution)
+  /// The depth of the band being drawn (kBandRows rows), whose first pixel
+  /// is pixel bandFirst of the frame: depth lives only while its band is
+  /// drawn, so it is one band's buffer per thread, kept in the core's
+  /// cache, not a frame's (8 MB at 1080p, cleared and written back to
+  /// memory every frame).
+  float* bandDepth = nullptr;
+  size_t bandFirst = 0;
 };
 
 /*

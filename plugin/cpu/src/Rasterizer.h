@@ -45,6 +45,8 @@ struct RasterBuffers
   /// (set by several binning workers at once, hence atomic).
   std::unique_ptr<std::atomic<uint8_t>[]> Needed;
   int64_t NeededCapacity = 0;
+  /// Per thread, the depth of the band it draws (ThreadState::bandDepth).
+  std::vector<std::vector<float>> BandDepth;
   WorkerPool Pool; ///< the frame's threads, kept across frames
 };
 
@@ -100,6 +102,13 @@ public:
     // the threads finish together (dealt, one thread of two drew for 15 ms
     // and the other 19 on the torus in Phong).
     this->NextBand.store(0, std::memory_order_relaxed);
+    this->Buffers.BandDepth.resize(static_cast<size_t>(T));
+    for (int t = 0; t < T; ++t)
+    {
+      auto& depth = this->Buffers.BandDepth[static_cast<size_t>(t)];
+      depth.resize(static_cast<size_t>(kBandRows) * F.Width); // kept at a steady size
+      states[t].bandDepth = depth.data();
+    }
     ParallelFor(this->Buffers.Pool, T,
       T,
       [&](int64_t b, int64_t e, int)
@@ -213,7 +222,9 @@ private:
         F.Rgb[3 * i + 1] = bg.y;
         F.Rgb[3 * i + 2] = bg.z;
       }
-      std::fill(F.Depth + first, F.Depth + last, std::numeric_limits<float>::infinity());
+      state.bandFirst = first;
+      std::fill(state.bandDepth, state.bandDepth + (last - first),
+        std::numeric_limits<float>::infinity());
       std::fill(F.Covered + first, F.Covered + last, uint8_t(0));
       for (int piece = 0; piece < this->Pieces; ++piece)
       {

@@ -151,12 +151,12 @@ struct FlatStage : StageBase
     Polygon& poly,
     int rowBegin,
     int rowEnd,
-    ThreadState&) const
+    ThreadState& state) const
   {
     this->Scan(verts, n, rowBegin, rowEnd,
       [&](int j, int i, const float* a)
       {
-        if (float* out = F.DepthTest(j, i, a))
+        if (float* out = F.DepthTest(j, i, a, state))
         {
           if (!poly.valid)
           {
@@ -216,12 +216,12 @@ struct GouraudStage : StageBase
     Polygon&,
     int rowBegin,
     int rowEnd,
-    ThreadState&) const
+    ThreadState& state) const
   {
     this->Scan(verts, n, rowBegin, rowEnd,
       [&](int j, int i, const float* a)
       {
-        if (float* out = F.DepthTest(j, i, a))
+        if (float* out = F.DepthTest(j, i, a, state))
         {
           const float w = F.AttributeScale(a);
           out[0] = a[kAttrFirst] * w;
@@ -307,7 +307,7 @@ struct PhongStage : StageBase
     this->Scan(verts, n, rowBegin, rowEnd,
       [&](int j, int i, const float* a)
       {
-        float* out = F.DepthTest(j, i, a);
+        float* out = F.DepthTest(j, i, a, state);
         if (!out)
         {
           return;
@@ -548,7 +548,7 @@ struct FastPhongStage : StageBase
           }
         }
         const float z = a[kAttrZ];
-        float& d = F.Depth[static_cast<size_t>(j) * W + i];
+        float& d = state.bandDepth[static_cast<size_t>(j) * W + i - state.bandFirst];
         if (!(z <= 1.0f) || !(z < d))
         {
           return;

@@ -151,7 +151,6 @@ private:
   ClosedMeshCache Closed;
   std::vector<float> ComputedNormals;
   std::vector<float> Rgb;
-  std::vector<float> Depth;
   std::vector<uint8_t> Covered;
   std::vector<uint16_t> Coverage;
   Image Output;
@@ -232,7 +231,6 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh,
     this->Coverage.swap(image.coverage);
   }
   this->Rgb.resize(pixels * 3);
-  this->Depth.resize(pixels);
   this->Covered.resize(pixels);
   if (F.Opt.countCoverage)
   {
@@ -243,7 +241,6 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh,
     this->Coverage.clear(); // no stale counts from an earlier frame in the image
   }
   F.Rgb = this->Rgb.data();
-  F.Depth = this->Depth.data();
   F.Covered = this->Covered.data();
   F.Coverage = this->Coverage.data();
 

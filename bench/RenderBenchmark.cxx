@@ -13,6 +13,7 @@
 #include "AnalyticMeshes.h"
 #include "PolyDataMesh.h"
 #include "shadinglab/cpu/SoftwareRenderer.h"
+#include "shadinglab/render/AutoMode.h"
 #include "shadinglab/model/Materials.h"
 #include "vtkShadingLabPolyDataMapper.h"
 
@@ -536,8 +537,38 @@ void BM_CpuSmallFrame(benchmark::State& state)
   state.SetLabel(std::string(render::ShadingModeName(opt.mode)) + ", 2,304 triangles, 320x240");
 }
 
+/// What `--mode auto` costs before a frame (docs/model.md section 4): 0, the
+/// whole choice (ChooseMode: the view's predictors over every triangle, then
+/// eq. 4.4's quadrature); 1, the quadrature alone (at most 4,096 triangles
+/// and 16,384 points). Scenes 0 (100k torus) and 1 (1.3M icosphere) at
+/// 1920x1080, as BM_Cpu's: compare with their frame times.
+void BM_AutoChoice(benchmark::State& state)
+{
+  const Scene& scene = GetScene(static_cast<int>(state.range(0)));
+  const sl::Material<double> material;
+  const sl::Lighting<double> lights = Headlight(scene.camera);
+  for (auto _ : state)
+  {
+    if (state.range(1) == 0)
+    {
+      benchmark::DoNotOptimize(render::ChooseMode(scene.mesh, scene.mesh.normals, scene.camera,
+        lights, material, kWidth, kHeight, 1.0).mode);
+    }
+    else
+    {
+      benchmark::DoNotOptimize(render::EstimateModeDifferences(
+        scene.mesh, scene.mesh.normals, scene.camera, lights, material, kWidth, kHeight).gouraud);
+    }
+  }
+  state.SetLabel(state.range(1) == 0 ? "ChooseMode" : "EstimateModeDifferences");
+}
+
 } // namespace
 
+BENCHMARK(BM_AutoChoice)
+  ->ArgsProduct({ { 0, 1 }, { 0, 1 } })
+  ->Unit(benchmark::kMillisecond)
+  ->UseRealTime();
 BENCHMARK(BM_CpuSmallFrame)->DenseRange(0, 3)->Unit(benchmark::kMicrosecond)->UseRealTime();
 BENCHMARK(BM_CpuHalfOutside)
   ->ArgsProduct({ { 0, 1, 2 }, { 0, 1 } })

@@ -1,17 +1,23 @@
 #!/usr/bin/env python3
-"""Fits the auto mode's error prediction (docs/model.md eq. 4.1) to a
-`shadinglab accuracy` CSV:
+"""Fits the auto mode's error prediction to a `shadinglab accuracy` CSV
+(docs/model.md section 4), on the CPU rows with area-weighted normals, by
+least squares: Phong's (eq. 4.1)
 
-    log E_M = a_M + b_M log(spread) + c_M log(1 + sharpness) + d_M log(peak)
+    log E_P = a + b log(spread) + c log(1 + sharpness) + d log(peak)
 
-per mode (flat, gouraud, phong), on the CPU rows with area-weighted normals,
-by least squares, and the cost model (eq. 4.2). The margin (added to the
-prediction the choice uses) is a percentile of the residuals: given, or
-chosen on the training rows themselves by replaying the auto choice on
-every configuration for E = 0.5, 1, 2, 4 (the percentile whose choices meet
-E at <= 1.2x the cheapest mode meeting it most often, among those meeting E
-in >= 97% of cases). The held-out set never informs it. Prints the C++
-constants for plugin/render/src/AutoMode.cpp and the fit's quality.
+then flat's and Gouraud's (eq. 4.5), from their estimated distance D_M
+from Phong (eq. 4.4, the CSV's diff_*_255 columns) on top of E_P:
+
+    log E_M = a + b log(D_M + E_P) + c log(1 + sharpness) + d log(spread)
+
+and the cost model (eq. 4.2). The margin (added to the prediction the
+choice uses) is a percentile of the residuals: given, or chosen on the
+training rows themselves by replaying the auto choice (eq. 4.3, with its
+tie rule) on every configuration for E = 0.5, 1, 2, 4 (the percentile
+whose choices meet E at <= 1.2x the cheapest mode meeting it most often,
+among those meeting E in >= 97% of cases). The held-out set never informs
+it. Prints the C++ constants for plugin/render/src/AutoMode.cpp and the
+fit's quality.
 
 usage: scripts/fit-auto-mode.py accuracy.csv [PERCENTILE]"""
 import csv
@@ -53,27 +59,48 @@ CANDIDATES = [0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8]
 MIN_MET = 0.97
 out = {}
 residuals = {}
-for mode in ("flat", "gouraud", "phong"):
+MIN_SPREAD, MIN_PEAK = 1e-4, 1e-6  # AutoMode.cpp's kMinSpread, kMinPeak
+DIFF = {"flat": "diff_flat_255", "gouraud": "diff_gouraud_255"}
+
+
+def phong_features(r):
+    s = max(math.radians(float(r["normal_spread_deg"])), MIN_SPREAD)
+    return [1.0, math.log(s), math.log1p(float(r["sharpness"])),
+            math.log(max(float(r["peak"]), MIN_PEAK))]
+
+
+def predicted_phong(r):
+    # eq. 4.1 for Phong without its margin: Phong's own error, which flat
+    # and Gouraud carry on top of their distance from it.
+    return math.exp(sum(c * v for c, v in zip(out["phong"], phong_features(r))))
+
+
+def features(mode, r):
+    if mode == "phong":
+        return phong_features(r)
+    # eq. 4.5: log E_M = a + b log(D_M + E_P) + c log(1 + n) + d log(s).
+    x = phong_features(r)
+    return [1.0, math.log(float(r[DIFF[mode]]) + predicted_phong(r)), x[2], x[1]]
+
+
+for mode in ("phong", "flat", "gouraud"):  # Phong first: the others read it
     data = []
     for r in rows:
         if r["backend"] != "cpu" or r["normals"] != "area" or r["mode"] != mode:
             continue
         e = float(r["mean_255"])
-        spread = math.radians(float(r["normal_spread_deg"]))
-        if e < FLOOR or spread <= 0:
+        if e < FLOOR or float(r["normal_spread_deg"]) <= 0:
             continue
-        data.append(([1.0, math.log(spread), math.log1p(float(r["sharpness"])),
-                      math.log(float(r["peak"]))], math.log(e)))
-    a, b, c, d = solve(data, 4)
-    res = sorted(y - (a + b * x[1] + c * x[2] + d * x[3]) for x, y in data)
+        data.append((features(mode, r), math.log(e)))
+    coef = solve(data, 4)
+    res = sorted(y - sum(c * v for c, v in zip(coef, x)) for x, y in data)
     mean = sum(y for _, y in data) / len(data)
     ss = sum((y - mean) ** 2 for _, y in data)
     r2 = 1 - sum(v * v for v in res) / ss
-    out[mode] = (a, b, c, d)
+    out[mode] = coef
     residuals[mode] = res
-    print("%-8s n=%3d  a=%7.3f b=%6.3f c=%6.3f d=%6.3f  R^2=%.3f" %
-          (mode, len(data), a, b, c, d, r2))
-
+    print("%-8s n=%3d  a=%7.3f b=%6.3f c=%6.3f d=%6.3f  R^2=%.3f  residual s.d. %.3f" %
+          ((mode, len(data)) + tuple(coef) + (r2, math.sqrt(sum(v * v for v in res) / len(res)))))
 
 
 # The cost model (eq. 4.2): frame_ms = a + b T/1000 + c A/1000 per mode and
@@ -117,11 +144,14 @@ for mode, name in (("flat", "kCostFlat"), ("gouraud", "kCostGouraud"), ("phong",
 
 # The auto choice replayed on the training rows (eq. 4.3): one case per
 # configuration (shape, level, model, view) and E where some mode meets E.
-MIN_SPREAD, MIN_PEAK = 1e-4, 1e-6  # AutoMode.cpp's kMinSpread, kMinPeak
 groups = {}
 for r in rows:
     if r["backend"] == "cpu" and r["normals"] == "area" and r["mode"] in out:
         groups.setdefault((r["shape"], r["level"], r["model"], r["view"]), {})[r["mode"]] = r
+
+
+ORDER = ("flat", "gouraud", "phong")  # from the least to the most accurate
+TIE_COST = 1.1  # AutoMode.cpp's kTieCost
 
 
 def replay(margins):
@@ -130,19 +160,21 @@ def replay(margins):
         if len(g) < 3:
             continue
         r = g["phong"]
-        s = max(math.radians(float(r["normal_spread_deg"])), MIN_SPREAD)
-        x = [1.0, math.log(s), math.log1p(float(r["sharpness"])),
-             math.log(max(float(r["peak"]), MIN_PEAK))]
         k = model_class(r["model"])
         t, a = float(r["triangles"]) / 1000, float(r["front_px"]) / 1000
         cost = {m: costs[m][k][0] + costs[m][k][1] * t + costs[m][k][2] * a for m in out}
-        pred = {m: math.exp(sum(c * v for c, v in zip(out[m], x)) + margins[m]) for m in out}
+        pred = {m: math.exp(sum(c * v for c, v in zip(out[m], features(m, g[m]))) + margins[m])
+                for m in out}
         for e in (0.5, 1, 2, 4):
             meeting = [m for m in g if float(g[m]["mean_255"]) <= e]
             if not meeting:
                 continue
-            ok = [m for m in out if pred[m] <= e]
-            chosen = min(ok, key=lambda m: cost[m]) if ok else "phong"
+            ok = [m for m in ORDER if pred[m] <= e]
+            chosen = "phong"
+            if ok:
+                # eq. 4.3: the cheapest, or the most accurate within TIE_COST of it.
+                cheapest = min(ok, key=lambda m: cost[m])
+                chosen = [m for m in ok if cost[m] <= TIE_COST * cost[cheapest]][-1]
             best = min(float(g[m]["frame_ms"]) for m in meeting)
             cases += 1
             if float(g[chosen]["mean_255"]) <= e:

@@ -170,7 +170,9 @@ int RunAccuracy(int argc, char** argv)
   std::ofstream autoCsv(dir / "auto.csv");
   autoCsv << "mesh,material,max_error,chosen,predicted,chosen_error,chosen_ms,cheapest,"
              "cheapest_ms,met,flat_error,gouraud_error,phong_error,flat_ms,gouraud_ms,phong_ms,"
-             "spread,sharpness,peak,triangles,front_pixels,triangle_pixels\n";
+             "spread,sharpness,peak,triangles,front_pixels,triangle_pixels,diff_flat,diff_gouraud,"
+             "predicted_flat,predicted_gouraud,predicted_phong,predicted_flat_ms,"
+             "predicted_gouraud_ms,predicted_phong_ms\n";
   int feasible = 0, met = 0, withinCost = 0;
   std::vector<double> ratios;
   for (const AutoCase& c : cases)
@@ -188,7 +190,17 @@ int RunAccuracy(int argc, char** argv)
     }
     autoCsv << ',' << c.choice.view.normalSpread << ',' << c.choice.sharpness << ','
             << c.choice.peak << ',' << c.choice.view.triangles << ',' << c.choice.view.frontPixels
-            << ',' << c.choice.view.trianglePixels << '\n';
+            << ',' << c.choice.view.trianglePixels << ',' << c.choice.difference.flat << ','
+            << c.choice.difference.gouraud;
+    for (double e : c.choice.modeError)
+    {
+      autoCsv << ',' << e;
+    }
+    for (double ms : c.choice.modeMs)
+    {
+      autoCsv << ',' << ms;
+    }
+    autoCsv << '\n';
     if (c.cheapest.empty())
     {
       continue; // no mode meets E on this mesh: nothing to choose

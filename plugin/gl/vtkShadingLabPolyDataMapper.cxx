@@ -188,10 +188,12 @@ void vtkShadingLabPolyDataMapper::ChooseAutoMode(vtkRenderer* ren, vtkPolyData* 
   }
   sl::render::Camera camera = sl::render::CameraFromVtk(ren->GetActiveCamera());
   sl::render::ToLocal(in.AutoFrame, camera);
-  // The prediction reads only the lights' strength (render::LightScale):
-  // I_L = intensity x diffuse colour over the solid angle pi, as drawn.
+  // The lights as drawn, in the world (I_L = intensity x diffuse colour over
+  // the solid angle pi), then in the mesh's local frame: the prediction reads
+  // their strength (render::LightScale) and, for its estimate of what
+  // interpolating colours costs (eq. 4.4), where they are.
   sl::Lighting<double> lighting;
-  lighting.lightCount = 0; // (the default is one light)
+  lighting.lightCount = 0; // (the default is one light; none is a headlight)
   vtkCollectionSimpleIterator it;
   ren->GetLights()->InitTraversal(it);
   while (vtkLight* light = ren->GetLights()->GetNextLight(it))
@@ -203,8 +205,28 @@ void vtkShadingLabPolyDataMapper::ChooseAutoMode(vtkRenderer* ren, vtkPolyData* 
       sl::Light<double>& l = lighting.lights[lighting.lightCount++];
       l.intensity = sl::Vec3<double>(c[0] * i, c[1] * i, c[2] * i);
       l.solidAngle = sl::kPi<double>;
+      double pos[3], fp[3];
+      light->GetTransformedPosition(pos);
+      light->GetTransformedFocalPoint(fp);
+      const sl::Vec3d position(pos[0], pos[1], pos[2]), focal(fp[0], fp[1], fp[2]);
+      if (light->GetPositional())
+      {
+        const double* att = light->GetAttenuationValues();
+        l.type = sl::LightType::Point;
+        l.vector = position;
+        l.attenuation = sl::Vec3d(att[0], att[1], att[2]);
+        l.spotDirection = sl::NormalizeOr(focal - position, sl::Vec3d(0, 0, -1));
+        l.coneAngle = light->GetConeAngle();
+        l.coneExponent = light->GetExponent();
+      }
+      else
+      {
+        l.type = sl::LightType::Directional;
+        l.vector = sl::NormalizeOr(position - focal, sl::Vec3d(0, 0, 1));
+      }
     }
   }
+  sl::render::ToLocal(in.AutoFrame, lighting);
   const int* size = ren->GetSize();
   const sl::render::ModeChoice choice = sl::render::ChooseMode(in.AutoMesh, in.AutoNormals,
     camera, lighting, in.Material, std::max(size[0], 1), std::max(size[1], 1), this->MaxError);

@@ -4,6 +4,7 @@ documented CSV columns, a Markdown table, a PNG, and the trends the README
 reads from the numbers (errors fall with tessellation; Phong beats Gouraud
 and flat on a fine mesh; coverage converges)."""
 import csv
+import math
 import os
 import subprocess
 import sys
@@ -23,11 +24,24 @@ run = subprocess.run([exe, "accuracy", "--quick", "--backend", "cpu", "--out", o
 check(run.returncode == 0, "exit 0 (stderr tail: %s)" % run.stderr[-300:])
 columns = ("shape,level,triangles,backend,mode,model,normals,width,height,threads,prepare_ms,"
            "frame_ms,mean_lin,rmse_lin,p99_lin,max_lin,mean_255,rmse_255,p99_255,max_255,"
-           "coverage_mismatch,pareto,normal_spread_deg,triangle_px,sharpness,peak,front_px,view").split(",")
+           "coverage_mismatch,pareto,normal_spread_deg,triangle_px,sharpness,peak,front_px,view,"
+           "diff_flat_255,diff_gouraud_255").split(",")
 with open(os.path.join(out, "accuracy.csv")) as f:
     rows = list(csv.DictReader(f))
 check(rows and list(rows[0].keys()) == columns, "CSV columns as documented")
 check(len(rows) >= 30, "%d configurations" % len(rows))
+# eq. 4.4's estimates: finite, non-negative, and both shrinking as the
+# torus is refined (on the 6-segment torus Gouraud is farther from Phong
+# than flat: it spreads a vertex's highlight over huge triangles).
+diffs = [(float(r["diff_flat_255"]), float(r["diff_gouraud_255"])) for r in rows]
+check(all(math.isfinite(f) and math.isfinite(g) and f >= 0 and g >= 0 for f, g in diffs),
+      "mode differences finite and >= 0")
+torus = sorted({(int(r["level"]), float(r["diff_flat_255"]), float(r["diff_gouraud_255"]))
+                for r in rows if r["shape"] == "torus" and r["normals"] == "area"
+                and r["model"] == "blinn-phong"})
+check(len(torus) >= 2 and torus[0][1] > torus[-1][1] and torus[0][2] > torus[-1][2],
+      "torus: mode differences fall with tessellation %s"
+      % [(l, round(f, 3), round(g, 3)) for l, f, g in torus])
 for r in rows:
     for k in columns[10:21]:
         v = float(r[k])

@@ -359,16 +359,9 @@ const render::Image& SoftwareRenderer::Render(const render::Scene& scene,
   {
     throw std::invalid_argument(error);
   }
-  Lighting<float> lighting = scene.lighting.Cast<float>();
-  if (lighting.lightCount == 0)
-  {
-    // No lights: a headlight, as VTK's automatic light (and the GL backend).
-    Light<float> headlight;
-    headlight.vector =
-      Vec3f(NormalizeOr(scene.camera.position - scene.camera.focalPoint, Vec3<double>(0, 0, 1)));
-    lighting.lights[0] = headlight;
-    lighting.lightCount = 1;
-  }
+  // No lights: a headlight, as VTK's automatic light (and the GL backend).
+  const Lighting<float> lighting =
+    render::LightsOrHeadlight(scene.lighting, scene.camera).Cast<float>();
   return this->Impl->Run(
     *scene.mesh, scene.camera, lighting, scene.material.Cast<float>(), options, stats);
 }

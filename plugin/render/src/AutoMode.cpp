@@ -3,6 +3,8 @@
 
 #include "shadinglab/render/Image.h"
 
+#include "ScreenProjection.h"
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -13,10 +15,10 @@ namespace shadinglab::render
 namespace
 {
 
-/// Fitted coefficients of eq. 4.1 (a, b, c, d) per mode and a margin, the
-/// 70th percentile of the fit's log residuals (chosen by the script on the
-/// training rows: replaying the choice there, it meets E at <= 1.2x the
-/// cheapest mode most often while meeting E in >= 97% of cases); written by
+/// Fitted coefficients (a, b, c, d) per mode and a margin, a percentile of
+/// the fit's log residuals (chosen by the script on the training rows:
+/// replaying the choice there, it meets E at <= 1.2x the cheapest mode most
+/// often while meeting E in >= 97% of cases); written by
 /// `scripts/fit-auto-mode.py accuracy.csv` from `shadinglab accuracy` (CPU
 /// rows, area normals, Blinn-Phong and Cook-Torrance). See docs/model.md
 /// section 4.
@@ -24,49 +26,51 @@ struct Fit
 {
   double a, b, c, d, margin;
 };
-// Fit of 2026-11-25 (320x240, 2 threads, three views; 213-234 rows per
-// mode with mean error >= 0.02/255; R^2 0.978, 0.948, 0.814): flat converges to first
-// order in the spread (b ~ 1), Gouraud and Phong faster (b ~ 1.6-1.7; the
-// silhouette and the light's terminator keep them below 2); a sharper lobe
-// lights fewer pixels, so the mean error falls with it (c < 0).
-constexpr Fit kFlat = { 4.9417, 0.9703, -0.3529, 0.1347, 0.0862 };
-constexpr Fit kGouraud = { 4.7514, 1.6294, -0.2572, 0.2723, 0.1559 };
-constexpr Fit kPhong = { 3.9660, 1.6892, -0.2412, 0.1011, 0.4186 };
+// Fit of 2026-12-02 (320x240, 2 threads, three views; 213-234 rows per mode
+// with mean error >= 0.02/255; margin at the 60th percentile).
+// Phong, eq. 4.1 (R^2 0.814): its error converges as the spread to ~1.7
+// (the silhouette and the light's terminator keep it below 2); a sharper
+// lobe lights fewer pixels, so the mean error falls with it (c < 0).
+constexpr Fit kPhong = { 3.9660, 1.6892, -0.2412, 0.1011, 0.0885 };
+// Flat and Gouraud, eq. 4.5 (R^2 0.991, 0.963): their distance from Phong
+// (eq. 4.4) plus Phong's own predicted error, to a power near 1.
+constexpr Fit kFlat = { 0.5109, 0.8757, -0.1228, -0.0918, 0.0172 };
+constexpr Fit kGouraud = { -2.0831, 1.2086, 0.2577, -0.3980, -0.0528 };
 
 /// eq. 4.2's coefficients (ms, ms per 1000 triangles, ms per 1000 front
 /// pixels) per mode and model class: [0] not Cook-Torrance, [1] Cook-Torrance
 /// dielectric, [2] Cook-Torrance conductor. Weighted least squares on the
-/// relative error (156 rows each: two runs of the study, side by side),
-/// refitted 2026-11-25 after the conductor Fresnel went to real arithmetic:
-/// a conductor now costs what a dielectric does in every mode (it cost 1.1x
-/// in Phong and 1.7x in Gouraud with the complex form).
+/// relative error (156 rows each: two runs of the study), refitted
+/// 2026-12-02: since the fit of 2026-11-25 the renderer lost most of its
+/// fixed cost per frame (0.19-0.29 -> ~0.04 ms: kept, spinning workers,
+/// depth per band) and flat and Gouraud most of their cost per pixel
+/// relative to Phong (Phong's is now ~5x theirs, was ~2.5x). A conductor
+/// costs what a dielectric does in every mode.
 struct CostFit
 {
   double a, b, c;
 };
-constexpr CostFit kCostFlat[3] = { { 0.2903, 0.05254, 0.00423 }, { 0.2697, 0.05378, 0.00477 },
-  { 0.2300, 0.05503, 0.00745 } };
-constexpr CostFit kCostGouraud[3] = { { 0.1913, 0.06018, 0.00725 },
-  { 0.1917, 0.06709, 0.00718 }, { 0.1958, 0.06740, 0.00656 } };
-constexpr CostFit kCostPhong[3] = { { 0.2064, 0.04906, 0.01800 }, { 0.2064, 0.04830, 0.01776 },
-  { 0.2069, 0.04730, 0.01854 } };
-
-const Fit& FitOf(ShadingMode mode)
-{
-  switch (mode)
-  {
-    case ShadingMode::Flat:
-      return kFlat;
-    case ShadingMode::Gouraud:
-      return kGouraud;
-    default:
-      return kPhong;
-  }
-}
+constexpr CostFit kCostFlat[3] = { { 0.0426, 0.03201, 0.00160 }, { 0.0391, 0.03350, 0.00193 },
+  { 0.0423, 0.03396, 0.00143 } };
+constexpr CostFit kCostGouraud[3] = { { 0.0395, 0.03414, 0.00143 },
+  { 0.0406, 0.03744, 0.00122 }, { 0.0391, 0.03678, 0.00134 } };
+constexpr CostFit kCostPhong[3] = { { 0.0381, 0.02879, 0.00746 }, { 0.0428, 0.02814, 0.00681 },
+  { 0.0393, 0.02798, 0.00742 } };
 
 /// Normal spreads below this (radians) are a flat region: the power law is
 /// evaluated at the floor, which predicts far below 1/255 for every mode.
 constexpr double kMinSpread = 1e-4;
+/// The view's predictors are read off at most this many triangles (every
+/// k-th): means over 65,536 triangles are within a percent of the whole
+/// mesh's, and a 1.3M-triangle mesh no longer takes longer to read (139 ms
+/// over all of them, 1920x1080) than to draw.
+constexpr long long kMaxPredictorTriangles = 65536;
+/// Predicted costs within this ratio are a tie, which the more accurate mode
+/// takes: the cost model's median relative error is 10-20% (eq. 4.2), so a
+/// cheaper mode by less than that is not reliably cheaper, while the more
+/// accurate one meets E more surely; at 1.1 it stays within the 1.2x the
+/// choice is held to even when the prediction is right.
+constexpr double kTieCost = 1.1;
 /// A black material's peak: the power law's floor (it predicts ~0 error).
 constexpr double kMinPeak = 1e-6;
 
@@ -88,35 +92,10 @@ ViewPredictors PredictorsOf(const Mesh& mesh, const std::vector<float>& normals,
   const Camera& camera, int width, int height)
 {
   ViewPredictors out;
-  const CameraBasis basis = BasisOf(camera);
-  const Vec3<double>& forward = basis.forward;
-  const Vec3<double>& right = basis.right;
-  const Vec3<double>& up = basis.up;
-  const double aspect = static_cast<double>(width) / height;
-  const double tanHalf = std::tan(0.5 * camera.viewAngle * kPi<double> / 180.0);
-  // Pixel coordinates of a point, false behind the camera.
+  const ScreenProjection screen(camera, width, height);
+  const Vec3<double> forward = screen.Axes().forward;
   auto project = [&](int64_t v, double& x, double& y) {
-    const Vec3<double> p(mesh.points[3 * v], mesh.points[3 * v + 1], mesh.points[3 * v + 2]);
-    const Vec3<double> d = p - camera.position;
-    const double z = Dot(d, forward);
-    double sx = Dot(d, right), sy = Dot(d, up);
-    if (camera.parallel)
-    {
-      sx /= camera.parallelScale * aspect;
-      sy /= camera.parallelScale;
-    }
-    else
-    {
-      if (!(z > camera.nearClip))
-      {
-        return false;
-      }
-      sx /= z * tanHalf * aspect;
-      sy /= z * tanHalf;
-    }
-    x = (sx + 1) * 0.5 * width;
-    y = (1 - sy) * 0.5 * height;
-    return true;
+    return screen(Vec3<double>(mesh.points[3 * v], mesh.points[3 * v + 1], mesh.points[3 * v + 2]), x, y);
   };
   double weighted = 0, area = 0;
   for (int64_t p = 0; p < mesh.NumberOfPolygons(); ++p)
@@ -124,11 +103,19 @@ ViewPredictors PredictorsOf(const Mesh& mesh, const std::vector<float>& normals,
     out.triangles += mesh.offsets[p + 1] - mesh.offsets[p] - 2;
   }
   const bool haveNormals = normals.size() == mesh.points.size();
+  // Every stride-th triangle, counts scaled back by the stride.
+  const long long stride =
+    std::max(1LL, (out.triangles + kMaxPredictorTriangles - 1) / kMaxPredictorTriangles);
+  long long t = 0;
   for (int64_t p = 0; p < mesh.NumberOfPolygons(); ++p)
   {
     const int64_t b = mesh.offsets[p], e = mesh.offsets[p + 1];
-    for (int64_t k = b + 1; k + 1 < e; ++k) // the polygon's fan
+    for (int64_t k = b + 1; k + 1 < e; ++k, ++t) // the polygon's fan
     {
+      if (t % stride != 0)
+      {
+        continue;
+      }
       const int64_t v[3] = { mesh.connectivity[b], mesh.connectivity[k], mesh.connectivity[k + 1] };
       double x[3], y[3];
       if (!project(v[0], x[0], y[0]) || !project(v[1], x[1], y[1]) || !project(v[2], x[2], y[2]))
@@ -141,7 +128,7 @@ ViewPredictors PredictorsOf(const Mesh& mesh, const std::vector<float>& normals,
       const double a2 = (x[1] - x[0]) * (y[2] - y[0]) - (x[2] - x[0]) * (y[1] - y[0]);
       const double a = 0.5 * std::abs(a2);
       const double cx = (x[0] + x[1] + x[2]) / 3, cy = (y[0] + y[1] + y[2]) / 3;
-      if (!(a > 0) || cx < 0 || cy < 0 || cx > width || cy > height)
+      if (!(a > 0) || !screen.OnImage(cx, cy))
       {
         continue;
       }
@@ -173,10 +160,12 @@ ViewPredictors PredictorsOf(const Mesh& mesh, const std::vector<float>& normals,
       }
     }
   }
+  out.visibleTriangles *= stride;
+  out.frontPixels *= static_cast<double>(stride);
   if (area > 0)
   {
     out.normalSpread = weighted / area;
-    out.trianglePixels = area / static_cast<double>(out.visibleTriangles);
+    out.trianglePixels = area * static_cast<double>(stride) / static_cast<double>(out.visibleTriangles);
   }
   return out;
 }
@@ -209,13 +198,22 @@ double LobePeak(const Material<double>& material)
   return std::max(Luminance(EvaluateBrdf(material, material.diffuseColor, N, N, N)), kMinPeak);
 }
 
-double PredictError(ShadingMode mode, const ViewPredictors& view, double sharpness, double peak,
-  bool conservative)
+double PredictError(ShadingMode mode, const ViewPredictors& view,
+  const ModeDifferences& difference, double sharpness, double peak, bool conservative)
 {
-  const Fit& f = FitOf(mode);
-  const double spread = std::max(view.normalSpread, kMinSpread);
-  const double log = f.a + f.b * std::log(spread) + f.c * std::log1p(sharpness) +
-    f.d * std::log(std::max(peak, kMinPeak)) + (conservative ? f.margin : 0.0);
+  const double logSpread = std::log(std::max(view.normalSpread, kMinSpread));
+  // eq. 4.1: Phong's own error, from the spread of the normals.
+  const double phong = std::exp(kPhong.a + kPhong.b * logSpread +
+    kPhong.c * std::log1p(sharpness) + kPhong.d * std::log(std::max(peak, kMinPeak)));
+  if (mode != ShadingMode::Flat && mode != ShadingMode::Gouraud)
+  {
+    return phong * (conservative ? std::exp(kPhong.margin) : 1.0);
+  }
+  // eq. 4.5: flat's and Gouraud's distance from Phong (eq. 4.4) on top of it.
+  const Fit& f = mode == ShadingMode::Flat ? kFlat : kGouraud;
+  const double distance = mode == ShadingMode::Flat ? difference.flat : difference.gouraud;
+  const double log = f.a + f.b * std::log(distance + phong) + f.c * std::log1p(sharpness) +
+    f.d * logSpread + (conservative ? f.margin : 0.0);
   return std::exp(log);
 }
 
@@ -255,28 +253,56 @@ ModeChoice ChooseMode(const Mesh& mesh, const std::vector<float>& normals, const
   choice.view = PredictorsOf(mesh, normals, camera, width, height);
   choice.sharpness = LobeSharpness(material);
   choice.peak = LobePeak(material);
+  // The distance is estimated under the scene's lights; the fit's errors are
+  // for one light of strength 1, so it is divided back by their strength.
+  choice.difference =
+    EstimateModeDifferences(mesh, normals, camera, lighting, material, width, height);
+  ModeDifferences unitLight = choice.difference;
+  if (light > 0)
+  {
+    unitLight.flat /= light;
+    unitLight.gouraud /= light;
+  }
   std::ostringstream why;
   why.precision(3);
   why << "normal spread " << choice.view.normalSpread * 180.0 / kPi<double> << " deg over "
       << choice.view.visibleTriangles << " visible triangles of " << choice.view.trianglePixels
-      << " px, lobe n = " << choice.sharpness << ", peak " << choice.peak << "/sr:";
-  bool found = false;
-  for (ShadingMode mode : { ShadingMode::Flat, ShadingMode::Gouraud, ShadingMode::Phong })
+      << " px, lobe n = " << choice.sharpness << ", peak " << choice.peak
+      << "/sr, flat / Gouraud from Phong " << choice.difference.flat << " / "
+      << choice.difference.gouraud << "/255:";
+  const ShadingMode candidates[3] = { ShadingMode::Flat, ShadingMode::Gouraud,
+    ShadingMode::Phong }; // from the least to the most accurate
+  int cheapest = -1;
+  for (int k = 0; k < 3; ++k)
   {
-    const double e =
-      light * PredictError(mode, choice.view, choice.sharpness, choice.peak, true);
-    const double ms = PredictCost(mode, choice.view, material);
-    why << " " << ShadingModeName(mode) << " " << e << "/255 " << ms << " ms;";
-    const bool meets = e <= maxError;
-    if ((meets && (!found || ms < choice.predictedMs)) ||
-      (!found && mode == ShadingMode::Phong))
+    const ShadingMode mode = candidates[k];
+    choice.modeError[k] =
+      light * PredictError(mode, choice.view, unitLight, choice.sharpness, choice.peak, true);
+    choice.modeMs[k] = PredictCost(mode, choice.view, material);
+    why << " " << ShadingModeName(mode) << " " << choice.modeError[k] << "/255 "
+        << choice.modeMs[k] << " ms;";
+    if (choice.modeError[k] <= maxError && (cheapest < 0 || choice.modeMs[k] < choice.modeMs[cheapest]))
     {
-      choice.mode = mode;
-      choice.predicted = e;
-      choice.predictedMs = ms;
-      found = found || meets;
+      cheapest = k;
     }
   }
+  // eq. 4.3: the cheapest predicted to meet E, or the most accurate of those
+  // predicted to cost at most kTieCost times as much; Phong when none meets E.
+  int chosen = 2;
+  if (cheapest >= 0)
+  {
+    chosen = cheapest;
+    for (int k = cheapest + 1; k < 3; ++k)
+    {
+      if (choice.modeError[k] <= maxError && choice.modeMs[k] <= kTieCost * choice.modeMs[cheapest])
+      {
+        chosen = k;
+      }
+    }
+  }
+  choice.mode = candidates[chosen];
+  choice.predicted = choice.modeError[chosen];
+  choice.predictedMs = choice.modeMs[chosen];
   why << " -> " << ShadingModeName(choice.mode);
   if (choice.predicted > maxError)
   {

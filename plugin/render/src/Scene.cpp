@@ -265,6 +265,21 @@ Light<double> KeyLight(const Camera& camera, double intensity)
   return key;
 }
 
+Lighting<double> LightsOrHeadlight(const Lighting<double>& lighting, const Camera& camera)
+{
+  if (lighting.lightCount > 0)
+  {
+    return lighting;
+  }
+  Lighting<double> out = lighting;
+  Light<double> headlight;
+  headlight.vector =
+    NormalizeOr(camera.position - camera.focalPoint, Vec3<double>(0, 0, 1));
+  out.lights[0] = headlight;
+  out.lightCount = 1;
+  return out;
+}
+
 Light<double> CameraLight(
   const Camera& camera, double azimuthDeg, double elevationDeg, double intensity)
 {

@@ -34,6 +34,22 @@ struct ViewPredictors
 ViewPredictors PredictorsOf(const Mesh& mesh, const std::vector<float>& normals,
   const Camera& camera, int width, int height);
 
+/// How far flat and Gouraud would land from Phong (eq. 4.4): the
+/// screen-area-weighted mean, over the front-facing triangles in view (the
+/// back-facing ones when no triangle faces the viewer), of the largest
+/// channel difference (1/255, after the clamp to [0, 1]) between the mode's
+/// colour and Phong's, by the midpoint rule on sub-triangles of at least a
+/// few pixels. At most 4096 triangles, evenly spread by index, are sampled.
+struct ModeDifferences
+{
+  double flat = 0;
+  double gouraud = 0;
+  long long sampledTriangles = 0;
+};
+ModeDifferences EstimateModeDifferences(const Mesh& mesh, const std::vector<float>& normals,
+  const Camera& camera, const Lighting<double>& lighting, const Material<double>& material,
+  int width, int height);
+
 /// The lobe's sharpness as a Blinn-Phong exponent: n for (Blinn-)Phong,
 /// 2 / m^2 - 2 for a Beckmann lobe (the width-matched exponent; the mixture's
 /// sharpest lobe), 0 without a specular term.
@@ -51,16 +67,25 @@ struct ModeChoice
   ViewPredictors view;
   double sharpness = 0;
   double peak = 0;
+  ModeDifferences difference; ///< under the scene's lights
+  /// Every candidate's predicted error (with the margin) and time, in the
+  /// order flat, Gouraud, Phong.
+  double modeError[3] = { 0, 0, 0 };
+  double modeMs[3] = { 0, 0, 0 };
   std::string why;         ///< one line for --stats
 };
 
 /**
- * Predicted mean error (1/255) of `mode` (eq. 4.1):
- *   E = exp(a_M) (spread)^b_M (1 + sharpness)^c_M (peak)^d_M
- * plus a margin (the median of the fit's residuals) when `conservative`.
+ * Predicted mean error (1/255) of `mode` for one light of strength 1, with
+ * a margin (a percentile of the fit's residuals) when `conservative`:
+ * Phong (eq. 4.1)
+ *   E_P = exp(a_P) (spread)^b_P (1 + sharpness)^c_P (peak)^d_P,
+ * flat and Gouraud (eq. 4.5) their distance D_M from Phong (eq. 4.4, under
+ * that light) on top of Phong's own error:
+ *   E_M = exp(a_M) (D_M + E_P)^b_M (1 + sharpness)^c_M (spread)^d_M.
  */
-double PredictError(ShadingMode mode, const ViewPredictors& view, double sharpness, double peak,
-  bool conservative);
+double PredictError(ShadingMode mode, const ViewPredictors& view,
+  const ModeDifferences& difference, double sharpness, double peak, bool conservative);
 
 /// The lights' strength relative to the study's one light of intensity 1:
 /// the sum over lights of the largest channel times dw / pi. Errors scale

@@ -96,6 +96,10 @@ CameraBasis BasisOf(const Camera& camera);
 /// light of every front end (CLI, explorer, VTK classes).
 Light<double> KeyLight(const Camera& camera, double intensity = 1.0);
 
+/// The lights a renderer shades with: `lighting`, or with no light a
+/// headlight (a directional light from the camera, as VTK's automatic light).
+Lighting<double> LightsOrHeadlight(const Lighting<double>& lighting, const Camera& camera);
+
 /**
  * A directional light given in the camera's frame, in world coordinates:
  * azimuth turns it from the view direction toward the camera's right,

@@ -4,6 +4,9 @@
 least squares: Phong's (eq. 4.1)
 
     log E_P = a + b log(spread) + c log(1 + sharpness) + d log(peak)
+              + e log(D_N + 0.01)
+
+(D_N: how far Phong moves with other vertex normals, diff_normals_255)
 
 then flat's and Gouraud's (eq. 4.5), from their estimated distance D_M
 from Phong (eq. 4.4, the CSV's diff_*_255 columns) on top of E_P:
@@ -19,7 +22,7 @@ among those meeting E in >= 97% of cases). The held-out set never informs
 it. Prints the C++ constants for plugin/render/src/AutoMode.cpp and the
 fit's quality.
 
-usage: scripts/fit-auto-mode.py accuracy.csv [PERCENTILE]"""
+usage: scripts/fit-auto-mode.py accuracy.csv [more runs' accuracy.csv ...] [PERCENTILE]"""
 import csv
 import math
 import sys
@@ -46,13 +49,27 @@ def solve(rows, n):
     return [m[i][n] / m[i][i] for i in range(n)]
 
 
-rows = list(csv.DictReader(open(sys.argv[1])))
+# Several runs of the study: each configuration's frame time is the median
+# over the runs (errors are deterministic), so that the cost fit and the
+# replay below compare modes by more than one noisy measurement each.
+FILES = [a for a in sys.argv[1:] if a.endswith(".csv")]
+runs = [list(csv.DictReader(open(f))) for f in FILES]
+KEY = ("shape", "level", "backend", "mode", "model", "normals", "view")
+times = {}
+for run in runs:
+    for r in run:
+        times.setdefault(tuple(r[k] for k in KEY), []).append(float(r["frame_ms"]))
+rows = runs[0]
+for r in rows:
+    t = sorted(times[tuple(r[k] for k in KEY)])
+    r["frame_ms"] = str(t[len(t) // 2] if len(t) % 2 else 0.5 * (t[len(t) // 2 - 1] + t[len(t) // 2]))
 # Errors below this (1/255) are at the floor of 8-bit rounding: they say
 # nothing about interpolation and would pull the power law down.
 FLOOR = 0.02
 # The margin: this percentile of the training residuals (chosen below when
 # not given).
-GIVEN = float(sys.argv[2]) if len(sys.argv) > 2 else None
+NUMBERS = [a for a in sys.argv[1:] if not a.endswith(".csv")]
+GIVEN = float(NUMBERS[0]) if NUMBERS else None
 CANDIDATES = [0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8]
 # The replay's floor on meeting E: above the issue's 95% so that the
 # held-out set (other shapes) keeps a little room.
@@ -63,10 +80,14 @@ MIN_SPREAD, MIN_PEAK = 1e-4, 1e-6  # AutoMode.cpp's kMinSpread, kMinPeak
 DIFF = {"flat": "diff_flat_255", "gouraud": "diff_gouraud_255"}
 
 
+NORMALS_FLOOR = 0.01  # AutoMode.cpp's kNormalsFloor
+
+
 def phong_features(r):
     s = max(math.radians(float(r["normal_spread_deg"])), MIN_SPREAD)
     return [1.0, math.log(s), math.log1p(float(r["sharpness"])),
-            math.log(max(float(r["peak"]), MIN_PEAK))]
+            math.log(max(float(r["peak"]), MIN_PEAK)),
+            math.log(float(r["diff_normals_255"]) + NORMALS_FLOOR)]
 
 
 def predicted_phong(r):
@@ -92,15 +113,16 @@ for mode in ("phong", "flat", "gouraud"):  # Phong first: the others read it
         if e < FLOOR or float(r["normal_spread_deg"]) <= 0:
             continue
         data.append((features(mode, r), math.log(e)))
-    coef = solve(data, 4)
+    coef = solve(data, len(data[0][0]))
     res = sorted(y - sum(c * v for c, v in zip(coef, x)) for x, y in data)
     mean = sum(y for _, y in data) / len(data)
     ss = sum((y - mean) ** 2 for _, y in data)
     r2 = 1 - sum(v * v for v in res) / ss
     out[mode] = coef
     residuals[mode] = res
-    print("%-8s n=%3d  a=%7.3f b=%6.3f c=%6.3f d=%6.3f  R^2=%.3f  residual s.d. %.3f" %
-          ((mode, len(data)) + tuple(coef) + (r2, math.sqrt(sum(v * v for v in res) / len(res)))))
+    print("%-8s n=%3d  %s  R^2=%.3f  residual s.d. %.3f" %
+          (mode, len(data), " ".join("%.3f" % c for c in coef), r2,
+           math.sqrt(sum(v * v for v in res) / len(res))))
 
 
 # The cost model (eq. 4.2): frame_ms = a + b T/1000 + c A/1000 per mode and
@@ -200,5 +222,5 @@ print("percentile used: %.2f%s" % (chosen, " (given)" if GIVEN is not None else 
 print()
 m = margins_at(chosen)
 for mode, name in (("flat", "kFlat"), ("gouraud", "kGouraud"), ("phong", "kPhong")):
-    a, b, c, d = out[mode]
-    print("constexpr Fit %s = { %.4f, %.4f, %.4f, %.4f, %.4f };" % (name, a, b, c, d, m[mode]))
+    coef = list(out[mode]) + [0.0] * (5 - len(out[mode]))  # flat, Gouraud: e = 0
+    print("constexpr Fit %s = { %s, %.4f };" % (name, ", ".join("%.4f" % c for c in coef), m[mode]))

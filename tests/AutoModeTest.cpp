@@ -8,6 +8,7 @@
 #include "shadinglab/cpu/SoftwareRenderer.h"
 #include "shadinglab/model/Materials.h"
 #include "shadinglab/render/AutoMode.h"
+#include "VertexNormals.h"
 
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
@@ -243,4 +244,57 @@ TEST(AutoModeTest, ModeDifferencesAreFiniteForZeroNormalsAndFollowTheLight)
   const auto back = sl::render::EstimateModeDifferences(
     mesh, mesh.normals, behind.camera, behind.lighting, m, 320, 240);
   EXPECT_LT(back.gouraud, front.gouraud / 2);
+}
+
+TEST(AutoModeTest, NormalsTermMatchesPhongRenderedWithMaxNormals)
+{
+  // A marching-cubes isosurface: irregular triangles, whose area- and
+  // Max-weighted normals differ (on the icosphere they nearly agree).
+  vtkSmartPointer<vtkPolyData> pd;
+  pd.TakeReference(sl::datasets::MakeMetaballIsosurface(24));
+  sl::render::Mesh mesh = sl::render::MeshFromPolyData(pd);
+  std::vector<double> points(mesh.points.begin(), mesh.points.end());
+  const sl::mesh::MeshView view{ points.data(), mesh.NumberOfPoints(), mesh.offsets.data(),
+    mesh.connectivity.data(), mesh.NumberOfPolygons() };
+  std::vector<double> area, max;
+  sl::mesh::ComputeVertexNormalsNoSplit(view, sl::mesh::NormalWeighting::Area, area);
+  sl::mesh::ComputeVertexNormalsNoSplit(view, sl::mesh::NormalWeighting::Max, max);
+  mesh.normals.assign(area.begin(), area.end());
+  sl::render::Mesh withMax = mesh;
+  withMax.normals.assign(max.begin(), max.end());
+  const View v = KeyLitView(mesh);
+  const sl::Material<double> m = Plastic();
+  const auto d =
+    sl::render::EstimateModeDifferences(mesh, mesh.normals, v.camera, v.lighting, m, 320, 240);
+  sl::cpu::SoftwareRenderer renderer;
+  sl::render::RenderOptions ro;
+  ro.width = v.width;
+  ro.height = v.height;
+  ro.mode = ShadingMode::Phong;
+  const sl::render::Image a = renderer.Render({ &mesh, v.camera, v.lighting, m }, ro);
+  const sl::render::Image b = renderer.Render({ &withMax, v.camera, v.lighting, m }, ro);
+  const double rendered = MeanDifference255(a, b);
+  std::printf("metaballs 24: Phong under Max normals %.3f (rendered %.3f)\n", d.normals, rendered);
+  ASSERT_GT(rendered, 0.1);
+  EXPECT_NEAR(d.normals / rendered, 1.0, 0.1);
+  // The same with the Max normals given: the term is symmetric.
+  const auto dMax = sl::render::EstimateModeDifferences(
+    withMax, withMax.normals, v.camera, v.lighting, m, 320, 240);
+  EXPECT_NEAR(dMax.normals / d.normals, 1.0, 0.1);
+}
+
+TEST(AutoModeTest, ModeDifferencesMeanTheSameAtAnyImageSize)
+{
+  // Cells of a few pixels whatever the size: at 16x the pixels (and past
+  // the point budget, fewer triangles) the estimate stays put.
+  const sl::render::Mesh mesh = Icosphere(3);
+  const View v = KeyLitView(mesh);
+  const sl::Material<double> m = Plastic();
+  const auto small =
+    sl::render::EstimateModeDifferences(mesh, mesh.normals, v.camera, v.lighting, m, 320, 240);
+  const auto large =
+    sl::render::EstimateModeDifferences(mesh, mesh.normals, v.camera, v.lighting, m, 1280, 960);
+  EXPECT_LT(large.sampledTriangles, small.sampledTriangles); // the budget bit
+  EXPECT_NEAR(large.flat / small.flat, 1.0, 0.15);
+  EXPECT_NEAR(large.gouraud / small.gouraud, 1.0, 0.15);
 }

@@ -171,6 +171,7 @@ int RunAccuracy(int argc, char** argv)
   autoCsv << "mesh,material,max_error,chosen,predicted,chosen_error,chosen_ms,cheapest,"
              "cheapest_ms,met,flat_error,gouraud_error,phong_error,flat_ms,gouraud_ms,phong_ms,"
              "spread,sharpness,peak,triangles,front_pixels,triangle_pixels,diff_flat,diff_gouraud,"
+             "diff_normals,"
              "predicted_flat,predicted_gouraud,predicted_phong,predicted_flat_ms,"
              "predicted_gouraud_ms,predicted_phong_ms\n";
   int feasible = 0, met = 0, withinCost = 0;
@@ -191,7 +192,7 @@ int RunAccuracy(int argc, char** argv)
     autoCsv << ',' << c.choice.view.normalSpread << ',' << c.choice.sharpness << ','
             << c.choice.peak << ',' << c.choice.view.triangles << ',' << c.choice.view.frontPixels
             << ',' << c.choice.view.trianglePixels << ',' << c.choice.difference.flat << ','
-            << c.choice.difference.gouraud;
+            << c.choice.difference.gouraud << ',' << c.choice.difference.normals;
     for (double e : c.choice.modeError)
     {
       autoCsv << ',' << e;

@@ -234,7 +234,7 @@ const char* StudyCsvHeader()
   return "shape,level,triangles,backend,mode,model,normals,width,height,threads,prepare_ms,"
          "frame_ms,mean_lin,rmse_lin,p99_lin,max_lin,mean_255,rmse_255,p99_255,max_255,"
          "coverage_mismatch,pareto,normal_spread_deg,triangle_px,sharpness,peak,front_px,view,"
-         "diff_flat_255,diff_gouraud_255";
+         "diff_flat_255,diff_gouraud_255,diff_normals_255";
 }
 
 std::string StudyCsvRow(const StudyRow& r)
@@ -247,7 +247,7 @@ std::string StudyCsvRow(const StudyRow& r)
     << r.p99Linear << ',' << r.maxLinear << ',' << r.mean255 << ',' << r.rmse255 << ','
     << r.p99_255 << ',' << r.max255 << ',' << r.coverageMismatch << ',' << (r.pareto ? 1 : 0)
     << ',' << r.normalSpreadDeg << ',' << r.trianglePixels << ',' << r.sharpness << ',' << r.peak
-    << ',' << r.frontPixels << ',' << r.view << ',' << r.diffFlat << ',' << r.diffGouraud;
+    << ',' << r.frontPixels << ',' << r.view << ',' << r.diffFlat << ',' << r.diffGouraud << ',' << r.diffNormals;
   return s.str();
 }
 
@@ -371,6 +371,7 @@ std::vector<StudyRow> RunStudy(
               mesh, mesh.normals, camera, lighting, shading.material, options.width, options.height);
             row.diffFlat = diff.flat;
             row.diffGouraud = diff.gouraud;
+            row.diffNormals = diff.normals;
             rows.push_back(row);
             progress(row);
           }

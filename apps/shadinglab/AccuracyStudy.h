@@ -42,7 +42,7 @@ struct StudyRow
   double normalSpreadDeg = 0, trianglePixels = 0, sharpness = 0, peak = 0, frontPixels = 0;
   /// The auto mode's estimates of flat's and Gouraud's distance from Phong
   /// (1/255, render::EstimateModeDifferences).
-  double diffFlat = 0, diffGouraud = 0;
+  double diffFlat = 0, diffGouraud = 0, diffNormals = 0;
   int view = 0; ///< 0: azimuth 25, elevation 20 (the plot's); 1, 2: the fit's other views
   bool pareto = false;         ///< on the time-error Pareto front (mean 1/255)
 };

@@ -290,4 +290,81 @@ void ComputeVertexNormalsNoSplit(const MeshView& m,
   }
 }
 
+/// Polygons of more corners than this are skipped by ComputeVertexNormalsAt
+/// (their corners are copied to a stack buffer); meshes a renderer draws
+/// have 3-8, and one skipped polygon changes an estimate by its share only.
+constexpr int64_t kMaxCornersAt = 64;
+
+void ComputeVertexNormalsAt(const float* points,
+  const int64_t* offsets,
+  const int64_t* connectivity,
+  int64_t numberOfPolygons,
+  const std::vector<NormalWeighting>& weightings,
+  const std::vector<int64_t>& slotOfPoint,
+  int64_t slots,
+  std::vector<std::vector<double>>& normals)
+{
+  normals.resize(weightings.size());
+  for (auto& n : normals)
+  {
+    n.assign(static_cast<size_t>(3 * slots), 0.0);
+  }
+  double local[3 * kMaxCornersAt];
+  int64_t corners[kMaxCornersAt];
+  for (int64_t p = 0; p < numberOfPolygons; ++p)
+  {
+    const int64_t b = offsets[p], n = offsets[p + 1] - b;
+    if (n < 3 || n > kMaxCornersAt)
+    {
+      continue;
+    }
+    bool listed = false;
+    for (int64_t k = 0; k < n && !listed; ++k)
+    {
+      listed = slotOfPoint[connectivity[b + k]] >= 0;
+    }
+    if (!listed)
+    {
+      continue;
+    }
+    // The polygon on its own, in double: the shared kernels then give what
+    // the whole-mesh pass gives, up to rounding.
+    for (int64_t k = 0; k < n; ++k)
+    {
+      const float* q = points + 3 * connectivity[b + k];
+      local[3 * k] = q[0];
+      local[3 * k + 1] = q[1];
+      local[3 * k + 2] = q[2];
+      corners[k] = k;
+    }
+    const int64_t ends[2] = { 0, n };
+    const MeshView one{ local, n, ends, corners, 1 };
+    const V3 a = AreaVector(one, 0);
+    const double len = std::sqrt(Dot(a, a));
+    for (int64_t k = 0; k < n; ++k)
+    {
+      const int64_t slot = slotOfPoint[connectivity[b + k]];
+      if (slot < 0)
+      {
+        continue;
+      }
+      for (size_t w = 0; w < weightings.size(); ++w)
+      {
+        const V3 c = CornerContribution(one, 0, n, k, a, len, weightings[w]);
+        double* o = normals[w].data() + 3 * slot;
+        o[0] += c.x;
+        o[1] += c.y;
+        o[2] += c.z;
+      }
+    }
+  }
+  for (auto& n : normals)
+  {
+    for (int64_t v = 0; v < slots; ++v)
+    {
+      Normalize(n.data() + 3 * v);
+    }
+  }
+}
+
 } // namespace shadinglab::mesh

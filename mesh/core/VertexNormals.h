@@ -90,4 +90,18 @@ bool WideSimdInUse();
 void ComputeVertexNormalsNoSplit(
   const MeshView& mesh, NormalWeighting weighting, std::vector<double>& normals);
 
+/**
+ * The crease-free normals at some points only, for a mesh of float points (a
+ * renderer's), in several weightings at once: slotOfPoint[v] is v's row in
+ * each normals[w] (3 per slot, `slots` rows) or -1 for a point not asked
+ * for. One pass over the polygons, adding only the corners at points asked
+ * for, with the same per-corner arithmetic as ComputeVertexNormalsNoSplit
+ * (equal up to rounding). Polygons of more than 64 corners are skipped.
+ */
+void ComputeVertexNormalsAt(const float* points, const int64_t* offsets,
+  const int64_t* connectivity, int64_t numberOfPolygons,
+  const std::vector<NormalWeighting>& weightings, const std::vector<int64_t>& slotOfPoint,
+  int64_t slots, std::vector<std::vector<double>>& normals);
+
 } // namespace shadinglab::mesh
+

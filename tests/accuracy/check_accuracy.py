@@ -25,7 +25,7 @@ check(run.returncode == 0, "exit 0 (stderr tail: %s)" % run.stderr[-300:])
 columns = ("shape,level,triangles,backend,mode,model,normals,width,height,threads,prepare_ms,"
            "frame_ms,mean_lin,rmse_lin,p99_lin,max_lin,mean_255,rmse_255,p99_255,max_255,"
            "coverage_mismatch,pareto,normal_spread_deg,triangle_px,sharpness,peak,front_px,view,"
-           "diff_flat_255,diff_gouraud_255").split(",")
+           "diff_flat_255,diff_gouraud_255,diff_normals_255").split(",")
 with open(os.path.join(out, "accuracy.csv")) as f:
     rows = list(csv.DictReader(f))
 check(rows and list(rows[0].keys()) == columns, "CSV columns as documented")

@@ -4,6 +4,7 @@
 #include "shadinglab/render/Image.h"
 
 #include "ScreenProjection.h"
+#include "TriangleSample.h"
 
 #include <algorithm>
 #include <cmath>
@@ -24,47 +25,53 @@ namespace
 /// section 4.
 struct Fit
 {
-  double a, b, c, d, margin;
+  double a, b, c, d, e, margin;
 };
 // Fit of 2026-12-02 (320x240, 2 threads, three views; 213-234 rows per mode
-// with mean error >= 0.02/255; margin at the 60th percentile).
-// Phong, eq. 4.1 (R^2 0.814): its error converges as the spread to ~1.7
-// (the silhouette and the light's terminator keep it below 2); a sharper
-// lobe lights fewer pixels, so the mean error falls with it (c < 0).
-constexpr Fit kPhong = { 3.9660, 1.6892, -0.2412, 0.1011, 0.0885 };
-// Flat and Gouraud, eq. 4.5 (R^2 0.991, 0.963): their distance from Phong
-// (eq. 4.4) plus Phong's own predicted error, to a power near 1.
-constexpr Fit kFlat = { 0.5109, 0.8757, -0.1228, -0.0918, 0.0172 };
-constexpr Fit kGouraud = { -2.0831, 1.2086, 0.2577, -0.3980, -0.0528 };
+// with mean error >= 0.02/255; margin at the 40th percentile).
+// Phong, eq. 4.1 (R^2 0.983): its error grows with the spread of the
+// normals (interpolation) and with how far it moves under other vertex
+// normals (their own error, e ~ 0.75: on irregular meshes the larger term).
+constexpr Fit kPhong = { 1.2965, 0.5183, 0.0089, 0.0511, 0.7437, -0.0730 };
+// Flat and Gouraud, eq. 4.5 (R^2 0.992, 0.994): their distance from Phong
+// (eq. 4.4) plus Phong's own predicted error, to a power near 1 (e unused).
+constexpr Fit kFlat = { 2.3377, 0.5715, -0.2783, 0.2934, 0.0000, -0.0239 };
+constexpr Fit kGouraud = { -0.1592, 0.9410, 0.0224, 0.0537, 0.0000, -0.0270 };
+/// Added to the normals' term of eq. 4.1 (1/255) before its log: a mesh
+/// whose area and Max normals agree (D_N = 0) must not send it to -inf.
+/// 0.01/255 is half the study's error floor (0.02/255), so it matters only
+/// where Phong is predicted far under any budget.
+constexpr double kNormalsFloor = 0.01;
 
 /// eq. 4.2's coefficients (ms, ms per 1000 triangles, ms per 1000 front
 /// pixels) per mode and model class: [0] not Cook-Torrance, [1] Cook-Torrance
 /// dielectric, [2] Cook-Torrance conductor. Weighted least squares on the
-/// relative error (156 rows each: two runs of the study), refitted
-/// 2026-12-02: since the fit of 2026-11-25 the renderer lost most of its
-/// fixed cost per frame (0.19-0.29 -> ~0.04 ms: kept, spinning workers,
-/// depth per band) and flat and Gouraud most of their cost per pixel
-/// relative to Phong (Phong's is now ~5x theirs, was ~2.5x). A conductor
-/// costs what a dielectric does in every mode.
+/// relative error (78 rows each; each row's time the median of four runs of
+/// the study), refitted 2026-12-02: since the fit of 2026-11-25 the
+/// renderer lost most of its fixed cost per frame (0.19-0.29 -> ~0.07 ms:
+/// kept, spinning workers, depth per band) and flat and Gouraud most of
+/// their cost per pixel relative to Phong (Phong's is now ~5x theirs, was
+/// ~2.5x). A conductor costs what a dielectric does in every mode.
 struct CostFit
 {
   double a, b, c;
 };
-constexpr CostFit kCostFlat[3] = { { 0.0426, 0.03201, 0.00160 }, { 0.0391, 0.03350, 0.00193 },
-  { 0.0423, 0.03396, 0.00143 } };
-constexpr CostFit kCostGouraud[3] = { { 0.0395, 0.03414, 0.00143 },
-  { 0.0406, 0.03744, 0.00122 }, { 0.0391, 0.03678, 0.00134 } };
-constexpr CostFit kCostPhong[3] = { { 0.0381, 0.02879, 0.00746 }, { 0.0428, 0.02814, 0.00681 },
-  { 0.0393, 0.02798, 0.00742 } };
+constexpr CostFit kCostFlat[3] = { { 0.0722, 0.04343, 0.00251 }, { 0.0809, 0.04540, 0.00184 },
+  { 0.0725, 0.04542, 0.00221 } };
+constexpr CostFit kCostGouraud[3] = { { 0.0694, 0.04725, 0.00190 },
+  { 0.0758, 0.05008, 0.00131 }, { 0.0644, 0.05265, 0.00238 } };
+constexpr CostFit kCostPhong[3] = { { 0.0743, 0.04036, 0.00952 }, { 0.0764, 0.03916, 0.00944 },
+  { 0.0769, 0.03985, 0.00981 } };
 
 /// Normal spreads below this (radians) are a flat region: the power law is
 /// evaluated at the floor, which predicts far below 1/255 for every mode.
 constexpr double kMinSpread = 1e-4;
 /// The view's predictors are read off at most this many triangles (every
-/// k-th): means over 65,536 triangles are within a percent of the whole
-/// mesh's, and a 1.3M-triangle mesh no longer takes longer to read (139 ms
-/// over all of them, 1920x1080) than to draw.
-constexpr long long kMaxPredictorTriangles = 65536;
+/// k-th): a mean over 16,384 triangles is within a percent of the whole
+/// mesh's (the study's spreads, compared), and a 1.3M-triangle mesh no
+/// longer takes longer to read (139 ms over all of them, 1920x1080) than
+/// to draw.
+constexpr long long kMaxPredictorTriangles = 16384;
 /// Predicted costs within this ratio are a tie, which the more accurate mode
 /// takes: the cost model's median relative error is 10-20% (eq. 4.2), so a
 /// cheaper mode by less than that is not reliably cheaper, while the more
@@ -103,16 +110,15 @@ ViewPredictors PredictorsOf(const Mesh& mesh, const std::vector<float>& normals,
     out.triangles += mesh.offsets[p + 1] - mesh.offsets[p] - 2;
   }
   const bool haveNormals = normals.size() == mesh.points.size();
-  // Every stride-th triangle, counts scaled back by the stride.
-  const long long stride =
-    std::max(1LL, (out.triangles + kMaxPredictorTriangles - 1) / kMaxPredictorTriangles);
-  long long t = 0;
+  // Runs of triangles spread over the mesh, counts scaled back.
+  TriangleSample sample(out.triangles, kMaxPredictorTriangles);
+  const long long stride = sample.Scale();
   for (int64_t p = 0; p < mesh.NumberOfPolygons(); ++p)
   {
     const int64_t b = mesh.offsets[p], e = mesh.offsets[p + 1];
-    for (int64_t k = b + 1; k + 1 < e; ++k, ++t) // the polygon's fan
+    for (int64_t k = b + 1; k + 1 < e; ++k) // the polygon's fan
     {
-      if (t % stride != 0)
+      if (!sample.Take())
       {
         continue;
       }
@@ -202,9 +208,11 @@ double PredictError(ShadingMode mode, const ViewPredictors& view,
   const ModeDifferences& difference, double sharpness, double peak, bool conservative)
 {
   const double logSpread = std::log(std::max(view.normalSpread, kMinSpread));
-  // eq. 4.1: Phong's own error, from the spread of the normals.
+  // eq. 4.1: Phong's own error, from the spread of the normals and their
+  // uncertainty.
   const double phong = std::exp(kPhong.a + kPhong.b * logSpread +
-    kPhong.c * std::log1p(sharpness) + kPhong.d * std::log(std::max(peak, kMinPeak)));
+    kPhong.c * std::log1p(sharpness) + kPhong.d * std::log(std::max(peak, kMinPeak)) +
+    kPhong.e * std::log(difference.normals + kNormalsFloor));
   if (mode != ShadingMode::Flat && mode != ShadingMode::Gouraud)
   {
     return phong * (conservative ? std::exp(kPhong.margin) : 1.0);
@@ -262,6 +270,7 @@ ModeChoice ChooseMode(const Mesh& mesh, const std::vector<float>& normals, const
   {
     unitLight.flat /= light;
     unitLight.gouraud /= light;
+    unitLight.normals /= light;
   }
   std::ostringstream why;
   why.precision(3);
@@ -269,7 +278,8 @@ ModeChoice ChooseMode(const Mesh& mesh, const std::vector<float>& normals, const
       << choice.view.visibleTriangles << " visible triangles of " << choice.view.trianglePixels
       << " px, lobe n = " << choice.sharpness << ", peak " << choice.peak
       << "/sr, flat / Gouraud from Phong " << choice.difference.flat << " / "
-      << choice.difference.gouraud << "/255:";
+      << choice.difference.gouraud << "/255, Phong under other normals "
+      << choice.difference.normals << "/255:";
   const ShadingMode candidates[3] = { ShadingMode::Flat, ShadingMode::Gouraud,
     ShadingMode::Phong }; // from the least to the most accurate
   int cheapest = -1;

@@ -6,7 +6,9 @@
 #include "shadinglab/render/AutoMode.h"
 
 #include "Geometry.h"
+#include "VertexNormals.h"
 #include "ScreenProjection.h"
+#include "TriangleSample.h"
 
 #include <algorithm>
 #include <cmath>
@@ -17,13 +19,14 @@ namespace shadinglab::render
 namespace
 {
 
-/// At most this many triangles are sampled (evenly by index): the mean of
+/// At most this many triangles are sampled (in runs spread over the mesh,
+/// TriangleSample.h): the mean of
 /// the differences over 4096 triangles is within a few percent of the mean
 /// over all of them, and a 1M-triangle mesh is then estimated in ~1 ms.
-constexpr long long kMaxSampledTriangles = 4096;
-/// At most this many quadrature points in all (~5 ms at ~0.3 us a point, three
-/// model evaluations each): huge triangles are sampled on sub-triangles of
-/// total area / kMaxPoints pixels at least.
+constexpr long long kMaxSampledTriangles = 8192;
+/// At most this many quadrature points in all (~0.3 us a point: Phong, and
+/// Phong under two other sets of normals, plus Gouraud's interpolation);
+/// past it, fewer triangles are kept.
 constexpr double kMaxPoints = 16384;
 /// Sub-triangles are made no smaller than this (pixels): a narrow highlight
 /// of n = 150 on a coarse mesh spans ~10 pixels, so 4-pixel cells see it.
@@ -72,20 +75,19 @@ ModeDifferences EstimateModeDifferences(const Mesh& mesh, const std::vector<floa
   {
     triangles += std::max<int64_t>(0, mesh.offsets[p + 1] - mesh.offsets[p] - 2);
   }
-  const long long stride = std::max(1LL, (triangles + kMaxSampledTriangles - 1) / kMaxSampledTriangles);
+  TriangleSample picked(triangles, kMaxSampledTriangles);
   // The sampled triangles in view, front and back (by their winding on the
   // screen, as the renderers decide it) kept apart: on a closed mesh the
   // back faces are hidden, so only front faces are weighed unless the view
   // has none.
   std::vector<Sampled> samples;
   double area[2] = { 0, 0 };
-  long long t = 0;
   for (int64_t p = 0; p < mesh.NumberOfPolygons(); ++p)
   {
     const int64_t b = mesh.offsets[p], e = mesh.offsets[p + 1];
-    for (int64_t k = b + 1; k + 1 < e; ++k, ++t)
+    for (int64_t k = b + 1; k + 1 < e; ++k)
     {
-      if (t % stride != 0)
+      if (!picked.Take())
       {
         continue;
       }
@@ -115,12 +117,63 @@ ModeDifferences EstimateModeDifferences(const Mesh& mesh, const std::vector<floa
     }
   }
   const bool weighBack = !(area[0] > 0);
-  const double weighed = area[weighBack ? 1 : 0];
-  if (!(weighed > 0))
+  if (!(area[weighBack ? 1 : 0] > 0))
   {
     return out;
   }
-  const double cellPixels = std::max(kMinCellPixels, weighed / kMaxPoints);
+  // Each triangle is split into cells of about kMinCellPixels whatever the
+  // image's size, so that the estimate means the same at 320x240 (where it
+  // was fitted) and at 1080p; past kMaxPoints in all, fewer triangles are
+  // kept (every m-th), not coarser cells.
+  auto orderOf = [](double pixels) {
+    return std::clamp(static_cast<int>(std::ceil(std::sqrt(pixels / kMinCellPixels))), 1, kMaxOrder);
+  };
+  double points = 0;
+  samples.erase(std::remove_if(samples.begin(), samples.end(),
+                  [&](const Sampled& s) { return s.back != weighBack; }),
+    samples.end());
+  for (const Sampled& s : samples)
+  {
+    points += static_cast<double>(orderOf(s.area)) * orderOf(s.area);
+  }
+  if (points > kMaxPoints)
+  {
+    const size_t every = static_cast<size_t>(std::ceil(points / kMaxPoints));
+    size_t kept = 0;
+    for (size_t i = 0; i < samples.size(); i += every)
+    {
+      samples[kept++] = samples[i];
+    }
+    samples.resize(kept);
+  }
+  double weighed = 0;
+  for (const Sampled& s : samples)
+  {
+    weighed += s.area;
+  }
+  // The vertex normals' own uncertainty: Phong with area-weighted and with
+  // Max-weighted normals (Max 1999, exact on spheres). Where they agree the
+  // mesh pins its normals down; where they do not (irregular triangles, as
+  // marching cubes makes) neither is the surface's, and no interpolation
+  // mode removes that error.
+  // Recomputed at the weighed triangles' vertices only (one pass over the
+  // polygons for both weightings, not two whole normal passes).
+  std::vector<int64_t> slotOf(static_cast<size_t>(mesh.NumberOfPoints()), -1);
+  int64_t slots = 0;
+  for (const Sampled& s : samples)
+  {
+    for (int64_t v : s.v)
+    {
+      if (slotOf[v] < 0)
+      {
+        slotOf[v] = slots++;
+      }
+    }
+  }
+  std::vector<std::vector<double>> alternatives;
+  mesh::ComputeVertexNormalsAt(mesh.points.data(), mesh.offsets.data(), mesh.connectivity.data(),
+    mesh.NumberOfPolygons(), { mesh::NormalWeighting::Area, mesh::NormalWeighting::Max }, slotOf,
+    slots, alternatives);
   auto normalOf = [&](int64_t v, double sign) {
     return NormalizeOr(Vec3<double>(normals[3 * v], normals[3 * v + 1], normals[3 * v + 2]) * sign,
       Vec3<double>(0, 0, 0));
@@ -135,20 +188,21 @@ ModeDifferences EstimateModeDifferences(const Mesh& mesh, const std::vector<floa
   auto shade = [&](const Vec3<double>& P, const Vec3<double>& N, const Vec3<double>& color) {
     return Shade(material, lighting, color, P, N, screen.ToViewer(P));
   };
-  double sumFlat = 0, sumGouraud = 0;
+  double sumFlat = 0, sumGouraud = 0, sumNormals = 0;
   for (const Sampled& s : samples)
   {
-    if (s.back != weighBack)
-    {
-      continue;
-    }
     // Two-sided lighting: a back face is lit with its normals flipped.
     const double sign = s.back ? -1.0 : 1.0;
-    Vec3<double> P[3], N[3], C[3], gouraud[3];
+    Vec3<double> P[3], N[3], C[3], gouraud[3], A[2][3];
     for (int j = 0; j < 3; ++j)
     {
       P[j] = PointOf(mesh, s.v[j]);
       N[j] = normalOf(s.v[j], sign);
+      for (int w = 0; w < 2; ++w)
+      {
+        const double* a = &alternatives[w][3 * slotOf[s.v[j]]];
+        A[w][j] = Vec3<double>(a[0], a[1], a[2]) * sign;
+      }
       C[j] = colorOf(s.v[j]);
       gouraud[j] = shade(P[j], N[j], C[j]);
     }
@@ -170,13 +224,21 @@ ModeDifferences EstimateModeDifferences(const Mesh& mesh, const std::vector<floa
     // split: their centroids at barycentrics (i + 1/3, j + 1/3, l + 1/3)/k,
     // i + j + l = k - 1 (upright), and (i + 2/3, j + 2/3, l + 2/3)/k,
     // i + j + l = k - 2 (inverted).
-    const int order = std::clamp(static_cast<int>(std::ceil(std::sqrt(s.area / cellPixels))), 1, kMaxOrder);
-    double dFlat = 0, dGouraud = 0;
+    const int order = orderOf(s.area);
+    double dFlat = 0, dGouraud = 0, dNormals = 0;
     auto sample = [&](double u, double v, double w) {
       const Vec3<double> p = P[0] * u + P[1] * v + P[2] * w;
       const Vec3<double> nrm = NormalizeOr(N[0] * u + N[1] * v + N[2] * w, faceN);
-      const Vec3<double> phong = shade(p, nrm, C[0] * u + C[1] * v + C[2] * w);
+      const Vec3<double> color = C[0] * u + C[1] * v + C[2] * w;
+      const Vec3<double> phong = shade(p, nrm, color);
       dFlat += Difference255(flat, phong);
+      double far = 0;
+      for (const Vec3<double>* a : A)
+      {
+        const Vec3<double> other = NormalizeOr(a[0] * u + a[1] * v + a[2] * w, faceN);
+        far = std::max(far, Difference255(shade(p, other, color), phong));
+      }
+      dNormals += far;
       dGouraud += Difference255(gouraud[0] * u + gouraud[1] * v + gouraud[2] * w, phong);
     };
     const double k = order;
@@ -194,10 +256,12 @@ ModeDifferences EstimateModeDifferences(const Mesh& mesh, const std::vector<floa
     }
     sumFlat += s.area * dFlat / (k * k);
     sumGouraud += s.area * dGouraud / (k * k);
+    sumNormals += s.area * dNormals / (k * k);
     ++out.sampledTriangles;
   }
   out.flat = sumFlat / weighed;
   out.gouraud = sumGouraud / weighed;
+  out.normals = sumNormals / weighed;
   return out;
 }
 

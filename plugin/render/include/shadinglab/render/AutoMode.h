@@ -2,8 +2,10 @@
 // `--mode auto --max-error E`: the cheapest shading mode predicted to keep
 // the mean error under E (1/255), from what is known before rendering: how
 // far apart the vertex normals of the visible triangles are, how sharp the
-// material's lobe is, and how large the triangles are on the screen. The
-// prediction (docs/model.md eq. 4.1) is fitted to `shadinglab accuracy`.
+// material's lobe is, how far flat and Gouraud land from Phong under the
+// scene's lights, and how far Phong moves under other vertex normals (a
+// quadrature over the triangles, eq. 4.4). The prediction (docs/model.md
+// eq. 4.1 and 4.5) is fitted to `shadinglab accuracy`.
 #pragma once
 
 #include "shadinglab/render/Options.h"
@@ -15,7 +17,8 @@
 namespace shadinglab::render
 {
 
-/// What the prediction reads of a mesh in a view.
+/// What the prediction reads of a mesh in a view (at most 16,384 triangles,
+/// in runs spread over the mesh; counts scaled back to the whole).
 struct ViewPredictors
 {
   /// Screen-area-weighted mean, over front-facing triangles in view, of the
@@ -34,16 +37,22 @@ struct ViewPredictors
 ViewPredictors PredictorsOf(const Mesh& mesh, const std::vector<float>& normals,
   const Camera& camera, int width, int height);
 
-/// How far flat and Gouraud would land from Phong (eq. 4.4): the
-/// screen-area-weighted mean, over the front-facing triangles in view (the
-/// back-facing ones when no triangle faces the viewer), of the largest
-/// channel difference (1/255, after the clamp to [0, 1]) between the mode's
-/// colour and Phong's, by the midpoint rule on sub-triangles of at least a
-/// few pixels. At most 4096 triangles, evenly spread by index, are sampled.
+/// How far flat and Gouraud would land from Phong (eq. 4.4), and Phong from
+/// itself with other vertex normals: the screen-area-weighted mean, over
+/// the front-facing triangles in view (the back-facing ones when no
+/// triangle faces the viewer), of the largest channel difference (1/255,
+/// after the clamp to [0, 1]) between the two colours, by the midpoint rule
+/// on sub-triangles of about 4 pixels. At most 8,192 triangles (in runs
+/// spread over the mesh) and 16,384 points are evaluated.
 struct ModeDifferences
 {
   double flat = 0;
   double gouraud = 0;
+  /// How far Phong moves, at most, when its normals are replaced by the
+  /// area-weighted or the Max-weighted ones (recomputed from the mesh): the
+  /// uncertainty of the vertex normals themselves, which Phong's error
+  /// carries on top of its interpolation's (eq. 4.1).
+  double normals = 0;
   long long sampledTriangles = 0;
 };
 ModeDifferences EstimateModeDifferences(const Mesh& mesh, const std::vector<float>& normals,

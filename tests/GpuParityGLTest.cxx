@@ -652,6 +652,48 @@ TEST(GpuParityGLTest, ShadersRebuildOnlyForVariantChanges)
     mapper->GetLastVariant().c_str());
 }
 
+TEST(GpuParityGLTest, AutoChoiceFollowsTheLightsAndTheCamera)
+{
+  if (!HaveGpu())
+  {
+    GTEST_SKIP() << "no X display with OpenGL";
+  }
+  auto sphere = WithExactNormals(sl::datasets::MakeIcosphere(2));
+  vtkNew<vtkShadingLabPolyDataMapper> mapper;
+  mapper->SetInputData(sphere);
+  mapper->SetMaterial(BlinnPhong());
+  mapper->SetShadingMode(vtkShadingLabPolyDataMapper::AUTO);
+  mapper->SetMaxError(1.0);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  vtkNew<vtkRenderer> ren;
+  ren->AddActor(actor);
+  ren->AutomaticLightCreationOff();
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToSceneLight();
+  light->SetPositional(false);
+  light->SetPosition(-0.4, 0.6, 1.0);
+  light->SetFocalPoint(0, 0, 0);
+  ren->AddLight(light);
+  SetCamera(ren, Camera());
+  auto window = RenderOffscreen(ren, 240, 180);
+  const std::string lit = mapper->GetAutoChoice();
+  ASSERT_FALSE(lit.empty());
+  window->Render();
+  EXPECT_EQ(mapper->GetAutoChoice(), lit); // nothing changed
+  // The light behind the sphere: the distances between modes (eq. 4.4)
+  // are measured under it, so the reasons change (a choice cached on the
+  // old light, or a light without its direction, would not).
+  light->SetPosition(0.4, -0.6, -1.0);
+  window->Render();
+  const std::string behind = mapper->GetAutoChoice();
+  EXPECT_NE(behind, lit);
+  // A closer camera: larger triangles on the screen.
+  ren->GetActiveCamera()->Zoom(2.0);
+  window->Render();
+  EXPECT_NE(mapper->GetAutoChoice(), behind);
+}
+
 TEST(GpuParityGLTest, TranslucentActorsAreDrawn)
 {
   if (!HaveGpu())

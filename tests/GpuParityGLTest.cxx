@@ -327,6 +327,20 @@ vtkSmartPointer<vtkRenderWindow> RenderOffscreen(vtkRenderer* ren, int width, in
   return window;
 }
 
+/// The renderer's one light: a directional scene light from (x, y, z)
+/// towards the origin (no automatic light). The renderer owns it.
+vtkLight* AddDirectionalLight(vtkRenderer* ren, double x, double y, double z)
+{
+  ren->AutomaticLightCreationOff();
+  vtkNew<vtkLight> light;
+  light->SetLightTypeToSceneLight();
+  light->SetPositional(false);
+  light->SetPosition(x, y, z);
+  light->SetFocalPoint(0, 0, 0);
+  ren->AddLight(light);
+  return light;
+}
+
 void SetCamera(vtkRenderer* ren, const render::Camera& c)
 {
   vtkCamera* cam = ren->GetActiveCamera();
@@ -552,13 +566,7 @@ TEST(GpuParityGLTest, MultiblockInput)
   vtkNew<vtkRenderer> ren;
   ren->AddActor(actor);
   ren->SetBackground(0.32, 0.34, 0.43);
-  ren->AutomaticLightCreationOff();
-  vtkNew<vtkLight> light;
-  light->SetLightTypeToSceneLight();
-  light->SetPositional(false);
-  light->SetPosition(-0.4, 0.6, 1.0);
-  light->SetFocalPoint(0, 0, 0);
-  ren->AddLight(light);
+  AddDirectionalLight(ren, -0.4, 0.6, 1.0);
   SetCamera(ren, Camera());
   auto window = RenderOffscreen(ren, 240, 180);
   EXPECT_GE(mapper->GetShaderBuildCount(), 1);
@@ -606,11 +614,7 @@ TEST(GpuParityGLTest, ShadersRebuildOnlyForVariantChanges)
   actor->SetMapper(mapper);
   vtkNew<vtkRenderer> ren;
   ren->AddActor(actor);
-  ren->AutomaticLightCreationOff();
-  vtkNew<vtkLight> light;
-  light->SetLightTypeToSceneLight();
-  light->SetPositional(false);
-  ren->AddLight(light);
+  AddDirectionalLight(ren, 0.0, 0.0, 1.0);
   SetCamera(ren, Camera());
   auto window = RenderOffscreen(ren, 64, 48);
   EXPECT_EQ(mapper->GetFailedSubstitutionCount(), 0);
@@ -668,13 +672,7 @@ TEST(GpuParityGLTest, AutoChoiceFollowsTheLightsAndTheCamera)
   actor->SetMapper(mapper);
   vtkNew<vtkRenderer> ren;
   ren->AddActor(actor);
-  ren->AutomaticLightCreationOff();
-  vtkNew<vtkLight> light;
-  light->SetLightTypeToSceneLight();
-  light->SetPositional(false);
-  light->SetPosition(-0.4, 0.6, 1.0);
-  light->SetFocalPoint(0, 0, 0);
-  ren->AddLight(light);
+  vtkLight* light = AddDirectionalLight(ren, -0.4, 0.6, 1.0);
   SetCamera(ren, Camera());
   auto window = RenderOffscreen(ren, 240, 180);
   const std::string lit = mapper->GetAutoChoice();

@@ -59,7 +59,7 @@ QWidget* MainWindow::BuildControls()
   this->MaxError->setValue(1.0);
   this->MaxError->setEnabled(false); // until an auto panel is selected
   this->MaxError->setToolTip("Auto mode: the mean error allowed against exact shading, in 1/255 "
-                             "(docs/model.md eq. 4.1); the title shows the mode chosen.");
+                             "(docs/model.md section 4); the title shows the mode chosen.");
   panelForm->addRow("Max error (1/255)", this->MaxError);
   connect(this->MaxError, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
     &MainWindow::OnPanelEdited);

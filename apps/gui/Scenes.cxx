@@ -124,7 +124,7 @@ Scene Modes(const SceneOptions& o)
     "(Phong), per pixel from a quadratic in screen space (fast Phong), and per pixel "
     "with a physically based BRDF (Cook-Torrance). Watch the highlight: Gouraud "
     "smears or loses it, flat shows the facets. The last panel picks, at every view, "
-    "the cheapest mode predicted to stay within a mean error of 2/255 (eq. 4.1-4.2): "
+    "the cheapest mode predicted to stay within a mean error of 2/255 (eq. 4.1-4.5): "
     "zoom in and out and watch its title.";
   s.formula = "I = R<sub>a</sub>I<sub>a</sub> + &Sigma;<sub>j</sub> I<sub>Lj</sub> "
               "(N&middot;L<sub>j</sub>) d&omega;<sub>j</sub> (k<sub>d</sub>R<sub>d</sub> + "

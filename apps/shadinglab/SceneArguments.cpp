@@ -26,7 +26,7 @@ const char* const kSceneOptionsHelp =
   "  --mode M            where the model is evaluated: flat | gouraud | phong | fast-phong\n"
   "                      (default phong); cook-torrance = phong with --model cook-torrance;\n"
   "                      auto = the cheapest of flat, gouraud, phong predicted to keep the\n"
-  "                      mean error under --max-error E (1/255; docs/model.md eq. 4.1-4.2)\n"
+  "                      mean error under --max-error E (1/255; docs/model.md eq. 4.1-4.5)\n"
       "  --backend B         cpu | gpu | auto (auto: gpu when an X display with OpenGL >= 3.2\n"
   "                      exists, cpu otherwise, said on stderr)\n"
   "  --interp I          perspective (perspective-correct, default) | screen (linear in\n"

@@ -64,7 +64,7 @@ public:
     FAST_PHONG = 3,
     /// Not a render::ShadingMode: chosen per render among FLAT, GOURAUD and
     /// PHONG as the cheapest predicted to keep the mean error under
-    /// MaxError (render::ChooseMode, docs/model.md eq. 4.1-4.2), from this
+    /// MaxError (render::ChooseMode, docs/model.md eq. 4.1-4.5), from this
     /// mapper's input, the renderer's camera, size and lights, and the
     /// material.
     AUTO = 4

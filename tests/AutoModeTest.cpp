@@ -298,3 +298,18 @@ TEST(AutoModeTest, ModeDifferencesMeanTheSameAtAnyImageSize)
   EXPECT_NEAR(large.flat / small.flat, 1.0, 0.15);
   EXPECT_NEAR(large.gouraud / small.gouraud, 1.0, 0.15);
 }
+
+TEST(AutoModeTest, PolygonsOfFewerThanThreeCornersCountNoTriangles)
+{
+  // One triangle and a one-corner polygon (a vertex cell in a polygon
+  // list): it counted -1 triangle before, cancelling the triangle.
+  sl::render::Mesh mesh;
+  mesh.points = { 0, 0, 0, 1, 0, 0, 0, 1, 0 };
+  mesh.normals = { 0, 0, 1, 0, 0, 1, 0, 0, 1 };
+  mesh.offsets = { 0, 3, 4 };
+  mesh.connectivity = { 0, 1, 2, 0 };
+  const View v = KeyLitView(mesh);
+  const auto view = sl::render::PredictorsOf(mesh, mesh.normals, v.camera, 320, 240);
+  EXPECT_EQ(view.triangles, 1);
+  EXPECT_EQ(view.visibleTriangles, 1);
+}

@@ -66,8 +66,8 @@ constexpr CostFit kCostPhong[3] = { { 0.0743, 0.04036, 0.00952 }, { 0.0764, 0.03
 /// Normal spreads below this (radians) are a flat region: the power law is
 /// evaluated at the floor, which predicts far below 1/255 for every mode.
 constexpr double kMinSpread = 1e-4;
-/// The view's predictors are read off at most this many triangles (every
-/// k-th): a mean over 16,384 triangles is within a percent of the whole
+/// The view's predictors are read off at most this many triangles (in runs
+/// spread over the mesh, TriangleSample.h): a mean over 16,384 triangles is within a percent of the whole
 /// mesh's (the study's spreads, compared), and a 1.3M-triangle mesh no
 /// longer takes longer to read (139 ms over all of them, 1920x1080) than
 /// to draw.
@@ -105,10 +105,7 @@ ViewPredictors PredictorsOf(const Mesh& mesh, const std::vector<float>& normals,
     return screen(Vec3<double>(mesh.points[3 * v], mesh.points[3 * v + 1], mesh.points[3 * v + 2]), x, y);
   };
   double weighted = 0, area = 0;
-  for (int64_t p = 0; p < mesh.NumberOfPolygons(); ++p)
-  {
-    out.triangles += mesh.offsets[p + 1] - mesh.offsets[p] - 2;
-  }
+  out.triangles = TriangleCount(mesh);
   const bool haveNormals = normals.size() == mesh.points.size();
   // Runs of triangles spread over the mesh, counts scaled back.
   TriangleSample sample(out.triangles, kMaxPredictorTriangles);

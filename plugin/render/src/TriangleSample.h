@@ -4,11 +4,25 @@
 // consecutive triangles spread evenly over it.
 #pragma once
 
+#include "shadinglab/render/Scene.h"
+
 #include <algorithm>
 #include <cstdint>
 
 namespace shadinglab::render
 {
+
+/// The triangles of the mesh's polygon fans (a polygon of n >= 3 corners
+/// has n - 2; fewer corners, none), in the order Take() walks them.
+inline long long TriangleCount(const Mesh& mesh)
+{
+  long long triangles = 0;
+  for (int64_t p = 0; p < mesh.NumberOfPolygons(); ++p)
+  {
+    triangles += std::max<int64_t>(0, mesh.offsets[p + 1] - mesh.offsets[p] - 2);
+  }
+  return triangles;
+}
 
 /// Triangles are sampled in runs of this many consecutive ones: neighbours
 /// in index order share vertices and cache lines, and one triangle in 80

@@ -258,25 +258,38 @@ private:
       {
         continue;
       }
-      bool anyBehind = false;
+      bool anyBehind = false, allBehind = true;
       float ymin = std::numeric_limits<float>::infinity(), ymax = -ymin;
       float xmin = ymin, xmax = -ymin, zmin = ymin;
       for (int k = 0; k < n; ++k)
       {
         const int64_t v = conn[first + k];
         anyBehind |= this->Behind[v] != 0;
+        allBehind &= this->Behind[v] != 0;
         ymin = std::min(ymin, this->Screen[v].y);
         ymax = std::max(ymax, this->Screen[v].y);
         xmin = std::min(xmin, this->Screen[v].x);
         xmax = std::max(xmax, this->Screen[v].x);
         zmin = std::min(zmin, this->Screen[v].a[kAttrZ]);
       }
+      if (allBehind)
+      {
+        continue; // clipping keeps nothing (Behind is its inside test negated)
+      }
       if (anyBehind)
       {
-        // Rows are known only after clipping (rare): every band looks.
-        for (int b = 0; b < this->Bands; ++b)
+        // Rows are known only after clipping, which DrawSourcePolygon does
+        // per band: binned to the bands its clipped part can reach, nothing
+        // when it lies wholly behind the near plane (a mesh behind the
+        // camera, half of a floor the camera stands on). Before, every band
+        // looked: the 100k torus behind the camera took 150 ms at 1080p,
+        // clipped 68 times, against 17 ms in view.
+        int rowBegin = 0, rowEnd = 0;
+        this->ClippedRows(first, n, rowBegin, rowEnd);
+        for (int b = rowBegin / kBandRows; rowEnd > rowBegin && b <= (rowEnd - 1) / kBandRows; ++b)
         {
           lists[b].push_back(p);
+          ++state.binned;
         }
         continue;
       }
@@ -309,9 +322,64 @@ private:
       for (int b = j0 / kBandRows; b <= (j1 - 1) / kBandRows; ++b)
       {
         lists[b].push_back(p);
+        ++state.binned;
       }
     }
     return degenerate;
+  }
+
+  /// Rows [rowBegin, rowEnd) that polygon `first`'s part in front of the
+  /// near plane may reach, by DrawSourcePolygon's clipping on positions
+  /// only, widened by kClipRowMargin (the bins need a superset of the rows:
+  /// DrawSourcePolygon finds the exact ones). Empty when no part is in front.
+  void ClippedRows(int64_t first, int n, int& rowBegin, int& rowEnd) const
+  {
+    const auto& conn = F.MeshData->connectivity;
+    const auto& pts = F.MeshData->points;
+    double c[kMaxPolygonVertices][4];
+    for (int k = 0; k < n; ++k)
+    {
+      const int64_t v = conn[first + k];
+      const double pt[3] = { pts[3 * v], pts[3 * v + 1], pts[3 * v + 2] };
+      F.ViewProjection.Apply(pt, c[k]);
+    }
+    float ymin = std::numeric_limits<float>::infinity(), ymax = -ymin;
+    auto row = [&](const double* clip)
+    {
+      const float y = static_cast<float>((0.5 - clip[1] / clip[3] * 0.5) * F.Height);
+      ymin = std::min(ymin, y);
+      ymax = std::max(ymax, y);
+    };
+    for (int k = 0; k < n; ++k)
+    {
+      const double* a = c[k];
+      const double* b = c[(k + 1) % n];
+      const double da = a[2] + a[3], db = b[2] + b[3];
+      if (da >= 0)
+      {
+        row(a);
+      }
+      if ((da >= 0) != (db >= 0))
+      {
+        const double* inside = da >= 0 ? a : b;
+        const double* outside = da >= 0 ? b : a;
+        const double di = da >= 0 ? da : db, dout = da >= 0 ? db : da;
+        const double t = di / (di - dout);
+        double x[4];
+        for (int i = 0; i < 4; ++i)
+        {
+          x[i] = inside[i] + t * (outside[i] - inside[i]);
+        }
+        row(x);
+      }
+    }
+    rowBegin = rowEnd = 0;
+    if (!(ymax >= ymin))
+    {
+      return; // wholly behind the near plane (or not finite): no rows
+    }
+    rowBegin = std::max(0, CeilToInt(ymin - 0.5f) - kClipRowMargin);
+    rowEnd = std::min(F.Height, CeilToInt(ymax - 0.5f) + kClipRowMargin);
   }
 
   /// Twice the signed screen area of the mesh polygon at `first` (y down:
@@ -527,6 +595,12 @@ private:
   /// Gouraud lighting: 1.03 ms on one thread, 0.87 on two). 2,048 vertices
   /// are ~25-100 us of lighting, far above a piece's fetch from the counter.
   static constexpr int64_t kVertexChunk = 2048;
+  /// Rows added on each side of a clipped polygon's rows when it is binned:
+  /// ClippedRows projects as ProjectVertex does, but a crossing on the
+  /// plane (w = -z there, not the exact interpolated w) can round a
+  /// fraction of a row apart; one row covers that, and a band too many
+  /// only costs a set-up that finds no row.
+  static constexpr int kClipRowMargin = 1;
   /// Binning's pieces: about this many per thread, so a thread that drew
   /// the cheap ones takes more, and of at least kMinPolygonChunk polygons
   /// (~50-100 us of binning), so that a band's lists stay few: a band

@@ -297,6 +297,7 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh,
       stats->triangles += st.triangles; // counted by binning, which reads every polygon's size
       stats->rasterized += st.rasterized;
       stats->clipped += st.clippedPolygons;
+      stats->binned += st.binned;
       stats->degenerate += st.degenerate;
       stats->pixelsShaded += st.shaded;
       stats->fastPhongExact += st.fastPhongExact;

@@ -130,6 +130,9 @@ struct RenderStats
   int64_t triangles = 0;      ///< input polygons counted as triangles (n - 2 each)
   int64_t rasterized = 0;     ///< polygons scan-converted (after culling and clipping; CPU)
   int64_t clipped = 0;        ///< polygons crossing the near plane (CPU)
+  /// Polygon set-ups: one per polygon and 16-row band it is binned to, for
+  /// the bands its rows (after near-plane clipping) reach (CPU).
+  int64_t binned = 0;
   int64_t degenerate = 0;     ///< zero-area polygons skipped (CPU)
   /// Polygons skipped before scan conversion: outside the view, beyond the
   /// far plane, culled back faces, or between pixel centres (CPU).

@@ -49,6 +49,46 @@ inline int CeilToInt(float x)
   return i + (x > static_cast<float>(i) ? 1 : 0);
 }
 
+/// Sutherland-Hodgman against the near plane z + w >= 0 in clip space, on
+/// a polygon of n vertices whose clip coordinates clipOf(k) gives: in
+/// order, keep(k) for each vertex in front and cross(inside, outside, t)
+/// for each edge that crosses the plane, the crossing at t from its inside
+/// end towards its outside end (so two polygons sharing an edge get
+/// bit-identical crossings). The rasterizer's clipping and its binning of
+/// clipped polygons both walk polygons through this one function.
+template<typename ClipOf, typename Keep, typename Cross>
+void ClipToNearPlane(int n, ClipOf&& clipOf, Keep&& keep, Cross&& cross)
+{
+  for (int k = 0; k < n; ++k)
+  {
+    const int next = (k + 1) % n;
+    const double* a = clipOf(k);
+    const double* b = clipOf(next);
+    const double da = a[2] + a[3], db = b[2] + b[3];
+    const bool aIn = da >= 0, bIn = db >= 0;
+    if (aIn)
+    {
+      keep(k);
+    }
+    if (aIn != bIn)
+    {
+      const double di = aIn ? da : db, dout = aIn ? db : da;
+      cross(aIn ? k : next, aIn ? next : k, di / (di - dout));
+    }
+  }
+}
+
+/// The clip coordinates of an edge's crossing (ClipToNearPlane), landed
+/// exactly on the plane so that 1/w stays finite.
+inline void NearPlaneCrossing(const double inside[4], const double outside[4], double t, double x[4])
+{
+  for (int i = 0; i < 4; ++i)
+  {
+    x[i] = inside[i] + t * (outside[i] - inside[i]);
+  }
+  x[2] = -x[3];
+}
+
 struct ScreenVertex
 {
   float x, y;

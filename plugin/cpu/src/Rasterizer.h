@@ -350,29 +350,14 @@ private:
       ymin = std::min(ymin, y);
       ymax = std::max(ymax, y);
     };
-    for (int k = 0; k < n; ++k)
-    {
-      const double* a = c[k];
-      const double* b = c[(k + 1) % n];
-      const double da = a[2] + a[3], db = b[2] + b[3];
-      if (da >= 0)
+    raster::ClipToNearPlane(
+      n, [&](int k) { return c[k]; }, [&](int k) { row(c[k]); },
+      [&](int inside, int outside, double t)
       {
-        row(a);
-      }
-      if ((da >= 0) != (db >= 0))
-      {
-        const double* inside = da >= 0 ? a : b;
-        const double* outside = da >= 0 ? b : a;
-        const double di = da >= 0 ? da : db, dout = da >= 0 ? db : da;
-        const double t = di / (di - dout);
         double x[4];
-        for (int i = 0; i < 4; ++i)
-        {
-          x[i] = inside[i] + t * (outside[i] - inside[i]);
-        }
+        raster::NearPlaneCrossing(c[inside], c[outside], t, x);
         row(x);
-      }
-    }
+      });
     rowBegin = rowEnd = 0;
     if (!(ymax >= ymin))
     {
@@ -446,10 +431,9 @@ private:
     }
     else
     {
-      // Sutherland-Hodgman against the near plane z + w >= 0 in clip space,
-      // attributes interpolated linearly there (exact before the divide).
-      // Each crossing is computed from its inside end towards its outside
-      // end, so two polygons sharing an edge get bit-identical vertices.
+      // Clipped against the near plane (ClipToNearPlane, Raster.h), the
+      // attributes interpolated linearly in clip space (exact before the
+      // divide).
       wasClipped = true;
       struct ClipVertex
       {
@@ -468,43 +452,26 @@ private:
       }
       state.clipped.clear();
       int64_t clippedIds[kMaxPolygonVertices];
-      for (int k = 0; k < n; ++k)
+      auto emit = [&](const ClipVertex& cv, int64_t id)
       {
-        const ClipVertex& a = in[k];
-        const ClipVertex& b = in[(k + 1) % n];
-        const double da = a.c[2] + a.c[3], db = b.c[2] + b.c[3];
-        const bool aIn = da >= 0, bIn = db >= 0;
-        auto emit = [&](const ClipVertex& cv, int64_t id)
+        ScreenVertex sv;
+        this->ProjectVertex(cv.c, cv.raw, sv);
+        clippedIds[state.clipped.size()] = id;
+        state.clipped.push_back(sv);
+      };
+      raster::ClipToNearPlane(
+        n, [&](int k) { return in[k].c; }, [&](int k) { emit(in[k], ids[k]); },
+        [&](int inside, int outside, double t)
         {
-          ScreenVertex sv;
-          this->ProjectVertex(cv.c, cv.raw, sv);
-          clippedIds[state.clipped.size()] = id;
-          state.clipped.push_back(sv);
-        };
-        if (aIn)
-        {
-          emit(a, ids[k]);
-        }
-        if (aIn != bIn)
-        {
-          const ClipVertex& inside = aIn ? a : b;
-          const ClipVertex& outside = aIn ? b : a;
-          const double di = aIn ? da : db, dout = aIn ? db : da;
-          const double t = di / (di - dout);
           ClipVertex x;
-          for (int i = 0; i < 4; ++i)
-          {
-            x.c[i] = inside.c[i] + t * (outside.c[i] - inside.c[i]);
-          }
-          // Land exactly on the plane so 1/w stays finite.
-          x.c[2] = -x.c[3];
+          raster::NearPlaneCrossing(in[inside].c, in[outside].c, t, x.c);
           for (int i = 0; i < F.NumAttributes; ++i)
           {
-            x.raw[i] = static_cast<float>(inside.raw[i] + t * (outside.raw[i] - inside.raw[i]));
+            x.raw[i] = static_cast<float>(
+              in[inside].raw[i] + t * (in[outside].raw[i] - in[inside].raw[i]));
           }
-          emit(x, aIn ? ids[k] : ids[(k + 1) % n]);
-        }
-      }
+          emit(x, ids[inside]);
+        });
       count = static_cast<int>(state.clipped.size());
       if (count < 3)
       {

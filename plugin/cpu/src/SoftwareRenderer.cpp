@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The CPU renderer, in three parts: Raster.h (scan conversion), Rasterizer.h
-// (vertex stage, binning, clipping, culling, the band loop) and
-// ShadingStages.h (where each shading mode evaluates the model). This file
-// sets up a frame, picks the stage once, and resolves the image.
+// (vertex stage, binning, clipping, culling, the band loop) and the stages,
+// ShadingStages.h and FastPhongStage.h (where each shading mode evaluates
+// the model). This file sets up a frame, picks the stage once, and
+// resolves the image.
 #include "shadinglab/cpu/SoftwareRenderer.h"
 
 #include "HiddenBackFaces.h"
+#include "FastPhongStage.h"
 #include "Rasterizer.h"
 #include "ShadingStages.h"
 #include "VertexNormals.h"

@@ -346,7 +346,8 @@ private:
     float ymin = std::numeric_limits<float>::infinity(), ymax = -ymin;
     auto row = [&](const double* clip)
     {
-      const float y = static_cast<float>((0.5 - clip[1] / clip[3] * 0.5) * F.Height);
+      const double invW = 1.0 / clip[3]; // as ProjectVertex
+      const float y = static_cast<float>((0.5 - clip[1] * invW * 0.5) * F.Height);
       ymin = std::min(ymin, y);
       ymax = std::max(ymax, y);
     };
@@ -563,10 +564,11 @@ private:
   /// are ~25-100 us of lighting, far above a piece's fetch from the counter.
   static constexpr int64_t kVertexChunk = 2048;
   /// Rows added on each side of a clipped polygon's rows when it is binned:
-  /// ClippedRows projects as ProjectVertex does, but a crossing on the
-  /// plane (w = -z there, not the exact interpolated w) can round a
-  /// fraction of a row apart; one row covers that, and a band too many
-  /// only costs a set-up that finds no row.
+  /// ClippedRows projects as ProjectVertex does, from the same clip
+  /// coordinates (the same ClipToNearPlane crossings), but it is another
+  /// expression the compiler may round differently, and a y on a pixel
+  /// centre could then land a row apart; one row covers that, and a band
+  /// too many only costs a set-up that finds no row.
   static constexpr int kClipRowMargin = 1;
   /// Binning's pieces: about this many per thread, so a thread that drew
   /// the cheap ones takes more, and of at least kMinPolygonChunk polygons

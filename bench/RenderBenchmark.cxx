@@ -167,9 +167,11 @@ void BM_CpuCookTorrance(benchmark::State& state)
 /// threads': the two runs of a pair are back to back, so a drift cancels
 /// in their ratio where it would not in the ratio of the two medians.
 /// `scaling_best`, the fastest one-thread frame over the fastest
-/// two-thread frame, is what the code gives when nothing else runs: a
-/// neighbour on the host only ever slows a frame, and slows a two-thread
-/// frame more (it needs both cores at once).
+/// two-thread frame: what the code gave in the run's least disturbed
+/// moments (a neighbour on the host only ever slows a frame, and a
+/// two-thread frame more, as it needs both cores at once). Under steady
+/// load no frame is undisturbed, so it is no steadier than `scaling`
+/// (README, "Two threads against one").
 template<typename Run>
 void AlternateOneAndTwoThreads(benchmark::State& state, Run&& run)
 {

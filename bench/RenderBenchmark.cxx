@@ -528,6 +528,48 @@ void BM_CpuHalfOutside(benchmark::State& state)
                            : ", all in view"));
 }
 
+/// A material change re-renders without re-preparing the mesh: the 1.3M
+/// icosphere at 640x480, two threads, a new shininess every frame. 0: the
+/// mesh has normals; 1: it has none, so the renderer makes area-weighted
+/// ones, once (kept while its arrays hash the same); 2: as 1, with the
+/// normals remade every frame as the renderer did before (the price a
+/// redraw used to pay).
+void BM_CpuMaterialChange(benchmark::State& state)
+{
+  const Scene& scene = GetScene(1);
+  static const render::Mesh bare = []
+  {
+    render::Mesh m = GetScene(1).mesh;
+    m.normals.clear();
+    return m;
+  }();
+  const int variant = static_cast<int>(state.range(0));
+  render::RenderOptions opt;
+  opt.width = 640;
+  opt.height = 480;
+  opt.threads = 2;
+  sl::Material<double> material;
+  render::Scene s{ variant == 0 ? &scene.mesh : &bare, scene.camera, Headlight(scene.camera),
+    material };
+  cpu::SoftwareRenderer renderer;
+  render::RenderStats stats;
+  renderer.Render(s, opt, &stats);
+  int step = 0;
+  for (auto _ : state)
+  {
+    s.material.shininess = 20.0 + (step++ % 40);
+    if (variant == 2)
+    {
+      benchmark::DoNotOptimize(cpu::AreaWeightedNormals(bare).data());
+    }
+    renderer.Render(s, opt, &stats);
+  }
+  state.counters["normals_cached"] = stats.normalsCached ? 1.0 : 0.0;
+  state.SetLabel(variant == 0 ? "mesh with normals"
+      : variant == 1          ? "no normals: made once"
+                              : "no normals: remade every frame (before)");
+}
+
 /// A small frame's fixed cost (the explorer's panels, the accuracy study's
 /// 320x240 frames): a 2,304-triangle torus filling 320x240, each mode, two
 /// threads. Whatever a frame does regardless of its size shows here.
@@ -590,6 +632,7 @@ BENCHMARK(BM_AutoChoice)
   ->Unit(benchmark::kMillisecond)
   ->UseRealTime();
 BENCHMARK(BM_CpuSmallFrame)->DenseRange(0, 3)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK(BM_CpuMaterialChange)->DenseRange(0, 2)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_CpuHalfOutside)
   ->ArgsProduct({ { 0, 1, 2 }, { 0, 1, 2 } })
   ->Unit(benchmark::kMillisecond)

@@ -504,6 +504,39 @@ TEST(CpuRendererTest, AMeshBehindTheCameraIsNotBinned)
   }
 }
 
+TEST(CpuRendererTest, ComputedNormalsAreKeptUntilTheMeshChanges)
+{
+  // A mesh without normals: its area-weighted normals are made by the first
+  // frame and reused while the mesh's arrays are unchanged; moving a point
+  // remakes them, and every frame draws what a fresh renderer draws.
+  render::Mesh torus = MeshOf(sl::datasets::MakeTorus(1.0, 0.4, 48, 24));
+  ASSERT_TRUE(torus.normals.empty());
+  const auto cam = CameraLookingAt(Vec3d(0.5, 2.0, 3.0), Vec3d(0, 0, 0), 40);
+  render::RenderOptions opt;
+  opt.width = 96;
+  opt.height = 72;
+  opt.mode = render::ShadingMode::Phong;
+  const auto light = OneLight(Vec3f(0, 0, 1));
+  sl::cpu::SoftwareRenderer kept;
+  render::RenderStats stats;
+  auto frame = [&] { return test::RenderWith(kept, torus, cam, light, BlinnPhong(), opt, &stats); };
+  auto fresh = [&] { return test::RenderCpu(torus, cam, light, BlinnPhong(), opt); };
+  const render::Image first = frame();
+  EXPECT_TRUE(stats.normalsComputed);
+  EXPECT_FALSE(stats.normalsCached);
+  const render::Image second = frame();
+  EXPECT_TRUE(stats.normalsCached);
+  EXPECT_EQ(second.rgb, first.rgb);
+  torus.points[1] += 0.05f; // one vertex moved: its normal and its neighbours' change
+  const render::Image moved = frame();
+  EXPECT_FALSE(stats.normalsCached);
+  EXPECT_EQ(moved.rgb, fresh().rgb);
+  EXPECT_NE(moved.rgb, first.rgb);
+  opt.mode = render::ShadingMode::Gouraud; // the options are not the key: still cached
+  EXPECT_EQ(frame().rgb, fresh().rgb);
+  EXPECT_TRUE(stats.normalsCached);
+}
+
 TEST(CpuRendererTest, DegenerateTrianglesAreSkipped)
 {
   render::Mesh mesh;

@@ -127,11 +127,8 @@ bool IsClosedOutwardTriangleMesh(const render::Mesh& mesh)
   return true;
 }
 
-bool ClosedMeshCache::IsClosedOutward(
-  const render::Mesh& mesh, bool mayTest, WorkerPool& pool, int threads)
+bool ClosedMeshCache::IsClosedOutward(const render::Mesh& mesh, uint64_t fingerprint, bool mayTest)
 {
-  // The hash's slices spread over the frame's threads.
-  const uint64_t fingerprint = mesh.ContentHash(SpreadOver(pool, threads));
   if (!this->Known || fingerprint != this->Fingerprint)
   {
     if (!mayTest)

@@ -15,7 +15,6 @@
 // The test is cached against the mesh's content hash (render::Mesh::ContentHash).
 #pragma once
 
-#include "WorkerPool.h"
 #include "shadinglab/render/Scene.h"
 
 #include <cstdint>
@@ -28,11 +27,12 @@ namespace shadinglab::cpu
 class ClosedMeshCache
 {
 public:
-  /// `mayTest`: whether the test may run if the answer is not cached (it
-  /// costs ~120 ns per triangle, once); without it an unknown mesh is
-  /// treated as open.
-  /// The mesh's content hash (the cache key) is computed on `pool`'s threads.
-  bool IsClosedOutward(const render::Mesh& mesh, bool mayTest, WorkerPool& pool, int threads);
+  /// `fingerprint`: the mesh's content hash (render::Mesh::ContentHash),
+  /// the cache key, which the renderer computes once a frame for all its
+  /// caches. `mayTest`: whether the test may run if the answer is not
+  /// cached (it costs ~120 ns per triangle, once); without it an unknown
+  /// mesh is treated as open.
+  bool IsClosedOutward(const render::Mesh& mesh, uint64_t fingerprint, bool mayTest);
 
 private:
   uint64_t Fingerprint = 0;

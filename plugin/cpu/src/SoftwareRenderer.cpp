@@ -151,7 +151,9 @@ private:
   Frame FrameState;
   RasterBuffers Buffers;
   ClosedMeshCache Closed;
-  std::vector<float> ComputedNormals;
+  std::vector<float> ComputedNormals; ///< area-weighted, for a mesh without normals
+  uint64_t NormalsFingerprint = 0;     ///< the content hash they were made for
+  bool NormalsKnown = false;
   std::vector<float> Rgb;
   std::vector<uint8_t> Covered;
   std::vector<uint16_t> Coverage;
@@ -191,11 +193,23 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh,
   const ScreenBounds onScreen = !F.Opt.countCoverage && (mayCullHidden || fastPhongMayFallBack)
     ? ProjectBounds(F, mesh, this->Buffers.Pool)
     : ScreenBounds();
+  // The mesh's content hash, the key of the caches below: computed at most
+  // once a frame, on the frame's threads, and only when a cache is asked.
+  bool hashed = false;
+  uint64_t fingerprint = 0;
+  auto contentHash = [&]
+  {
+    if (!hashed)
+    {
+      fingerprint = mesh.ContentHash(SpreadOver(this->Buffers.Pool, F.Threads));
+      hashed = true;
+    }
+    return fingerprint;
+  };
   const double imagePixels = static_cast<double>(F.Width) * F.Height;
   const bool hiddenBackFaces = mayCullHidden && onScreen.inFrontOfNearPlane &&
-    this->Closed.IsClosedOutward(mesh,
-      imagePixels >= kCullTestMinPixelsPerPolygon * static_cast<double>(polygons),
-      this->Buffers.Pool, F.Threads);
+    this->Closed.IsClosedOutward(mesh, contentHash(),
+      imagePixels >= kCullTestMinPixelsPerPolygon * static_cast<double>(polygons));
   F.CullBack = F.Opt.cullBackFaces || hiddenBackFaces;
   // Pixels per triangle: the projected box over the triangles (about half
   // of a closed mesh's triangles face the viewer and cover about half the
@@ -205,7 +219,7 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh,
     fastPhongMayFallBack && !F.Opt.countCoverage && pixelsPerTriangle < kFastPhongMinPixels;
 
   const int64_t nv = mesh.NumberOfPoints();
-  bool computedNormals = false;
+  bool computedNormals = false, normalsCached = false;
   if (F.Opt.mode != ShadingMode::Flat)
   {
     if (static_cast<int64_t>(mesh.normals.size()) == 3 * nv)
@@ -214,7 +228,18 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh,
     }
     else
     {
-      this->ComputedNormals = AreaWeightedNormals(mesh);
+      // Made once per mesh, not per frame: kept while its arrays hash the
+      // same (a redraw of a large mesh without normals otherwise paid
+      // the whole normal pass every frame).
+      const uint64_t key = contentHash();
+      normalsCached = this->NormalsKnown && key == this->NormalsFingerprint &&
+        static_cast<int64_t>(this->ComputedNormals.size()) == 3 * nv;
+      if (!normalsCached)
+      {
+        this->ComputedNormals = AreaWeightedNormals(mesh);
+        this->NormalsFingerprint = key;
+        this->NormalsKnown = true;
+      }
       F.NormalData = this->ComputedNormals.data();
       computedNormals = true;
     }
@@ -325,6 +350,7 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh,
     stats->skipped = std::max<int64_t>(0, stats->polygons - stats->rasterized - stats->degenerate);
     stats->threads = F.Threads;
     stats->normalsComputed = computedNormals;
+    stats->normalsCached = normalsCached;
     stats->milliseconds =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   }

@@ -165,6 +165,33 @@ TEST(HiddenBackFacesTest, EditingTheMeshInPlaceIsNoticed)
   EXPECT_TRUE(stats.hiddenBackFacesCulled);
 }
 
+TEST(HiddenBackFacesTest, ASmallImageTestsTheMeshOnItsSecondFrame)
+{
+  // Fewer pixels than triangles: the test waits for the mesh's second frame
+  // (a one-frame render does not earn it back), then culls; culling hidden
+  // back faces changes no pixel.
+  render::Mesh torus = MeshOf(sl::datasets::MakeTorus(1.0, 0.4, 48, 24)); // 2,304 triangles
+  const auto cam = Looking(Vec3d(0.5, 2.0, 3.0), Vec3d(0, 0, 0));
+  render::RenderOptions opt;
+  opt.width = 40;
+  opt.height = 30; // 1,200 pixels
+  sl::cpu::SoftwareRenderer renderer;
+  const render::Scene scene{ &torus, cam, sl::Lighting<double>(), sl::Material<double>() };
+  render::RenderStats stats;
+  const std::vector<float> first = renderer.Render(scene, opt, &stats).rgb;
+  EXPECT_FALSE(stats.hiddenBackFacesCulled);
+  const std::vector<float> second = renderer.Render(scene, opt, &stats).rgb;
+  EXPECT_TRUE(stats.hiddenBackFacesCulled);
+  EXPECT_GT(stats.culled, 0);
+  EXPECT_EQ(second, first);
+  // Another mesh in between starts over: its first frame is untested.
+  torus.points[0] += 0.01f;
+  renderer.Render(scene, opt, &stats);
+  EXPECT_FALSE(stats.hiddenBackFacesCulled);
+  renderer.Render(scene, opt, &stats);
+  EXPECT_TRUE(stats.hiddenBackFacesCulled);
+}
+
 TEST(HiddenBackFacesTest, TheMeshHashIsTheSameForAnyThreadsBehindIt)
 {
   // The closed-mesh cache is keyed on Mesh::ContentHash: its value must not

@@ -131,8 +131,11 @@ bool ClosedMeshCache::IsClosedOutward(const render::Mesh& mesh, uint64_t fingerp
 {
   if (!this->Known || fingerprint != this->Fingerprint)
   {
-    if (!mayTest)
+    const bool secondFrame = this->UntestedSeen && fingerprint == this->Untested;
+    if (!mayTest && !secondFrame)
     {
+      this->Untested = fingerprint;
+      this->UntestedSeen = true;
       return false;
     }
     this->Closed = IsClosedOutwardTriangleMesh(mesh);

@@ -29,15 +29,20 @@ class ClosedMeshCache
 public:
   /// `fingerprint`: the mesh's content hash (render::Mesh::ContentHash),
   /// the cache key, which the renderer computes once a frame for all its
-  /// caches. `mayTest`: whether the test may run if the answer is not
-  /// cached (it costs ~120 ns per triangle, once); without it an unknown
-  /// mesh is treated as open.
+  /// caches. `mayTest`: whether the test may run on a mesh's first frame
+  /// if the answer is not cached (it costs ~120 ns per triangle, once);
+  /// without it an unknown mesh is treated as open on that frame, and
+  /// tested on its second: a renderer that draws a mesh once (the CLI)
+  /// does not pay for a test that frame cannot earn back, one that redraws
+  /// it (the explorer, ParaView) pays once and culls from then on.
   bool IsClosedOutward(const render::Mesh& mesh, uint64_t fingerprint, bool mayTest);
 
 private:
-  uint64_t Fingerprint = 0;
+  uint64_t Fingerprint = 0; ///< the mesh the answer is for
   bool Known = false;
   bool Closed = false;
+  uint64_t Untested = 0; ///< a mesh drawn once without the test
+  bool UntestedSeen = false;
 };
 
 /// The test itself, without the cache.

@@ -129,18 +129,15 @@ bool IsClosedOutwardTriangleMesh(const render::Mesh& mesh)
 
 bool ClosedMeshCache::IsClosedOutward(const render::Mesh& mesh, uint64_t fingerprint, bool mayTest)
 {
-  if (!this->Known || fingerprint != this->Fingerprint)
+  if (this->Fingerprint != fingerprint)
   {
-    const bool secondFrame = this->UntestedSeen && fingerprint == this->Untested;
-    if (!mayTest && !secondFrame)
+    if (!mayTest && this->Untested != fingerprint) // not on the mesh's second frame
     {
       this->Untested = fingerprint;
-      this->UntestedSeen = true;
       return false;
     }
     this->Closed = IsClosedOutwardTriangleMesh(mesh);
     this->Fingerprint = fingerprint;
-    this->Known = true;
   }
   return this->Closed;
 }

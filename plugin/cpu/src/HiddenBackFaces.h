@@ -18,6 +18,7 @@
 #include "shadinglab/render/Scene.h"
 
 #include <cstdint>
+#include <optional>
 
 namespace shadinglab::cpu
 {
@@ -38,11 +39,9 @@ public:
   bool IsClosedOutward(const render::Mesh& mesh, uint64_t fingerprint, bool mayTest);
 
 private:
-  uint64_t Fingerprint = 0; ///< the mesh the answer is for
-  bool Known = false;
+  std::optional<uint64_t> Fingerprint; ///< the mesh the answer is for
   bool Closed = false;
-  uint64_t Untested = 0; ///< a mesh drawn once without the test
-  bool UntestedSeen = false;
+  std::optional<uint64_t> Untested; ///< a mesh drawn once without the test
 };
 
 /// The test itself, without the cache.

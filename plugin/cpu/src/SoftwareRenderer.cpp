@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 #include <thread>
 
@@ -155,8 +156,7 @@ private:
   RasterBuffers Buffers;
   ClosedMeshCache Closed;
   std::vector<float> ComputedNormals; ///< area-weighted, for a mesh without normals
-  uint64_t NormalsFingerprint = 0;     ///< the content hash they were made for
-  bool NormalsKnown = false;
+  std::optional<uint64_t> NormalsFor;  ///< the content hash they were made for
   std::vector<float> Rgb;
   std::vector<uint8_t> Covered;
   std::vector<uint16_t> Coverage;
@@ -234,14 +234,12 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh,
       // Made once per mesh, not per frame: kept while its arrays hash the
       // same (a redraw of a large mesh without normals otherwise paid
       // the whole normal pass every frame).
-      const uint64_t key = contentHash();
-      normalsCached = this->NormalsKnown && key == this->NormalsFingerprint &&
-        static_cast<int64_t>(this->ComputedNormals.size()) == 3 * nv;
+      // (The hash covers the arrays' sizes too.)
+      normalsCached = this->NormalsFor == contentHash();
       if (!normalsCached)
       {
         this->ComputedNormals = AreaWeightedNormals(mesh);
-        this->NormalsFingerprint = key;
-        this->NormalsKnown = true;
+        this->NormalsFor = contentHash();
       }
       F.NormalData = this->ComputedNormals.data();
       computedNormals = true;

@@ -442,7 +442,7 @@ void BM_ShadingLabGL(benchmark::State& state)
   const int mode = static_cast<int>(state.range(1));
   vtkNew<vtkShadingLabPolyDataMapper> mapper;
   mapper->SetInputData(scene.polydata);
-  mapper->SetShadingMode(mode);
+  mapper->SetSetting("mode", sl::render::ShadingModeName(static_cast<sl::render::ShadingMode>(mode)));
   sl::Material<double> material;
   material.model = static_cast<sl::ReflectanceModel>(state.range(2));
   material.shininess = 32;

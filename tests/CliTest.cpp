@@ -114,6 +114,19 @@ TEST(CliTest, BrdfVariantsDifferByFour)
   EXPECT_NEAR(ParseCsv(a.out, h)[0][3], 4.0 * ParseCsv(b.out, h)[0][3], 1e-8);
 }
 
+TEST(CliTest, LobeWeightsAreRelative)
+{
+  // One policy in every front end (shadinglab/render/Settings.h): weights
+  // are normalized to sum to 1 over the used lobes.
+  const auto a = RunCli("brdf --theta-l 0:80:20 --theta-v 30 --m 0.2,0.6 --w 0.1,0.3");
+  const auto b = RunCli("brdf --theta-l 0:80:20 --theta-v 30 --m 0.2,0.6 --w 0.25,0.75");
+  const auto c = RunCli("brdf --theta-l 0:80:20 --theta-v 30 --m 0.2,0.6 --w 0.5,0.5");
+  ASSERT_EQ(a.status, 0) << a.err;
+  ASSERT_EQ(b.status, 0) << b.err;
+  EXPECT_EQ(a.out, b.out);
+  EXPECT_NE(a.out, c.out);
+}
+
 TEST(CliTest, BadArgumentsExitTwoWithOneLineError)
 {
   const char* bad[] = {
@@ -125,7 +138,9 @@ TEST(CliTest, BadArgumentsExitTwoWithOneLineError)
     "brdf --theta-l nan",                         // not finite
     "brdf --theta-l 10 --kd 0.8 --ks 0.5",        // kd + ks > 1
     "brdf --theta-l 10 --m 0",                    // m = 0
-    "brdf --theta-l 10 --m 0.2,0.4 --w 0.2,0.2", // weights do not sum to 1
+    "brdf --theta-l 10 --m 0.2,0.4 --w 0,0",     // no weight at all
+    "brdf --theta-l 10 --m 0.2,0.4 --w 0.5",      // one weight for two lobes
+    "brdf --theta-l 10 --m 0.2,0.4 --w -1,2",     // a negative weight
     "brdf --theta-l 10 --eta -1",                 // eta < 0
     "brdf --theta-l 10 --eta 1,2",                // two channels
     "brdf --theta-l 10 --term X",                 // unknown term

@@ -558,7 +558,9 @@ TEST(GpuParityGLTest, MultiblockInput)
   blocks->SetBlock(1, b);
   vtkNew<vtkShadingLabCompositePolyDataMapper> mapper;
   mapper->SetInputDataObject(blocks);
-  mapper->SetShadingMode(vtkShadingLabPolyDataMapper::GOURAUD);
+  sl::render::Settings settings = mapper->GetSettings();
+  settings.render.mode = sl::render::ShadingMode::Gouraud;
+  mapper->SetSettings(settings);
   mapper->SetMaterial(BlinnPhong());
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);
@@ -629,7 +631,7 @@ TEST(GpuParityGLTest, ShadersRebuildOnlyForVariantChanges)
   window->Render();
   EXPECT_EQ(mapper->GetShaderBuildCount(), first);
   EXPECT_GT(mapper->GetUniformUploadCount(), uploads);
-  mapper->SetShadingMode(vtkShadingLabPolyDataMapper::GOURAUD); // variant
+  mapper->SetSetting("mode", "gouraud"); // variant
   window->Render();
   const int afterMode = mapper->GetShaderBuildCount();
   EXPECT_GT(afterMode, first);
@@ -644,7 +646,7 @@ TEST(GpuParityGLTest, ShadersRebuildOnlyForVariantChanges)
   window->Render();
   const int afterLight = mapper->GetShaderBuildCount();
   EXPECT_GT(afterLight, afterSpecular);
-  mapper->PerspectiveCorrectOff(); // interpolation space: variant
+  mapper->SetSetting("interp", "screen"); // interpolation space: variant
   window->Render();
   EXPECT_GT(mapper->GetShaderBuildCount(), afterLight);
   const int settled = mapper->GetShaderBuildCount();
@@ -666,8 +668,8 @@ TEST(GpuParityGLTest, AutoChoiceFollowsTheLightsAndTheCamera)
   vtkNew<vtkShadingLabPolyDataMapper> mapper;
   mapper->SetInputData(sphere);
   mapper->SetMaterial(BlinnPhong());
-  mapper->SetShadingMode(vtkShadingLabPolyDataMapper::AUTO);
-  mapper->SetMaxError(1.0);
+  mapper->SetSetting("mode", "auto");
+  mapper->SetSetting("max-error", "1");
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);
   vtkNew<vtkRenderer> ren;

@@ -65,8 +65,10 @@ void GpuPanel::Configure()
   if (this->SpecValue.autoMode)
   {
     // The mapper chooses at every render, from the camera, size and lights.
-    this->Mapper->SetShadingMode(vtkShadingLabPolyDataMapper::AUTO);
-    this->Mapper->SetMaxError(this->SpecValue.maxError);
+    render::Settings settings = this->Mapper->GetSettings();
+    settings.autoMode = true;
+    settings.maxError = this->SpecValue.maxError;
+    this->Mapper->SetSettings(settings);
   }
 }
 

@@ -32,7 +32,7 @@ int main(int argc, char* argv[])
 
   vtkNew<vtkShadingLabPolyDataMapper> mapper;
   mapper->SetInputConnection(sphere->GetOutputPort());
-  mapper->SetShadingMode(vtkShadingLabPolyDataMapper::GOURAUD);
+  mapper->SetSetting("mode", "gouraud"); // any key of shadinglab/render/Settings.h
   shadinglab::Material<double> material; // Blinn-Phong, kd 0.7, ks 0.3, n 32
   material.shininess = 40;
   mapper->SetMaterial(material);

@@ -4,12 +4,23 @@
 #include "CliArgs.h"
 
 #include "shadinglab/model/Shading.h"
+#include "shadinglab/render/Settings.h"
 
+#include <map>
 #include <string>
 #include <vector>
 
 namespace shadinglab::cli
 {
+
+/// Appends the settings table's flags of `group` shown on the command line
+/// to the valued options and the flags (value-less) an Arguments accepts.
+void AddSettingFlags(std::vector<std::string>& valued, std::vector<std::string>& flags,
+  render::SettingGroup group);
+/// Applies every --KEY of `group` given (or `implied`, key -> text) to
+/// `settings`, in table order. Throws UsageError with the table's message.
+void ApplySettingArguments(const Arguments& args, render::SettingGroup group,
+  render::Settings& settings, const std::map<std::string, std::string>& implied = {});
 
 /// Options every material-taking command accepts (see MaterialHelp()).
 const std::vector<std::string>& MaterialOptions();
@@ -20,6 +31,10 @@ std::string MaterialHelp();
 /// specular (kd 0, ks 1) and render from Blinn-Phong (kd 0.7, ks 0.3).
 /// Throws UsageError with the validation message.
 Material<double> MaterialFromArguments(const Arguments& args, bool forRender = false);
+/// The same into `settings` (its preset too); `impliedModel` is a --model
+/// implied by another flag (--mode cook-torrance).
+void ApplyMaterialArguments(const Arguments& args, bool forRender, const std::string& impliedModel,
+  render::Settings& settings);
 
 int RunBrdf(int argc, char** argv);
 int RunRender(int argc, char** argv);

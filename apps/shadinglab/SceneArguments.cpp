@@ -10,11 +10,13 @@
 #include "PolyDataMesh.h"
 #include "shadinglab/cpu/SoftwareRenderer.h"
 #include "shadinglab/render/AutoMode.h"
+#include "shadinglab/model/Materials.h"
 
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
 #include <cmath>
+#include <map>
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
@@ -22,43 +24,33 @@
 namespace shadinglab::cli
 {
 
-const char* const kSceneOptionsHelp =
-  "  --mode M            where the model is evaluated: flat | gouraud | phong | fast-phong\n"
-  "                      (default phong); cook-torrance = phong with --model cook-torrance;\n"
-  "                      auto = the cheapest of flat, gouraud, phong predicted to keep the\n"
-  "                      mean error under --max-error E (1/255; docs/model.md eq. 4.1-4.5)\n"
-      "  --backend B         cpu | gpu | auto (auto: gpu when an X display with OpenGL >= 3.2\n"
-  "                      exists, cpu otherwise, said on stderr)\n"
-  "  --interp I          perspective (perspective-correct, default) | screen (linear in\n"
-  "                      screen space, as the lecture: shows perspective distortion)\n"
-  "  --polygons P        triangulate (default) | direct (scan-convert polygons as such:\n"
-  "                      shows orientation dependence)\n"
-  "  --azimuth DEG --elevation DEG --zoom F   camera about the fitted view\n"
-  "  --parallel          parallel projection\n"
-  "  --camera-position X,Y,Z --focal-point X,Y,Z --view-up X,Y,Z --view-angle DEG\n"
-  "  --light dir:X,Y,Z | point:X,Y,Z | spot:X,Y,Z:DX,DY,DZ:ANGLE[:EXP]\n"
-  "                      (repeatable; world coordinates; dir points towards the light;\n"
-  "                      default: one key light above-left of the camera)\n"
-  "  --light-intensity I  intensity of every light (default 1)\n"
-  "  --ssaa N            supersampling N x N (default 1)\n"
-  "  --threads N         worker threads (default: all cores)\n"
-  "  --cull              cull back faces\n"
-  "  --fast-phong-as-is  fast-phong with its quadratics even on triangles too small\n"
-  "                      for them to pay (cpu; default: exact Phong there, said on stderr)\n"
-  "  --display D         clamp (default) | srgb\n"
-  "  --expansion E       fast-phong Taylor point: vertex (the provoking vertex, default;\n"
-  "                      both backends) | centroid (lower error; cpu only)\n"
-  "  --fast-phong-max-spread DEG  fast-phong evaluates a pixel exactly where its normal is\n"
-  "                      more than DEG from the expansion point's (default 30; 180 shows\n"
-  "                      the raw Taylor quadratic everywhere, artifacts included)\n"
-    "  --normals W         recompute vertex normals: uniform | area | angle | max\n"
-  "  --feature-angle DEG crease angle for --normals / --subdivide (default 30)\n"
-  "  --subdivide N [--scheme loop|catmull-clark]   OpenSubdiv refinement, limit normals\n"
-  "  --weld [TOL] --fix-t-junctions   repair as 'shadinglab normals'\n"
-  "\n"
-  "fast-phong expands N.L, N.H (blinn-phong) and N.V (phong: R.V = 2 N.L N.V - L.V) as\n"
-  "quadratics; it has no cook-torrance form, and always interpolates in screen space.\n"
-  "\n";
+std::string SceneOptionsHelp()
+{
+  return "Render options (from the settings table, shadinglab/render/Settings.h):\n" +
+    render::CliHelp(render::SettingGroup::Render) +
+    "  --mode cook-torrance is phong with --model cook-torrance; --mode auto needs --max-error.\n"
+    "  fast-phong expands N.L, N.H (blinn-phong) and N.V (phong: R.V = 2 N.L N.V - L.V) as\n"
+    "  quadratics; it has no cook-torrance or lommel-seeliger form, and always interpolates in\n"
+    "  screen space.\n"
+    "\n"
+    "Scene options:\n"
+    "  --backend B                 cpu | gpu | auto (auto: gpu when an X display with OpenGL >= 3.2\n"
+    "                              exists, cpu otherwise, said on stderr)\n"
+    "  --azimuth DEG --elevation DEG --zoom F   camera about the fitted view\n"
+    "  --parallel                parallel projection\n"
+    "  --camera-position X,Y,Z --focal-point X,Y,Z --view-up X,Y,Z --view-angle DEG\n"
+    "  --light dir:X,Y,Z | point:X,Y,Z | spot:X,Y,Z:DX,DY,DZ:ANGLE[:EXP]\n"
+    "                              (repeatable; world coordinates; dir points towards the light;\n"
+    "                              default: one key light above-left of the camera)\n" +
+    render::CliHelp(render::SettingGroup::Lights) +
+    "\n"
+    "Mesh preparation:\n"
+    "  --normals W                 recompute vertex normals: uniform | area | angle | max\n"
+    "  --feature-angle DEG         crease angle for --normals / --subdivide (default 30)\n"
+    "  --subdivide N [--scheme loop|catmull-clark]   OpenSubdiv refinement, limit normals\n"
+    "  --weld [TOL] --fix-t-junctions   repair as 'shadinglab normals'\n"
+    "\n";
+}
 
 namespace
 {
@@ -78,22 +70,23 @@ Vec3<double> ParseVector(const std::string& text, const std::string& what)
 std::unique_ptr<SceneArguments> SceneFromArguments(int argc, char** argv, const std::string& help,
   const std::vector<std::string>& extraValued)
 {
-  std::vector<std::string> valued = { "backend", "mode", "max-error", "size", "out", "interp", "polygons",
-    "azimuth", "elevation", "zoom", "camera-position", "focal-point", "view-up", "view-angle",
-    "light-intensity", "ssaa", "threads", "display", "expansion", "fast-phong-max-spread",
-    "normals", "feature-angle", "subdivide", "scheme" };
-  for (const auto& o : MaterialOptions())
+  std::vector<std::string> valued = { "backend", "size", "out", "azimuth", "elevation", "zoom",
+    "camera-position", "focal-point", "view-up", "view-angle", "normals", "feature-angle",
+    "subdivide", "scheme" };
+  std::vector<std::string> flags = { "help", "stats", "parallel", "fix-t-junctions" };
+  for (auto group : { render::SettingGroup::Render, render::SettingGroup::Lights,
+         render::SettingGroup::Material })
   {
-    valued.push_back(o);
+    AddSettingFlags(valued, flags, group);
   }
   valued.insert(valued.end(), extraValued.begin(), extraValued.end());
-  auto result = std::make_unique<SceneArguments>(Arguments(
-    argc, argv, valued, { "help", "stats", "cull", "parallel", "fix-t-junctions", "fast-phong-as-is" }, { "light" }, { "weld" }));
+  auto result =
+    std::make_unique<SceneArguments>(Arguments(argc, argv, valued, flags, { "light" }, { "weld" }));
   SceneArguments& scene = *result;
   const Arguments& args = scene.args;
   if (args.Has("help"))
   {
-    std::cout << help << kSceneOptionsHelp << MaterialHelp();
+    std::cout << help << SceneOptionsHelp() << MaterialHelp();
     scene.helpShown = true;
     return result;
   }
@@ -103,37 +96,30 @@ std::unique_ptr<SceneArguments> SceneFromArguments(int argc, char** argv, const 
   }
   const std::string input = args.Positionals()[0];
 
-  render::RenderOptions& options = scene.options;
-  // --mode cook-torrance: the documented shorthand for per-pixel (phong)
-  // interpolation of a Cook-Torrance material.
-  const std::string modeName = args.Get("mode", "phong");
-  const bool cookTorranceShorthand = modeName == "cook-torrance";
-  const bool autoMode = modeName == "auto";
-  double maxError = 0;
-  if (autoMode)
+  // Every render setting from the table; --mode cook-torrance is the
+  // documented shorthand for phong with a Cook-Torrance material.
+  render::Settings& settings = scene.settings;
+  const bool cookTorranceShorthand = args.Get("mode") == "cook-torrance";
+  if (cookTorranceShorthand && args.Has("model") && args.Get("model") != "cook-torrance")
   {
-    if (!args.Has("max-error"))
-    {
-      throw UsageError("--mode auto needs --max-error E (the mean error allowed, in 1/255)");
-    }
-    maxError = ParseDouble(args.Get("max-error"), "--max-error");
-    // Below 0.01/255 no mode is predicted to comply (the fit's floor);
-    // above 255 every mode does.
-    if (!(maxError >= 0.01 && maxError <= 255))
-    {
-      throw UsageError("--max-error must be in [0.01, 255] (1/255 units)");
-    }
-    options.mode = render::ShadingMode::Phong; // until the choice below
+    throw UsageError("--mode cook-torrance contradicts --model " + args.Get("model"));
   }
-  else if (args.Has("max-error"))
+  std::map<std::string, std::string> implied;
+  if (cookTorranceShorthand)
+  {
+    implied["mode"] = "phong";
+  }
+  ApplySettingArguments(args, render::SettingGroup::Render, settings, implied);
+  ApplySettingArguments(args, render::SettingGroup::Lights, settings);
+  if (settings.autoMode && !args.Has("max-error"))
+  {
+    throw UsageError("--mode auto needs --max-error E (the mean error allowed, in 1/255)");
+  }
+  if (!settings.autoMode && args.Has("max-error"))
   {
     throw UsageError("--max-error is for --mode auto");
   }
-  if (!autoMode && !cookTorranceShorthand && !render::ParseShadingMode(modeName, options.mode))
-  {
-    throw UsageError("unknown --mode '" + modeName + "' (expected " +
-      render::ShadingModeChoices() + ", or cook-torrance for phong with --model cook-torrance)");
-  }
+  render::RenderOptions& options = settings.render;
   {
     const std::string size = args.Get("size", "1024x768");
     const auto x = size.find('x');
@@ -150,108 +136,23 @@ std::unique_ptr<SceneArguments> SceneFromArguments(int argc, char** argv, const 
     options.width = static_cast<int>(w);
     options.height = static_cast<int>(h);
   }
-  const std::string interp = args.Get("interp", "perspective");
-  if (!render::ParseInterpolationSpace(interp, options.interpolation))
-  {
-    throw UsageError("unknown --interp '" + interp + "' (expected perspective or screen)");
-  }
-  const std::string polygons = args.Get("polygons", "triangulate");
-  if (polygons == "triangulate")
-  {
-    options.polygons = render::PolygonHandling::Triangulate;
-  }
-  else if (polygons == "direct")
-  {
-    options.polygons = render::PolygonHandling::Direct;
-  }
-  else
-  {
-    throw UsageError("unknown --polygons '" + polygons + "' (expected triangulate or direct)");
-  }
-  const std::string expansion = args.Get("expansion", "vertex");
-  if (expansion == "centroid" || expansion == "vertex")
-  {
-    options.expansion = expansion == "vertex" ? ExpansionPoint::Vertex : ExpansionPoint::Centroid;
-  }
-  else
-  {
-    throw UsageError("unknown --expansion '" + expansion + "' (expected centroid or vertex)");
-  }
-  const std::string displayName = args.Get("display", "clamp");
-  render::DisplayTransform& display = scene.display;
-  if (displayName == "srgb")
-  {
-    display = render::DisplayTransform::SRGB;
-  }
-  else if (displayName != "clamp")
-  {
-    throw UsageError("unknown --display '" + displayName + "' (expected clamp or srgb)");
-  }
-  options.ssaa = args.GetInt("ssaa", 1);
-  if (options.ssaa < 1 || options.ssaa > render::kMaxSupersampling)
-  {
-    throw UsageError("--ssaa must be 1.." + std::to_string(render::kMaxSupersampling));
-  }
-  options.threads = args.GetInt("threads", 0);
-  if (options.threads < 0 || options.threads > 256)
-  {
-    throw UsageError("--threads must be 0..256");
-  }
-  options.cullBackFaces = args.Has("cull");
-  options.fastPhongFallback = !args.Has("fast-phong-as-is");
-  options.fastPhongMaxSpread = args.GetDouble("fast-phong-max-spread", 30.0);
-  if (!(options.fastPhongMaxSpread >= 0 && options.fastPhongMaxSpread <= 180))
-  {
-    throw UsageError("--fast-phong-max-spread must be in [0, 180] degrees");
-  }
   const double zoom = args.GetDouble("zoom", 1.0);
   if (!(zoom > 0 && zoom <= 1e3))
   {
     throw UsageError("--zoom must be in (0, 1000]");
   }
-  const double lightIntensity = args.GetDouble("light-intensity", 1.0);
-  if (!(lightIntensity >= 0 && lightIntensity <= 1e6))
+  const double lightIntensity = settings.lightIntensity;
+  ApplyMaterialArguments(args, true, cookTorranceShorthand ? "cook-torrance" : "", settings);
+  const Material<double>& material = settings.material;
+  if (!settings.autoMode && !render::SupportsModel(options.mode, material.model))
   {
-    throw UsageError("--light-intensity must be in [0, 1e6]");
+    throw UsageError(std::string("fast-phong evaluates (N.L), (N.H)^n and (R.V)^n quadratics: use "
+                                 "a lambert, phong or blinn-phong material (or another --mode for ") +
+      ReflectanceModelName(material.model) + ")");
   }
-  Material<double>& material = scene.scene.material;
-  if (cookTorranceShorthand)
-  {
-    if (args.Has("model") && args.Get("model") != "cook-torrance")
-    {
-      throw UsageError("--mode cook-torrance contradicts --model " + args.Get("model"));
-    }
-    // The shorthand: phong interpolation with a Cook-Torrance material,
-    // validated like any other (MaterialFromArguments with that model).
-    std::vector<std::string> extended(argv, argv + argc);
-    extended.push_back("--model");
-    extended.push_back("cook-torrance");
-    std::vector<char*> raw;
-    for (auto& a : extended)
-    {
-      raw.push_back(a.data());
-    }
-    if (!args.Has("model"))
-    {
-      const Arguments withModel(static_cast<int>(raw.size()), raw.data(), valued,
-        { "help", "stats", "cull", "parallel", "fix-t-junctions", "fast-phong-as-is" }, { "light" }, { "weld" });
-      material = MaterialFromArguments(withModel, true);
-    }
-    else
-    {
-      material = MaterialFromArguments(args, true);
-    }
-    options.mode = render::ShadingMode::Phong;
-  }
-  else
-  {
-    material = MaterialFromArguments(args, true);
-  }
-  if (!render::SupportsModel(options.mode, material.model))
-  {
-    throw UsageError("fast-phong evaluates (N.L), (N.H)^n and (R.V)^n quadratics: use a lambert, "
-                     "phong or blinn-phong material (or another --mode for cook-torrance)");
-  }
+  scene.scene.material = material;
+  scene.options = options;
+  scene.display = settings.display;
 
   const std::string& backend = scene.backend = args.Get("backend", "auto");
   if (backend != "cpu" && backend != "auto" && backend != "gpu")
@@ -431,14 +332,15 @@ std::unique_ptr<SceneArguments> SceneFromArguments(int argc, char** argv, const 
   }
   lighting.ambientIntensity = Vec3<double>(1, 1, 1);
 
-  if (autoMode)
+  if (settings.autoMode)
   {
     // The renderers' normals when the mesh has none: area-weighted.
     const std::vector<float> normals =
       result->mesh.normals.empty() ? cpu::AreaWeightedNormals(result->mesh) : result->mesh.normals;
     const render::ModeChoice choice = render::ChooseMode(result->mesh, normals,
-      scene.scene.camera, lighting, scene.scene.material, options.width, options.height, maxError);
-    options.mode = choice.mode;
+      scene.scene.camera, lighting, scene.scene.material, options.width, options.height,
+      settings.maxError);
+    scene.options.mode = choice.mode;
     result->autoChoice = choice.why;
   }
   result->prepareMs = preparing.Milliseconds();

@@ -7,6 +7,7 @@
 #include "CliArgs.h"
 
 #include "shadinglab/render/Renderer.h"
+#include "shadinglab/render/Settings.h"
 
 #include <memory>
 #include <string>
@@ -28,7 +29,8 @@ struct SceneArguments
   render::Mesh mesh;    ///< in `frame`'s local coordinates
   render::WorldFrame frame;
   render::Scene scene; ///< scene.mesh points at `mesh`
-  render::RenderOptions options;
+  render::Settings settings; ///< everything the settings table's flags set
+  render::RenderOptions options; ///< settings.render, auto's choice made
   render::DisplayTransform display = render::DisplayTransform::Clamp;
   std::string notices; ///< said after success (errors stay one line)
   std::string autoChoice; ///< --mode auto: what was chosen and why (--stats)
@@ -37,7 +39,7 @@ struct SceneArguments
 };
 
 /// The options 'render' and 'compare' accept, in their --help.
-extern const char* const kSceneOptionsHelp;
+std::string SceneOptionsHelp();
 
 /**
  * Parses argv (after the command name). `extraValued` are further valued

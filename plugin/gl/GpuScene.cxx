@@ -21,10 +21,11 @@ namespace shadinglab::gl
 void ConfigureActor(const render::RenderOptions& options, const Material<double>& material,
   vtkShadingLabPolyDataMapper* mapper, vtkActor* actor)
 {
-  mapper->SetShadingMode(static_cast<int>(options.mode));
-  mapper->SetPerspectiveCorrect(options.interpolation == render::InterpolationSpace::Perspective);
-  mapper->SetMaterial(material);
-  mapper->SetFastPhongMaxSpread(options.fastPhongMaxSpread);
+  render::Settings settings = mapper->GetSettings();
+  settings.render = options;
+  settings.autoMode = false;
+  settings.material = material;
+  mapper->SetSettings(settings);
   mapper->ScalarVisibilityOn();
   mapper->SetColorModeToDirectScalars();
   vtkProperty* prop = actor->GetProperty();

@@ -16,10 +16,20 @@
 
 vtkStandardNewMacro(vtkShadingLabCompositePolyDataMapper);
 
+void vtkShadingLabCompositePolyDataMapper::SetSettings(const shadinglab::render::Settings& settings)
+{
+  if (!shadinglab::render::SameSettings(this->Settings, settings))
+  {
+    this->Settings = settings;
+    this->Modified();
+  }
+}
+
 void vtkShadingLabCompositePolyDataMapper::SetMaterial(const shadinglab::Material<double>& material)
 {
-  this->Material = material;
-  this->Modified();
+  shadinglab::render::Settings settings = this->Settings;
+  settings.material = material;
+  this->SetSettings(settings);
 }
 
 std::string vtkShadingLabCompositePolyDataMapper::GetAutoChoices()
@@ -47,21 +57,9 @@ vtkPolyDataMapper* vtkShadingLabCompositePolyDataMapper::MakeAMapper()
     this->BuildSeen = this->InternalMappersBuildTime.GetMTime();
   }
   auto* mapper = vtkShadingLabPolyDataMapper::New();
-  this->PassSettings(mapper);
+  mapper->SetSettings(this->Settings);
   this->BlockMappers.emplace_back(mapper);
   return mapper;
-}
-
-void vtkShadingLabCompositePolyDataMapper::PassSettings(vtkShadingLabPolyDataMapper* mapper)
-{
-  mapper->SetShadingMode(this->ShadingMode);
-  mapper->SetMaxError(this->MaxError);
-  mapper->SetPerspectiveCorrect(this->PerspectiveCorrect);
-  mapper->SetFastPhongMaxSpread(this->FastPhongMaxSpread);
-  mapper->SetNormalWeighting(this->NormalWeighting);
-  mapper->SetFeatureAngle(this->FeatureAngle);
-  mapper->SetRecomputeNormals(this->RecomputeNormals);
-  mapper->SetMaterial(this->Material);
 }
 
 void vtkShadingLabCompositePolyDataMapper::SetBlockAttributes(
@@ -160,7 +158,7 @@ void vtkShadingLabCompositePolyDataMapper::Render(vtkRenderer* ren, vtkActor* ac
     {
       continue;
     }
-    this->PassSettings(sm); // in step with this mapper's settings
+    sm->SetSettings(this->Settings); // in step with this mapper's settings
     if (sm->GetClippingPlanes() != this->ClippingPlanes)
     {
       sm->SetClippingPlanes(this->ClippingPlanes);
@@ -242,7 +240,13 @@ int vtkShadingLabCompositePolyDataMapper::GetShaderBuildCount()
 void vtkShadingLabCompositePolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "ShadingMode: " << this->ShadingMode << "\n";
-  os << indent << "MaxError: " << this->MaxError << "\n";
-  os << indent << "PerspectiveCorrect: " << this->PerspectiveCorrect << "\n";
+  const auto& settings = this->Settings;
+  for (const auto& row : shadinglab::render::SettingsTable())
+  {
+    if (row.frontEnds & shadinglab::render::kMapper)
+    {
+      os << indent << row.property << ": "
+         << shadinglab::render::FormatSetting(row, row.get(settings)) << "\n";
+    }
+  }
 }

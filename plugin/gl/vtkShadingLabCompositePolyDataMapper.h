@@ -36,29 +36,15 @@ public:
   vtkTypeMacro(vtkShadingLabCompositePolyDataMapper, vtkCompositePolyDataMapper);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /// vtkShadingLabPolyDataMapper::Modes (default PHONG); with AUTO each
-  /// block chooses its own mode (per object and view).
-  vtkSetClampMacro(ShadingMode, int, vtkShadingLabPolyDataMapper::FLAT,
-    vtkShadingLabPolyDataMapper::AUTO);
-  vtkGetMacro(ShadingMode, int);
-  /// AUTO's error budget (vtkShadingLabPolyDataMapper::SetMaxError).
-  vtkSetClampMacro(MaxError, double, 0.01, 255.0);
-  vtkGetMacro(MaxError, double);
+  ///@{
+  /// The block mappers' settings (vtkShadingLabPolyDataMapper::SetSettings);
+  /// with auto each block chooses its own mode (per object and view).
+  void SetSettings(const shadinglab::render::Settings& settings);
+  const shadinglab::render::Settings& GetSettings() const { return this->Settings; }
+  void SetMaterial(const shadinglab::Material<double>& material);
+  ///@}
   /// AUTO: each drawn block's choice, one line per block ("" otherwise).
   std::string GetAutoChoices();
-  vtkSetMacro(PerspectiveCorrect, bool);
-  vtkGetMacro(PerspectiveCorrect, bool);
-  /// vtkShadingLabPolyDataMapper's normal settings (see there).
-  vtkSetClampMacro(NormalWeighting, int, 0, 3);
-  vtkGetMacro(NormalWeighting, int);
-  vtkSetClampMacro(FeatureAngle, double, 0.0, 180.0);
-  vtkGetMacro(FeatureAngle, double);
-  vtkSetMacro(RecomputeNormals, bool);
-  vtkGetMacro(RecomputeNormals, bool);
-  /// vtkShadingLabPolyDataMapper::SetFastPhongMaxSpread (default 30 degrees).
-  vtkSetClampMacro(FastPhongMaxSpread, double, 0.0, 180.0);
-  vtkGetMacro(FastPhongMaxSpread, double);
-  void SetMaterial(const shadinglab::Material<double>& material);
 
   /// Sum of the block mappers' shader builds.
   int GetShaderBuildCount();
@@ -77,14 +63,7 @@ protected:
   vtkPolyDataMapper* MakeAMapper() override;
   void Render(vtkRenderer* ren, vtkActor* act) override;
 
-  int ShadingMode = vtkShadingLabPolyDataMapper::PHONG;
-  double MaxError = 1.0;
-  bool PerspectiveCorrect = true;
-  double FastPhongMaxSpread = 30.0;
-  int NormalWeighting = 1;
-  double FeatureAngle = 180.0;
-  bool RecomputeNormals = false;
-  shadinglab::Material<double> Material;
+  shadinglab::render::Settings Settings;
   /// The block mappers of the last build, in leaf order (the superclass
   /// owns them; weak here).
   std::vector<vtkWeakPointer<vtkShadingLabPolyDataMapper>> BlockMappers;
@@ -106,9 +85,6 @@ protected:
   static bool DrawnTranslucent(
     const BlockLook& look, vtkShadingLabPolyDataMapper* block, double actorOpacity);
   bool HasBlocks(bool translucent);
-  /// This mapper's mode, interpolation, normal settings and material onto
-  /// a block mapper.
-  void PassSettings(vtkShadingLabPolyDataMapper* mapper);
   void BuildIfNeeded();
 
 private:

@@ -5,6 +5,7 @@
 #include "PolyDataMesh.h"
 #include "VertexNormals.h"
 #include "VtkCamera.h"
+#include "VtkLights.h"
 #include "vtkWeightedPolyDataNormals.h"
 #include "shadinglab/model/Materials.h"
 #include "shadinglab/render/AutoMode.h"
@@ -45,7 +46,7 @@ namespace sl = shadinglab;
 
 struct vtkShadingLabPolyDataMapper::Internals
 {
-  sl::Material<double> Material;
+  sl::render::Settings Settings;
   // Input prepared for the mode: normals stripped (flat) or computed.
   vtkSmartPointer<vtkPolyData> Prepared;
   vtkMTimeType PreparedFrom = 0;
@@ -83,30 +84,71 @@ static_assert(vtkShadingLabPolyDataMapper::FLAT == static_cast<int>(shadinglab::
 vtkShadingLabPolyDataMapper::vtkShadingLabPolyDataMapper()
   : Internal(new Internals)
 {
-  this->Internal->Material.model = sl::ReflectanceModel::BlinnPhong;
 }
 
 vtkShadingLabPolyDataMapper::~vtkShadingLabPolyDataMapper() = default;
 
-void vtkShadingLabPolyDataMapper::SetMaterial(const sl::Material<double>& material)
+namespace
 {
-  // Only a variant change needs new shaders: mark the mapper modified then.
-  // Other changes reach the GPU through the uniform comparison.
-  const sl::Material<double> old = this->Internal->Material;
-  this->Internal->Material = material;
-  auto key = [](const sl::Material<double>& m) {
-    return std::to_string(static_cast<int>(m.model)) + "/" + std::to_string(m.ks > 0) + "/" +
-      std::to_string(m.lobeCount) + "/" + std::to_string(m.IsConductor());
-  };
-  if (key(old) != key(material))
+/// What the shaders are built from (Variant): a change needs new shaders.
+std::string VariantKey(const sl::render::Settings& s)
+{
+  const sl::Material<double>& m = s.material;
+  return std::to_string(static_cast<int>(m.model)) + "/" + std::to_string(m.ks > 0) + "/" +
+    std::to_string(m.lobeCount) + "/" + std::to_string(m.IsConductor()) + "/" +
+    std::to_string(s.autoMode) + "/" + std::to_string(static_cast<int>(s.render.mode)) + "/" +
+    std::to_string(static_cast<int>(s.render.interpolation));
+}
+} // namespace
+
+void vtkShadingLabPolyDataMapper::SetSettings(const sl::render::Settings& settings)
+{
+  // A variant change needs new shaders, a change of the normals or of the
+  // budget a new preparation or choice: mark the mapper modified then. The
+  // other changes reach the GPU through the uniform comparison.
+  sl::render::Settings& current = this->Internal->Settings;
+  const bool modified = VariantKey(current) != VariantKey(settings) ||
+    current.maxError != settings.maxError ||
+    current.normals.weighting != settings.normals.weighting ||
+    current.normals.featureAngle != settings.normals.featureAngle ||
+    current.normals.recompute != settings.normals.recompute;
+  current = settings;
+  if (modified)
   {
     this->Modified();
   }
 }
 
+const sl::render::Settings& vtkShadingLabPolyDataMapper::GetSettings() const
+{
+  return this->Internal->Settings;
+}
+
+bool vtkShadingLabPolyDataMapper::SetSetting(const char* key, const char* value)
+{
+  sl::render::Settings settings = this->Internal->Settings;
+  const std::string problem =
+    sl::render::ApplySettingText(settings, key ? key : "", value ? value : "");
+  if (!problem.empty())
+  {
+    vtkErrorMacro(<< problem);
+    return false;
+  }
+  sl::render::NormalizeLobeWeights(settings.material);
+  this->SetSettings(settings);
+  return true;
+}
+
+void vtkShadingLabPolyDataMapper::SetMaterial(const sl::Material<double>& material)
+{
+  sl::render::Settings settings = this->Internal->Settings;
+  settings.material = material;
+  this->SetSettings(settings);
+}
+
 const sl::Material<double>& vtkShadingLabPolyDataMapper::GetMaterial() const
 {
-  return this->Internal->Material;
+  return this->Internal->Settings.material;
 }
 
 void vtkShadingLabPolyDataMapper::SetBlockOverrides(const double* color, double opacity)
@@ -145,20 +187,21 @@ void vtkShadingLabPolyDataMapper::SetPropertyShaderParameters(
 
 int vtkShadingLabPolyDataMapper::GetDrawnMode() const
 {
-  return this->ShadingMode == AUTO ? this->Internal->Drawn : this->ShadingMode;
+  const sl::render::Settings& s = this->Internal->Settings;
+  return s.autoMode ? this->Internal->Drawn : static_cast<int>(s.render.mode);
 }
 
 const std::string& vtkShadingLabPolyDataMapper::GetAutoChoice() const
 {
   static const std::string none;
-  return this->ShadingMode == AUTO ? this->Internal->AutoChoice : none;
+  return this->Internal->Settings.autoMode ? this->Internal->AutoChoice : none;
 }
 
 int vtkShadingLabPolyDataMapper::EffectiveMode() const
 {
   const int drawn = this->GetDrawnMode();
   const auto mode = static_cast<sl::render::ShadingMode>(drawn);
-  return sl::render::SupportsModel(mode, this->Internal->Material.model) ? drawn : PHONG;
+  return sl::render::SupportsModel(mode, this->Internal->Settings.material.model) ? drawn : PHONG;
 }
 
 void vtkShadingLabPolyDataMapper::ChooseAutoMode(vtkRenderer* ren, vtkPolyData* input)
@@ -172,7 +215,7 @@ void vtkShadingLabPolyDataMapper::ChooseAutoMode(vtkRenderer* ren, vtkPolyData* 
     return;
   }
   if (in.AutoInput != input || in.AutoFrom != input->GetMTime() ||
-    in.AutoWeighting != this->NormalWeighting)
+    in.AutoWeighting != in.Settings.normals.weighting)
   {
     in.AutoMesh = sl::render::MeshFromPolyData(input, in.AutoFrame);
     in.AutoNormals = in.AutoMesh.normals;
@@ -185,18 +228,18 @@ void vtkShadingLabPolyDataMapper::ChooseAutoMode(vtkRenderer* ren, vtkPolyData* 
       sl::mesh::FlatPolygonsFromPolyData(input, polygons);
       std::vector<double> normals;
       sl::mesh::ComputeVertexNormalsNoSplit(
-        polygons, static_cast<sl::mesh::NormalWeighting>(this->NormalWeighting), normals);
+        polygons, static_cast<sl::mesh::NormalWeighting>(in.Settings.normals.weighting), normals);
       in.AutoNormals.assign(normals.begin(), normals.end());
     }
     in.AutoInput = input;
     in.AutoFrom = input->GetMTime();
-    in.AutoWeighting = this->NormalWeighting;
+    in.AutoWeighting = in.Settings.normals.weighting;
   }
   std::vector<double> key = { static_cast<double>(reinterpret_cast<uintptr_t>(input)),
     static_cast<double>(input->GetMTime()), static_cast<double>(this->GetMTime()),
     static_cast<double>(ren->GetActiveCamera()->GetMTime()),
     static_cast<double>(ren->GetSize()[0]), static_cast<double>(ren->GetSize()[1]),
-    this->MaxError };
+    in.Settings.maxError, in.Settings.lightIntensity };
   {
     vtkCollectionSimpleIterator lit;
     ren->GetLights()->InitTraversal(lit);
@@ -213,55 +256,22 @@ void vtkShadingLabPolyDataMapper::ChooseAutoMode(vtkRenderer* ren, vtkPolyData* 
   in.AutoKey = key;
   sl::render::Camera camera = sl::render::CameraFromVtk(ren->GetActiveCamera());
   sl::render::ToLocal(in.AutoFrame, camera);
-  // The lights as drawn, in the world (I_L = intensity x diffuse colour over
-  // the solid angle pi), then in the mesh's local frame: the prediction reads
-  // their strength (render::LightScale) and, for its estimate of what
-  // interpolating colours costs (eq. 4.4), where they are.
-  sl::Lighting<double> lighting;
-  lighting.lightCount = 0; // (the default is one light; none is a headlight)
-  vtkCollectionSimpleIterator it;
-  ren->GetLights()->InitTraversal(it);
-  while (vtkLight* light = ren->GetLights()->GetNextLight(it))
-  {
-    if (light->GetSwitch() && lighting.lightCount < sl::kMaxLights)
-    {
-      const double* c = light->GetDiffuseColor();
-      const double i = light->GetIntensity();
-      sl::Light<double>& l = lighting.lights[lighting.lightCount++];
-      l.intensity = sl::Vec3<double>(c[0] * i, c[1] * i, c[2] * i);
-      l.solidAngle = sl::kPi<double>;
-      double pos[3], fp[3];
-      light->GetTransformedPosition(pos);
-      light->GetTransformedFocalPoint(fp);
-      const sl::Vec3d position(pos[0], pos[1], pos[2]), focal(fp[0], fp[1], fp[2]);
-      if (light->GetPositional())
-      {
-        const double* att = light->GetAttenuationValues();
-        l.type = sl::LightType::Point;
-        l.vector = position;
-        l.attenuation = sl::Vec3d(att[0], att[1], att[2]);
-        l.spotDirection = sl::NormalizeOr(focal - position, sl::Vec3d(0, 0, -1));
-        l.coneAngle = light->GetConeAngle();
-        l.coneExponent = light->GetExponent();
-      }
-      else
-      {
-        l.type = sl::LightType::Directional;
-        l.vector = sl::NormalizeOr(position - focal, sl::Vec3d(0, 0, 1));
-      }
-    }
-  }
+  // The lights as drawn, in the world, then in the mesh's local frame: the
+  // prediction reads their strength (render::LightScale) and, for its
+  // estimate of what interpolating colours costs (eq. 4.4), where they are.
+  sl::Lighting<double> lighting = sl::render::LightingFromVtk(ren, in.Settings.lightIntensity);
   sl::render::ToLocal(in.AutoFrame, lighting);
   const int* size = ren->GetSize();
   const sl::render::ModeChoice choice = sl::render::ChooseMode(in.AutoMesh, in.AutoNormals,
-    camera, lighting, in.Material, std::max(size[0], 1), std::max(size[1], 1), this->MaxError);
+    camera, lighting, in.Settings.material, std::max(size[0], 1), std::max(size[1], 1),
+    in.Settings.maxError);
   in.Drawn = static_cast<int>(choice.mode);
   in.AutoChoice = choice.why;
 }
 
 std::string vtkShadingLabPolyDataMapper::Variant(vtkRenderer* ren) const
 {
-  const sl::Material<double>& m = this->Internal->Material;
+  const sl::Material<double>& m = this->Internal->Settings.material;
   const int model = static_cast<int>(m.model);
   int lights = 0;
   bool point = false;
@@ -290,7 +300,7 @@ std::string vtkShadingLabPolyDataMapper::Variant(vtkRenderer* ren) const
     << "#define SL_LOBE_COUNT " << std::max(1, std::min(m.lobeCount, sl::kMaxLobes)) << "\n"
     << "#define SL_CONDUCTOR " << (m.IsConductor() ? 1 : 0) << "\n"
     << "#define SL_HEADLIGHT " << (headlightOnly ? 1 : 0) << "\n"
-    << "#define SL_INTERP " << (this->PerspectiveCorrect ? "smooth" : "noperspective") << "\n";
+    << "#define SL_INTERP " << ((this->Internal->Settings.render.interpolation == sl::render::InterpolationSpace::Perspective) ? "smooth" : "noperspective") << "\n";
   return v.str();
 }
 
@@ -309,7 +319,8 @@ bool vtkShadingLabPolyDataMapper::Substitute(
 void vtkShadingLabPolyDataMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
 {
   vtkPolyData* input = this->CurrentInput;
-  if (this->ShadingMode == AUTO)
+  const sl::render::NormalSettings& made = this->Internal->Settings.normals;
+  if (this->Internal->Settings.autoMode)
   {
     this->ChooseAutoMode(ren, input);
   }
@@ -317,10 +328,9 @@ void vtkShadingLabPolyDataMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* a
   const bool hasNormals = input && input->GetPointData()->GetNormals();
   // Flat mode uploads no point normals; the other modes need them, made
   // here when the input has none or on request.
-  const bool useInputNormals = hasNormals && !this->RecomputeNormals;
+  const bool useInputNormals = hasNormals && !made.recompute;
   const int kind = flat ? (hasNormals ? 1 : 0) : (useInputNormals ? 0 : 2);
-  const std::array<double, 2> settings{ static_cast<double>(this->NormalWeighting),
-    this->FeatureAngle };
+  const std::array<double, 2> settings{ static_cast<double>(made.weighting), made.featureAngle };
   if (kind != 0)
   {
     if (this->Internal->PreparedKind != kind || this->Internal->PreparedInput != input ||
@@ -334,14 +344,14 @@ void vtkShadingLabPolyDataMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* a
       {
         prepared->GetPointData()->SetNormals(nullptr);
       }
-      else if (this->FeatureAngle < 180.0)
+      else if (made.featureAngle < 180.0)
       {
         // Creases: normals split where faces meet at more than FeatureAngle
         // (new points; the copy is what is drawn).
         vtkNew<vtkWeightedPolyDataNormals> normals;
         normals->SetInputData(prepared);
-        normals->SetWeighting(this->NormalWeighting);
-        normals->SetFeatureAngle(this->FeatureAngle);
+        normals->SetWeighting(made.weighting);
+        normals->SetFeatureAngle(made.featureAngle);
         normals->SplittingOn();
         normals->Update();
         prepared = normals->GetOutput();
@@ -355,7 +365,7 @@ void vtkShadingLabPolyDataMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* a
         const sl::mesh::MeshView& mesh = polygons;
         std::vector<double> normals;
         sl::mesh::ComputeVertexNormalsNoSplit(
-          mesh, static_cast<sl::mesh::NormalWeighting>(this->NormalWeighting), normals);
+          mesh, static_cast<sl::mesh::NormalWeighting>(made.weighting), normals);
         vtkNew<vtkFloatArray> array;
         array->SetName("Normals");
         array->SetNumberOfComponents(3);
@@ -422,7 +432,7 @@ void vtkShadingLabPolyDataMapper::ReplaceShaderValues(
   this->Substitute(vs, "//SL::VertexRho::Dec",
     vertexColors ? "#define SL_VERTEX_RHO scalarColor.rgb" : "// no per-vertex colours");
 
-  if (!this->PerspectiveCorrect)
+  if (!(this->Internal->Settings.render.interpolation == sl::render::InterpolationSpace::Perspective))
   {
     // Screen-space interpolation of VTK's own varyings (the lecture's
     // linear interpolation in screen coordinates).
@@ -453,7 +463,7 @@ void vtkShadingLabPolyDataMapper::SetMapperShaderParameters(
   {
     return;
   }
-  const sl::Material<double>& m = this->Internal->Material;
+  const sl::Material<double>& m = this->Internal->Settings.material;
   vtkCamera* camera = ren->GetActiveCamera();
   vtkMatrix4x4* view = camera->GetViewTransformMatrix();
 
@@ -469,73 +479,63 @@ void vtkShadingLabPolyDataMapper::SetMapperShaderParameters(
     spot[4 * j + 3] = -2.0f; // no cone
     spotExponent[j] = 1.0f;
   }
-  int count = 0;
-  vtkLightCollection* collection = ren->GetLights();
-  vtkCollectionSimpleIterator it;
-  collection->InitTraversal(it);
-  while (vtkLight* light = collection->GetNextLight(it))
+  // The lights (the one vtkLight conversion, render::LightingFromVtk) in
+  // view coordinates.
+  const sl::render::Settings& settings = this->Internal->Settings;
+  const sl::Lighting<double> lighting = sl::render::LightingFromVtk(ren, settings.lightIntensity);
+  const int count = lighting.lightCount;
+  for (int j = 0; j < count; ++j)
   {
-    if (!light->GetSwitch() || count >= sl::kMaxLights)
-    {
-      continue;
-    }
-    double pos[3], fp[3];
-    light->GetTransformedPosition(pos);
-    light->GetTransformedFocalPoint(fp);
+    const sl::Light<double>& light = lighting.lights[j];
     double v[4];
-    if (light->GetPositional())
+    if (light.type == sl::LightType::Point)
     {
-      const double p[4] = { pos[0], pos[1], pos[2], 1.0 };
+      const double p[4] = { light.vector.x, light.vector.y, light.vector.z, 1.0 };
       view->MultiplyPoint(p, v);
       v[3] = 1.0;
-      const double* att = light->GetAttenuationValues();
-      for (int c = 0; c < 3; ++c)
+      attenuation[3 * j] = static_cast<float>(light.attenuation.x);
+      attenuation[3 * j + 1] = static_cast<float>(light.attenuation.y);
+      attenuation[3 * j + 2] = static_cast<float>(light.attenuation.z);
+      if (light.coneAngle <= 90.0)
       {
-        attenuation[3 * count + c] = static_cast<float>(att[c]);
-      }
-      if (light->GetConeAngle() <= 90.0)
-      {
-        const double axis[4] = { fp[0] - pos[0], fp[1] - pos[1], fp[2] - pos[2], 0.0 };
+        const sl::Vec3d& d = light.spotDirection;
+        const double axis[4] = { d.x, d.y, d.z, 0.0 };
         double a[4];
         view->MultiplyPoint(axis, a);
         const sl::Vec3d unit = sl::NormalizeOr(sl::Vec3d(a[0], a[1], a[2]), sl::Vec3d(0, 0, -1));
-        spot[4 * count] = static_cast<float>(unit.x);
-        spot[4 * count + 1] = static_cast<float>(unit.y);
-        spot[4 * count + 2] = static_cast<float>(unit.z);
-        spot[4 * count + 3] =
-          static_cast<float>(std::cos(light->GetConeAngle() * sl::kPi<double> / 180.0));
-        spotExponent[count] = static_cast<float>(light->GetExponent());
+        spot[4 * j] = static_cast<float>(unit.x);
+        spot[4 * j + 1] = static_cast<float>(unit.y);
+        spot[4 * j + 2] = static_cast<float>(unit.z);
+        spot[4 * j + 3] = static_cast<float>(std::cos(light.coneAngle * sl::kPi<double> / 180.0));
+        spotExponent[j] = static_cast<float>(light.coneExponent);
       }
     }
     else
     {
-      const double d[4] = { pos[0] - fp[0], pos[1] - fp[1], pos[2] - fp[2], 0.0 };
+      const double d[4] = { light.vector.x, light.vector.y, light.vector.z, 0.0 };
       view->MultiplyPoint(d, v);
       // Unit direction: the shader uses it as is.
       const sl::Vec3d unit = sl::NormalizeOr(sl::Vec3d(v[0], v[1], v[2]), sl::Vec3d(0, 0, 1));
       v[0] = unit.x, v[1] = unit.y, v[2] = unit.z;
       v[3] = 0.0;
-      attenuation[3 * count] = 1.0f;
+      attenuation[3 * j] = 1.0f;
     }
     for (int c = 0; c < 4; ++c)
     {
-      lightVector[4 * count + c] = static_cast<float>(v[c]);
+      lightVector[4 * j + c] = static_cast<float>(v[c]);
     }
-    const double* color = light->GetDiffuseColor();
-    for (int c = 0; c < 3; ++c)
-    {
-      // I_L dw with the model's solid angle convention (dw = pi).
-      irradiance[3 * count + c] =
-        static_cast<float>(light->GetIntensity() * color[c] * sl::kPi<double>);
-    }
-    ++count;
+    // I_L dw with the model's solid angle convention (dw = pi).
+    irradiance[3 * j] = static_cast<float>(light.intensity.x * light.solidAngle);
+    irradiance[3 * j + 1] = static_cast<float>(light.intensity.y * light.solidAngle);
+    irradiance[3 * j + 2] = static_cast<float>(light.intensity.z * light.solidAngle);
   }
   block.insert(block.end(), lightVector, lightVector + 4 * sl::kMaxLights);
   block.insert(block.end(), irradiance, irradiance + 3 * sl::kMaxLights);
   block.insert(block.end(), attenuation, attenuation + 3 * sl::kMaxLights);
   block.insert(block.end(), spot, spot + 4 * sl::kMaxLights);
   block.insert(block.end(), spotExponent, spotExponent + sl::kMaxLights);
-  const double* ia = ren->GetAmbient();
+  const double ia[3] = { lighting.ambientIntensity.x, lighting.ambientIntensity.y,
+    lighting.ambientIntensity.z };
   vtkProperty* prop = act->GetProperty();
   const double diffuseCoefficient = prop->GetDiffuse();
   const double* dc = this->BlockColorSet ? this->BlockColor : prop->GetDiffuseColor();
@@ -550,7 +550,7 @@ void vtkShadingLabPolyDataMapper::SetMapperShaderParameters(
     diffuseCoefficient > 0 ? static_cast<float>(1.0 / diffuseCoefficient) : 1.0f,
     static_cast<float>(dc[0]), static_cast<float>(dc[1]), static_cast<float>(dc[2]),
     camera->GetParallelProjection() ? 1.0f : 0.0f,
-    static_cast<float>(std::cos(this->FastPhongMaxSpread * sl::kPi<double> / 180.0)) };
+    static_cast<float>(std::cos(settings.render.fastPhongMaxSpread * sl::kPi<double> / 180.0)) };
   block.insert(block.end(), std::begin(values), std::end(values));
   float weights[sl::kMaxLobes], ms[sl::kMaxLobes];
   for (int k = 0; k < sl::kMaxLobes; ++k)
@@ -598,13 +598,14 @@ void vtkShadingLabPolyDataMapper::SetMapperShaderParameters(
 void vtkShadingLabPolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "ShadingMode: "
-     << (this->ShadingMode == AUTO
-            ? std::string("auto (max error ") + std::to_string(this->MaxError) + "/255)"
-            : sl::render::ShadingModeName(static_cast<sl::render::ShadingMode>(this->ShadingMode)))
-     << "\n";
-  os << indent << "ReflectanceModel: " << sl::ReflectanceModelName(this->Internal->Material.model)
-     << "\n";
-  os << indent << "PerspectiveCorrect: " << this->PerspectiveCorrect << "\n";
+  const sl::render::Settings& settings = this->Internal->Settings;
+  for (const auto& row : sl::render::SettingsTable())
+  {
+    if (row.frontEnds & sl::render::kMapper)
+    {
+      os << indent << row.property << ": " << sl::render::FormatSetting(row, row.get(settings))
+         << "\n";
+    }
+  }
   os << indent << "ShaderBuildCount: " << this->ShaderBuildCount << "\n";
 }

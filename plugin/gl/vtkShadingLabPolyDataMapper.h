@@ -38,7 +38,7 @@
 #define vtkShadingLabPolyDataMapper_h
 
 #include "shadinglab/model/Shading.h"
-#include "shadinglab/render/Options.h"
+#include "shadinglab/render/Settings.h"
 
 #include "shadinglabGLModule.h" // for export macro
 
@@ -71,17 +71,25 @@ public:
   };
 
   ///@{
-  /// Shading mode (default PHONG).
-  vtkSetClampMacro(ShadingMode, int, FLAT, AUTO);
-  vtkGetMacro(ShadingMode, int);
+  /**
+   * Every setting at once (shadinglab/render/Settings.h, the table every
+   * front end reads): mode (or auto with its error budget), interpolation
+   * space, fast Phong's spread limit, the normals made for inputs without
+   * them, the light-intensity scale and the material. Only what the shaders
+   * are built from (mode, model, specular on/off, lobe count, conductor,
+   * interpolation) rebuilds them; the rest are uniforms.
+   */
+  void SetSettings(const shadinglab::render::Settings& settings);
+  const shadinglab::render::Settings& GetSettings() const;
   ///@}
 
-  ///@{
-  /// AUTO's error budget: mean error in 1/255 of the display range
-  /// (default 1, range [0.01, 255]).
-  vtkSetClampMacro(MaxError, double, 0.01, 255.0);
-  vtkGetMacro(MaxError, double);
-  ///@}
+  /**
+   * One setting by its table key and text, as on the command line:
+   * SetSetting("mode", "gouraud"), SetSetting("eta", "1.5,1.5,1.5").
+   * Returns false (and reports with vtkErrorMacro) on an unknown key or a
+   * value out of range; the mapper is then unchanged.
+   */
+  bool SetSetting(const char* key, const char* value);
 
   /// Per-block overrides from a composite mapper (ParaView's block colours
   /// and opacities): `color` (nullptr: the property's) is the albedo rho of
@@ -95,36 +103,7 @@ public:
   /// error and cost; render::ModeChoice::why); "" otherwise.
   const std::string& GetAutoChoice() const;
 
-  ///@{
-  /// Perspective-correct interpolation (default on); off: screen-linear.
-  vtkSetMacro(PerspectiveCorrect, bool);
-  vtkGetMacro(PerspectiveCorrect, bool);
-  vtkBooleanMacro(PerspectiveCorrect, bool);
-  ///@}
-
-  ///@{
-  /// FAST_PHONG: fragments whose interpolated normal is more than this many
-  /// degrees from the expansion point's normal are evaluated exactly
-  /// (default 30, as the CPU renderer's per-triangle limit; 180 disables).
-  vtkSetClampMacro(FastPhongMaxSpread, double, 0.0, 180.0);
-  vtkGetMacro(FastPhongMaxSpread, double);
-  ///@}
-
-  ///@{
-  /// Vertex normals made for inputs without point normals (or for every
-  /// input with RecomputeNormals on): weighting 0 uniform, 1 area (default),
-  /// 2 angle, 3 Max; creases split where faces meet at more than
-  /// FeatureAngle degrees (default 180: no creases, smooth everywhere).
-  vtkSetClampMacro(NormalWeighting, int, 0, 3);
-  vtkGetMacro(NormalWeighting, int);
-  vtkSetClampMacro(FeatureAngle, double, 0.0, 180.0);
-  vtkGetMacro(FeatureAngle, double);
-  vtkSetMacro(RecomputeNormals, bool);
-  vtkGetMacro(RecomputeNormals, bool);
-  ///@}
-
-  /// The material. Rebuilds shaders only when the variant changes (model,
-  /// specular on/off, mixture size, conductor or not).
+  /// The material alone (the settings' `material`).
   void SetMaterial(const shadinglab::Material<double>& material);
   const shadinglab::Material<double>& GetMaterial() const;
 
@@ -149,16 +128,9 @@ protected:
   void SetPropertyShaderParameters(
     vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
 
-  int ShadingMode = PHONG;
-  double MaxError = 1.0;
   bool BlockColorSet = false;
   double BlockColor[3] = { 1, 1, 1 };
   double BlockOpacity = -1.0;
-  bool PerspectiveCorrect = true;
-  double FastPhongMaxSpread = 30.0;
-  int NormalWeighting = 1;
-  double FeatureAngle = 180.0;
-  bool RecomputeNormals = false;
   int ShaderBuildCount = 0;
   int FailedSubstitutions = 0;
   int UniformUploads = 0;

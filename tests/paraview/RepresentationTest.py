@@ -275,5 +275,33 @@ check(hidden[L].sum() == 0 and covered(hidden)[R],
       'block visibility: only the selected (right) block is drawn (left %s, right %s)' % (hidden[L], hidden[R]))
 pair_rep.Visibility = 0
 
+# 6. The settings table's spellings and its newest row: a preset in
+#    ParaView's Title Case and in the command line's kebab-case is the same
+#    material; LightIntensity scales the lights (the plain white sphere,
+#    the headlight of section 2).
+rep.Visibility = 1
+rep.ShadingMode = 'Phong'
+rep.ColorArrayName = [None, '']
+ResetCamera(view)
+rep.MaterialPreset = 'Gold'
+gold_title = shot('preset_Gold')
+rep.MaterialPreset = 'gold'
+gold_kebab = shot('preset_gold')
+rep.MaterialPreset = 'Custom'
+custom = shot('preset_custom')
+check(abs(gold_title - gold_kebab).max() == 0 and difference(gold_title, custom) > 5,
+      "MaterialPreset 'Gold' and 'gold' are one material (max diff %d), unlike Custom (%.1f)"
+      % (abs(gold_title - gold_kebab).max(), difference(gold_title, custom)))
+rep.Ambient = 0.0
+rep.AmbientReflectance = 0.0
+full = shot('light_intensity_1')
+rep.LightIntensity = 0.5
+half = shot('light_intensity_half')
+rep.LightIntensity = 1.0
+mask = covered(full) & (full.max(axis=2) < 250)  # unclipped pixels only
+ratio = half[mask].sum() / max(full[mask].sum(), 1)
+check(abs(ratio - 0.5) < 0.02, 'LightIntensity 0.5 halves the unclipped pixels (ratio %.3f)' % ratio)
+rep.AmbientReflectance = 0.05
+
 print('%d failure(s)' % len(failures))
 sys.exit(1 if failures else 0)

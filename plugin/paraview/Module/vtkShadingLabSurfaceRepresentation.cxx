@@ -2,6 +2,7 @@
 #include "vtkShadingLabSurfaceRepresentation.h"
 
 #include "shadinglab/model/Materials.h"
+#include "shadinglab/render/Settings.h"
 #include "vtkShadingLabCompositePolyDataMapper.h"
 #include "vtkShadingLabPolyDataMapper.h"
 
@@ -14,16 +15,17 @@ namespace sl = shadinglab;
 
 struct vtkShadingLabSurfaceRepresentation::Internals
 {
-  sl::Material<double> Parameters; ///< from the individual properties
-  std::string Preset;              ///< "" or "Custom": use Parameters
-  sl::Material<double> Applied;    ///< the last valid material, on the mappers
+  /// The properties as set. A preset (Settings.preset) replaces the
+  /// material parameters when the material is applied (UpdateSettings).
+  sl::render::Settings Parameters;
+  sl::render::Settings Applied; ///< the last valid settings, on the mappers
   std::string Problem;
   std::string AutoChoice; ///< GetAutoChoice's storage
   /// The mappers' block attributes (full and LOD), and the superclass's
   /// BlockAttributeTime they were made at.
   vtkSmartPointer<vtkCompositeDataDisplayAttributes> BlockAttributes[2];
   vtkMTimeType BlockAttributesFrom = 0;
-  bool Dirty = true; ///< a material property changed since the last UpdateMaterial
+  bool Dirty = true; ///< a property changed since the last UpdateSettings
 };
 
 vtkStandardNewMacro(vtkShadingLabSurfaceRepresentation);
@@ -39,40 +41,10 @@ vtkShadingLabSurfaceRepresentation::vtkShadingLabSurfaceRepresentation()
   this->Mapper = vtkShadingLabCompositePolyDataMapper::New();
   this->LODMapper = vtkShadingLabCompositePolyDataMapper::New();
   this->SetupDefaults();
-  this->Internal->Parameters.model = sl::ReflectanceModel::BlinnPhong;
-  this->UpdateMaterial();
+  this->UpdateSettings();
 }
 
 vtkShadingLabSurfaceRepresentation::~vtkShadingLabSurfaceRepresentation() = default;
-
-namespace
-{
-template <typename Fn>
-void ForBothMappers(vtkMapper* a, vtkMapper* b, Fn&& fn)
-{
-  for (vtkMapper* m : { a, b })
-  {
-    if (auto* sm = vtkShadingLabCompositePolyDataMapper::SafeDownCast(m))
-    {
-      fn(sm);
-    }
-  }
-}
-} // namespace
-
-void vtkShadingLabSurfaceRepresentation::SetShadingMode(int mode)
-{
-  ForBothMappers(this->Mapper, this->LODMapper,
-    [&](vtkShadingLabCompositePolyDataMapper* m) { m->SetShadingMode(mode); });
-  this->Modified();
-}
-
-void vtkShadingLabSurfaceRepresentation::SetMaxError(double maxError)
-{
-  ForBothMappers(this->Mapper, this->LODMapper,
-    [&](vtkShadingLabCompositePolyDataMapper* m) { m->SetMaxError(maxError); });
-  this->Modified();
-}
 
 const char* vtkShadingLabSurfaceRepresentation::GetAutoChoice()
 {
@@ -81,147 +53,68 @@ const char* vtkShadingLabSurfaceRepresentation::GetAutoChoice()
   return this->Internal->AutoChoice.c_str();
 }
 
-void vtkShadingLabSurfaceRepresentation::SetReflectanceModel(int model)
+void vtkShadingLabSurfaceRepresentation::SetSetting(
+  const char* key, const std::vector<double>& numbers, const char* text)
 {
-  if (model < 0 || model > static_cast<int>(sl::ReflectanceModel::LommelSeeliger))
+  const sl::render::SettingValue value{ numbers, text ? text : "" };
+  const sl::render::SettingRow* row = sl::render::FindSetting(key ? key : "");
+  if (!row)
   {
-    vtkErrorMacro("ReflectanceModel must be 0..4 (got " << model << ")");
+    vtkErrorMacro("unknown ShadingLab setting '" << (key ? key : "") << "'");
     return;
   }
-  this->Internal->Parameters.model = static_cast<sl::ReflectanceModel>(model);
-  this->Internal->Dirty = true;
-  this->Modified();
-}
-
-void vtkShadingLabSurfaceRepresentation::SetInterpolationSpace(int space)
-{
-  ForBothMappers(this->Mapper, this->LODMapper,
-    [&](vtkShadingLabCompositePolyDataMapper* m) { m->SetPerspectiveCorrect(space == 0); });
-  this->Modified();
-}
-
-void vtkShadingLabSurfaceRepresentation::SetFastPhongMaxSpread(double degrees)
-{
-  ForBothMappers(this->Mapper, this->LODMapper,
-    [&](vtkShadingLabCompositePolyDataMapper* m) { m->SetFastPhongMaxSpread(degrees); });
-  this->Modified();
-}
-
-void vtkShadingLabSurfaceRepresentation::SetNormalWeighting(int weighting)
-{
-  ForBothMappers(this->Mapper, this->LODMapper,
-    [&](vtkShadingLabCompositePolyDataMapper* m) { m->SetNormalWeighting(weighting); });
-  this->Modified();
-}
-
-void vtkShadingLabSurfaceRepresentation::SetFeatureAngle(double degrees)
-{
-  ForBothMappers(this->Mapper, this->LODMapper,
-    [&](vtkShadingLabCompositePolyDataMapper* m) { m->SetFeatureAngle(degrees); });
-  this->Modified();
-}
-
-void vtkShadingLabSurfaceRepresentation::SetRecomputeNormals(int recompute)
-{
-  ForBothMappers(this->Mapper, this->LODMapper,
-    [&](vtkShadingLabCompositePolyDataMapper* m) { m->SetRecomputeNormals(recompute != 0); });
-  this->Modified();
-}
-
-void vtkShadingLabSurfaceRepresentation::SetKd(double kd)
-{
-  this->Internal->Parameters.kd = kd;
-  this->Internal->Dirty = true;
-  this->Modified();
-}
-
-void vtkShadingLabSurfaceRepresentation::SetKs(double ks)
-{
-  this->Internal->Parameters.ks = ks;
-  this->Internal->Dirty = true;
-  this->Modified();
-}
-
-void vtkShadingLabSurfaceRepresentation::SetShininess(double n)
-{
-  this->Internal->Parameters.shininess = n;
-  this->Internal->Dirty = true;
-  this->Modified();
-}
-
-void vtkShadingLabSurfaceRepresentation::SetAmbientReflectance(double ra)
-{
-  this->Internal->Parameters.ambient = sl::Vec3d(ra, ra, ra);
-  this->Internal->Dirty = true;
-  this->Modified();
-}
-
-void vtkShadingLabSurfaceRepresentation::SetSpecularTint(double r, double g, double b)
-{
-  this->Internal->Parameters.specularColor = sl::Vec3d(r, g, b);
-  this->Internal->Dirty = true;
-  this->Modified();
-}
-
-void vtkShadingLabSurfaceRepresentation::SetBeckmannRoughness(double m0, double m1, double m2, double m3)
-{
-  // A lobe is used when its m is > 0: the lobe count is the number of
-  // leading positive roughnesses.
-  const double m[4] = { m0, m1, m2, m3 };
-  sl::Material<double>& p = this->Internal->Parameters;
-  p.lobeCount = 0;
-  for (int k = 0; k < sl::kMaxLobes && m[k] > 0; ++k)
+  Internals& in = *this->Internal;
+  if (row->key == "material")
   {
-    p.lobes[k].m = m[k];
-    p.lobeCount = k + 1;
+    // The preset is kept apart: it replaces the parameters when applied, so
+    // the order in which ParaView sends the properties does not matter.
+    sl::render::Settings probe;
+    const std::string problem = sl::render::ApplySetting(probe, *row, value, "");
+    if (!problem.empty())
+    {
+      vtkErrorMacro("ShadingLab: " << problem);
+      return;
+    }
+    in.Parameters.preset = probe.preset;
   }
-  if (p.lobeCount == 0)
+  else
   {
-    p.lobeCount = 1;
-    p.lobes[0].m = m0; // rejected by validation with its own message
+    const std::string problem = sl::render::ApplySetting(in.Parameters, *row, value, "");
+    if (!problem.empty())
+    {
+      vtkErrorMacro("ShadingLab: " << problem);
+      return;
+    }
   }
-  this->Internal->Dirty = true;
+  in.Dirty = true;
   this->Modified();
 }
 
-void vtkShadingLabSurfaceRepresentation::SetBeckmannWeights(double w0, double w1, double w2, double w3)
+void vtkShadingLabSurfaceRepresentation::SetIntSetting(const char* key, int value)
 {
-  const double w[4] = { w0, w1, w2, w3 };
-  for (int k = 0; k < sl::kMaxLobes; ++k)
-  {
-    this->Internal->Parameters.lobes[k].weight = w[k];
-  }
-  this->Internal->Dirty = true;
-  this->Modified();
+  this->SetSetting(key, { static_cast<double>(value) }, nullptr);
 }
 
-void vtkShadingLabSurfaceRepresentation::SetEta(double r, double g, double b)
+void vtkShadingLabSurfaceRepresentation::SetRealSetting1(const char* key, double v0)
 {
-  this->Internal->Parameters.eta = sl::Vec3d(r, g, b);
-  this->Internal->Dirty = true;
-  this->Modified();
+  this->SetSetting(key, { v0 }, nullptr);
 }
 
-void vtkShadingLabSurfaceRepresentation::SetExtinction(double r, double g, double b)
+void vtkShadingLabSurfaceRepresentation::SetRealSetting3(
+  const char* key, double v0, double v1, double v2)
 {
-  this->Internal->Parameters.k = sl::Vec3d(r, g, b);
-  this->Internal->Dirty = true;
-  this->Modified();
+  this->SetSetting(key, { v0, v1, v2 }, nullptr);
 }
 
-void vtkShadingLabSurfaceRepresentation::SetSpecularVariant(int variant)
+void vtkShadingLabSurfaceRepresentation::SetRealSetting4(
+  const char* key, double v0, double v1, double v2, double v3)
 {
-  this->Internal->Parameters.variant =
-    variant == 1 ? sl::SpecularVariant::Walter2007 : sl::SpecularVariant::CookTorrance1982;
-  this->Internal->Dirty = true;
-  this->Modified();
+  this->SetSetting(key, { v0, v1, v2, v3 }, nullptr);
 }
 
-void vtkShadingLabSurfaceRepresentation::SetMaterialPreset(const char* name)
+void vtkShadingLabSurfaceRepresentation::SetTextSetting(const char* key, const char* value)
 {
-  this->Internal->Preset = name ? name : "";
-  this->Internal->Dirty = true;
-  this->Modified();
+  this->SetSetting(key, {}, value);
 }
 
 const char* vtkShadingLabSurfaceRepresentation::GetMaterialProblem()
@@ -234,7 +127,7 @@ int vtkShadingLabSurfaceRepresentation::ProcessViewRequest(
 {
   if (this->Internal->Dirty)
   {
-    this->UpdateMaterial();
+    this->UpdateSettings();
   }
   const int result = this->Superclass::ProcessViewRequest(request, inInfo, outInfo);
   if (result && request == vtkPVView::REQUEST_RENDER())
@@ -274,49 +167,41 @@ void vtkShadingLabSurfaceRepresentation::UpdateBlockAttributes()
   }
 }
 
-void vtkShadingLabSurfaceRepresentation::UpdateMaterial()
+void vtkShadingLabSurfaceRepresentation::UpdateSettings()
 {
   Internals& in = *this->Internal;
   in.Dirty = false;
-  sl::Material<double> material = in.Parameters;
-  if (!in.Preset.empty() && in.Preset != "Custom")
+  sl::render::Settings settings = in.Parameters;
+  if (!settings.preset.empty())
   {
-    const sl::MaterialPreset* preset = sl::FindMaterialPreset(in.Preset);
-    if (!preset)
-    {
-      in.Problem = "unknown material preset '" + in.Preset + "'";
-      vtkErrorMacro(<< in.Problem);
-      return;
-    }
-    material = preset->material;
+    settings.material = sl::FindMaterialPreset(settings.preset)->material;
   }
-  // The lobe weights are normalized to sum to 1 over the used lobes, so a
-  // user may give relative weights (and one lobe always has weight 1).
-  double sum = 0;
-  for (int k = 0; k < material.lobeCount; ++k)
-  {
-    sum += material.lobes[k].weight;
-  }
-  if (sum > 0)
-  {
-    for (int k = 0; k < material.lobeCount; ++k)
-    {
-      material.lobes[k].weight /= sum;
-    }
-  }
-  in.Problem = sl::ValidateMaterial(material);
+  sl::render::NormalizeLobeWeights(settings.material);
+  in.Problem = sl::ValidateMaterial(settings.material);
   if (!in.Problem.empty())
   {
     vtkErrorMacro("ShadingLab material: " << in.Problem << " (keeping the last valid material)");
-    return;
+    settings.material = in.Applied.material;
   }
-  in.Applied = material;
-  ForBothMappers(this->Mapper, this->LODMapper,
-    [&](vtkShadingLabCompositePolyDataMapper* m) { m->SetMaterial(material); });
+  in.Applied = settings;
+  for (vtkMapper* m : { this->Mapper, this->LODMapper })
+  {
+    if (auto* sm = vtkShadingLabCompositePolyDataMapper::SafeDownCast(m))
+    {
+      sm->SetSettings(settings);
+    }
+  }
 }
 
 void vtkShadingLabSurfaceRepresentation::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  os << indent << "Material: " << sl::SerializeMaterial(this->Internal->Applied) << "\n";
+  for (const auto& row : sl::render::SettingsTable())
+  {
+    if (row.frontEnds & sl::render::kParaView)
+    {
+      os << indent << row.property << ": "
+         << sl::render::FormatSetting(row, row.get(this->Internal->Applied)) << "\n";
+    }
+  }
 }

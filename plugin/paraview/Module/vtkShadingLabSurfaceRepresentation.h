@@ -23,6 +23,7 @@
 #include <vtkGeometryRepresentationWithFaces.h>
 
 #include <memory>
+#include <vector>
 #include <string>
 
 class SHADINGLABPARAVIEW_EXPORT vtkShadingLabSurfaceRepresentation
@@ -33,49 +34,24 @@ public:
   vtkTypeMacro(vtkShadingLabSurfaceRepresentation, vtkGeometryRepresentationWithFaces);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  /// vtkShadingLabPolyDataMapper::Modes: 0 flat, 1 Gouraud, 2 Phong (default), 3 fast Phong,
-  /// 4 auto (per block and render, the cheapest mode predicted under MaxError).
-  void SetShadingMode(int mode);
-  /// Auto's error budget, mean error in 1/255 (default 1, [0.01, 255]).
-  void SetMaxError(double maxError);
+  ///@{
+  /**
+   * Every ShadingLab property of the representation, by the setting's key
+   * (shadinglab/render/Settings.h; the ServerManager XML is generated from
+   * that table and passes the key first): SetIntSetting for choices (the
+   * choice's index), flags and integers, SetRealSettingN for N reals,
+   * SetTextSetting for names (a choice's key or Title Case label). A value
+   * out of range or unknown is reported with vtkErrorMacro and ignored.
+   */
+  void SetIntSetting(const char* key, int value);
+  void SetRealSetting1(const char* key, double v0);
+  void SetRealSetting3(const char* key, double v0, double v1, double v2);
+  void SetRealSetting4(const char* key, double v0, double v1, double v2, double v3);
+  void SetTextSetting(const char* key, const char* value);
+  ///@}
+
   /// Auto: the last render's choice per block, and why ("" in other modes).
   const char* GetAutoChoice();
-  /// shadinglab::ReflectanceModel: 0 Lambert, 1 Phong, 2 Blinn-Phong (default), 3 Cook-Torrance.
-  void SetReflectanceModel(int model);
-  /// 0 perspective-correct (default), 1 screen-space interpolation.
-  void SetInterpolationSpace(int space);
-  /// Fast Phong's spread limit in degrees (default 30, [0, 180]).
-  void SetFastPhongMaxSpread(double degrees);
-
-  ///@{
-  /// Vertex normals made when the data has none (or always, with
-  /// RecomputeNormals): weighting 0 uniform, 1 area (default), 2 angle,
-  /// 3 Max; creases split above FeatureAngle degrees (default 180: none).
-  void SetNormalWeighting(int weighting);
-  void SetFeatureAngle(double degrees);
-  void SetRecomputeNormals(int recompute);
-  ///@}
-
-  ///@{
-  /// The material (docs/model.md): kd, ks (kd + ks <= 1), shininess n,
-  /// ambient reflectance Ra, specular colour, Beckmann roughnesses m_k and
-  /// weights w_k (up to 4 lobes), eta and k per RGB channel, and the
-  /// specular variant (0: Cook & Torrance 1982, 1: Walter et al. 2007).
-  void SetKd(double kd);
-  void SetKs(double ks);
-  void SetShininess(double n);
-  void SetAmbientReflectance(double ra);
-  void SetSpecularTint(double r, double g, double b);
-  void SetBeckmannRoughness(double m0, double m1, double m2, double m3);
-  void SetBeckmannWeights(double w0, double w1, double w2, double w3);
-  void SetEta(double r, double g, double b);
-  void SetExtinction(double r, double g, double b);
-  void SetSpecularVariant(int variant);
-  ///@}
-
-  /// A named preset (plastic, glass, gold, copper, silver, aluminium), or
-  /// "Custom" / empty (default): the parameters above.
-  void SetMaterialPreset(const char* name);
 
   /// The last material problem ("" when valid). An invalid material keeps
   /// the last valid one and reports the problem with vtkErrorMacro.
@@ -90,8 +66,8 @@ protected:
   vtkShadingLabSurfaceRepresentation();
   ~vtkShadingLabSurfaceRepresentation() override;
 
-  /// Pushes the material to both mappers after validating it.
-  void UpdateMaterial();
+  /// Pushes the settings to both mappers after validating the material.
+  void UpdateSettings();
   /// Hands ParaView's block colours, opacities and visibility to both
   /// mappers (the superclass gives them to vtkCompositePolyDataMapper2 only).
   void UpdateBlockAttributes();
@@ -99,6 +75,8 @@ protected:
 private:
   vtkShadingLabSurfaceRepresentation(const vtkShadingLabSurfaceRepresentation&) = delete;
   void operator=(const vtkShadingLabSurfaceRepresentation&) = delete;
+
+  void SetSetting(const char* key, const std::vector<double>& numbers, const char* text);
 
   struct Internals;
   std::unique_ptr<Internals> Internal;

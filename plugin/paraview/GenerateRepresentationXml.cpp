@@ -1,0 +1,262 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Writes ShadingLabRepresentation.xml, the ServerManager XML of the
+// "ShadingLab Surface" representation, from the settings table
+// (shadinglab/render/Settings.h) at build time: every property, its
+// default, range or choices and documentation come from the table, as the
+// GLSL #defines come from the C++ enums. Each property calls one of the
+// representation's generic setters with the setting's key first
+// (ServerManager's initial_string).
+#include "shadinglab/render/Settings.h"
+
+#include <cctype>
+#include <fstream>
+#include <iostream>
+#include <sstream>
+
+namespace sr = shadinglab::render;
+
+namespace
+{
+
+std::string Escape(const std::string& text)
+{
+  std::string out;
+  for (char c : text)
+  {
+    switch (c)
+    {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+std::string Repeat(const std::string& value, int count)
+{
+  std::string out;
+  for (int i = 0; i < count; ++i)
+  {
+    out += (i ? " " : "") + value;
+  }
+  return out;
+}
+
+std::string Numbers(const std::vector<double>& values, int count)
+{
+  std::ostringstream s;
+  s.precision(10);
+  for (int i = 0; i < count; ++i)
+  {
+    s << (i ? " " : "") << (i < static_cast<int>(values.size()) ? values[i] : values.back());
+  }
+  return s.str();
+}
+
+int ParaViewCount(const sr::SettingRow& row)
+{
+  return row.paraviewCount > 0 ? row.paraviewCount : row.maxCount;
+}
+
+std::string Documentation(const sr::SettingRow& row)
+{
+  std::string doc = row.doc;
+  doc[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(doc[0])));
+  if (row.kind == sr::SettingKind::Real || row.kind == sr::SettingKind::Integer)
+  {
+    doc += ". Range " + sr::RangeText(row);
+  }
+  std::string def = sr::DefaultText(row);
+  for (const auto& c : row.choices)
+  {
+    if (c.key == def)
+    {
+      def = c.label;
+    }
+  }
+  return Escape(doc + ". Default: " + def + ". (setting '" + row.key + "')");
+}
+
+void Property(std::ostream& out, const sr::SettingRow& row)
+{
+  const std::string head = " name=\"" + row.property + "\" label=\"" + Escape(row.label) +
+    "\" initial_string=\"" + row.key + "\"";
+  const sr::SettingValue def = row.get(sr::Settings{});
+  switch (row.kind)
+  {
+    case sr::SettingKind::Choice:
+      out << "      <IntVectorProperty" << head
+          << " command=\"SetIntSetting\" number_of_elements=\"1\" default_values=\""
+          << def.numbers[0] << "\">\n        <EnumerationDomain name=\"enum\">";
+      for (size_t i = 0; i < row.choices.size(); ++i)
+      {
+        out << "<Entry value=\"" << i << "\" text=\"" << Escape(row.choices[i].label) << "\"/>";
+      }
+      out << "</EnumerationDomain>\n";
+      out << "        <Documentation>" << Documentation(row) << "</Documentation>\n"
+          << "      </IntVectorProperty>\n";
+      break;
+    case sr::SettingKind::Flag:
+    case sr::SettingKind::Integer:
+      out << "      <IntVectorProperty" << head
+          << " command=\"SetIntSetting\" number_of_elements=\"1\" default_values=\""
+          << def.numbers[0] << "\">\n";
+      if (row.kind == sr::SettingKind::Flag)
+      {
+        out << "        <BooleanDomain name=\"bool\"/>\n";
+      }
+      else
+      {
+        out << "        <IntRangeDomain name=\"range\" min=\"" << row.min << "\" max=\"" << row.max
+            << "\"/>\n";
+      }
+      out << "        <Documentation>" << Documentation(row) << "</Documentation>\n"
+          << "      </IntVectorProperty>\n";
+      break;
+    case sr::SettingKind::Real:
+    {
+      const int n = ParaViewCount(row);
+      std::ostringstream lo, hi;
+      lo.precision(10);
+      hi.precision(10);
+      lo << row.min;
+      hi << row.max;
+      out << "      <DoubleVectorProperty" << head << " command=\"SetRealSetting" << n
+          << "\" number_of_elements=\"" << n << "\" default_values=\"" << Numbers(def.numbers, n)
+          << "\">\n        <DoubleRangeDomain name=\"range\" min=\"" << Repeat(lo.str(), n)
+          << "\" max=\"" << Repeat(hi.str(), n) << "\"/>\n";
+      out << "        <Documentation>" << Documentation(row) << "</Documentation>\n"
+          << "      </DoubleVectorProperty>\n";
+      break;
+    }
+    case sr::SettingKind::Text:
+    {
+      std::string label = sr::DefaultText(row);
+      for (const auto& c : row.choices)
+      {
+        if (c.key == label)
+        {
+          label = c.label;
+        }
+      }
+      out << "      <StringVectorProperty" << head
+          << " command=\"SetTextSetting\" number_of_elements=\"1\" default_values=\""
+          << Escape(label) << "\">\n        <StringListDomain name=\"list\">";
+      for (const auto& c : row.choices)
+      {
+        out << "<String value=\"" << Escape(c.label) << "\"/>";
+      }
+      out << "</StringListDomain>\n";
+      out << "        <Documentation>" << Documentation(row) << "</Documentation>\n"
+          << "      </StringVectorProperty>\n";
+      break;
+    }
+  }
+}
+
+void Extension(std::ostream& out, const std::string& representation)
+{
+  out << "    <Extension name=\"" << representation << "\">\n"
+      << "      <Documentation>Adds \"ShadingLab Surface\" to the representations of "
+      << representation << ".</Documentation>\n"
+      << "      <RepresentationType subproxy=\"ShadingLabSurfaceRepresentation\" "
+         "text=\"ShadingLab Surface\" subtype=\"Surface\"/>\n"
+      << "      <SubProxy>\n"
+      << "        <Proxy name=\"ShadingLabSurfaceRepresentation\" proxygroup=\"representations\" "
+         "proxyname=\"ShadingLabSurfaceRepresentation\"/>\n"
+      << "        <ShareProperties subproxy=\"SurfaceRepresentation\">\n"
+      << "          <Exception name=\"Input\"/>\n"
+      << "          <Exception name=\"Visibility\"/>\n"
+      << "          <Exception name=\"Representation\"/>\n"
+      << "        </ShareProperties>\n"
+      << "        <ExposedProperties>\n"
+      << "          <PropertyGroup label=\"ShadingLab\">\n";
+  for (const auto& row : sr::SettingsTable())
+  {
+    if (row.frontEnds & sr::kParaView)
+    {
+      out << "            <Property name=\"" << row.property << "\"/>\n";
+      if (row.key == "max-error")
+      {
+        out << "            <Property name=\"AutoChoice\"/>\n";
+      }
+    }
+  }
+  out << "            <Hints>\n"
+      << "              <PropertyWidgetDecorator type=\"GenericDecorator\" mode=\"visibility\" "
+         "property=\"Representation\" value=\"ShadingLab Surface\"/>\n"
+      << "            </Hints>\n"
+      << "          </PropertyGroup>\n"
+      << "        </ExposedProperties>\n"
+      << "      </SubProxy>\n"
+      << "    </Extension>\n";
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  if (argc != 2)
+  {
+    std::cerr << "usage: GenerateRepresentationXml OUT.xml\n";
+    return 2;
+  }
+  std::ostringstream out;
+  out << "<!-- Generated from plugin/render/src/Settings.cpp by "
+         "plugin/paraview/GenerateRepresentationXml.cpp: do not edit. -->\n"
+      << "<ServerManagerConfiguration>\n  <ProxyGroup name=\"representations\">\n"
+      << "    <RepresentationProxy name=\"ShadingLabSurfaceRepresentation\"\n"
+      << "      class=\"vtkShadingLabSurfaceRepresentation\"\n"
+      << "      processes=\"client|renderserver|dataserver\"\n"
+      << "      base_proxygroup=\"representations\"\n"
+      << "      base_proxyname=\"SurfaceRepresentation\">\n"
+      << "      <Documentation>\n"
+      << "        ParaView's Surface representation drawn by the ShadingLab mapper: the\n"
+      << "        shading mode (flat, Gouraud, Phong, fast Phong, auto) and the reflectance\n"
+      << "        model (Lambert, Phong, Blinn-Phong, Cook-Torrance, Lommel-Seeliger) chosen\n"
+      << "        separately. Colouring by a data array gives the diffuse albedo.\n"
+      << "      </Documentation>\n";
+  for (const auto& row : sr::SettingsTable())
+  {
+    if (!(row.frontEnds & sr::kParaView))
+    {
+      continue;
+    }
+    Property(out, row);
+    if (row.key == "max-error")
+    {
+      out << "      <StringVectorProperty name=\"AutoChoice\" command=\"GetAutoChoice\" "
+             "information_only=\"1\" panel_visibility=\"never\">\n"
+          << "        <SimpleStringInformationHelper/>\n"
+          << "        <Documentation>Auto shading mode: what the last render chose for each "
+             "block and why (predicted error and cost of each mode). Empty in the other "
+             "modes.</Documentation>\n"
+          << "      </StringVectorProperty>\n";
+    }
+  }
+  out << "    </RepresentationProxy>\n\n";
+  for (const char* base : { "GeometryRepresentation", "UnstructuredGridRepresentation",
+         "UniformGridRepresentation", "StructuredGridRepresentation" })
+  {
+    Extension(out, base);
+  }
+  out << "  </ProxyGroup>\n</ServerManagerConfiguration>\n";
+
+  // Rewritten only when it changed, so the plugin is not rebuilt for nothing.
+  const std::string text = out.str();
+  {
+    std::ifstream old(argv[1]);
+    std::stringstream have;
+    have << old.rdbuf();
+    if (old && have.str() == text)
+    {
+      return 0;
+    }
+  }
+  std::ofstream file(argv[1]);
+  file << text;
+  return file ? 0 : 1;
+}

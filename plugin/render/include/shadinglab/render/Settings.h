@@ -1,0 +1,153 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Everything a user sets for a surface, in one struct (Settings), and one
+// table describing it (SettingsTable): key, label, type, range or choices,
+// one-line documentation and the front ends that show it. The CLI's flags
+// and --help, the explorer's ranges, the VTK mapper's settings and the
+// ParaView XML (generated at build time by plugin/paraview/GenerateXml.cpp)
+// all read this table, so a default, a range or a spelling cannot differ
+// between front ends. A setting's default is the value Settings{} holds:
+// it is written once, in the struct below.
+//
+// Adding a setting: a field below, one row in src/Settings.cpp, and its use.
+#pragma once
+
+#include "shadinglab/model/Shading.h"
+#include "shadinglab/render/Options.h"
+
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace shadinglab::render
+{
+
+/// How vertex normals are made for a mesh without them (or always, with
+/// `recompute`). The weighting's values are mesh::NormalWeighting's.
+struct NormalSettings
+{
+  int weighting = 1;          ///< 0 uniform, 1 area, 2 angle, 3 Max
+  double featureAngle = 180.0; ///< split creases above this (degrees); 180: nowhere
+  bool recompute = false;     ///< replace the data's own normals too
+};
+
+/// Every setting of a surface's shading: one struct, passed whole.
+struct Settings
+{
+  /// Mode, interpolation, polygons, expansion, spread, ssaa, threads, culling.
+  RenderOptions render;
+  /// Auto mode: the cheapest of flat, Gouraud and Phong predicted to keep the
+  /// mean error under maxError (docs/model.md eq. 4.1-4.5); render.mode unused.
+  bool autoMode = false;
+  double maxError = 1.0; ///< 1/255 of the display range
+  DisplayTransform display = DisplayTransform::Clamp;
+  /// Scales every light's intensity I_L (eq. 1.1): the CLI's lights, the
+  /// explorer's light, the vtkLights a mapper draws with.
+  double lightIntensity = 1.0;
+  Material<double> material;
+  std::string preset; ///< the preset `material` was started from ("" custom)
+  NormalSettings normals;
+};
+
+enum class SettingGroup
+{
+  Render,
+  Material,
+  Lights,
+  Mesh
+};
+
+enum class SettingKind
+{
+  Choice,  ///< one of `choices`; its value is the choice's index
+  Real,    ///< `count` reals in [min, max]
+  Integer, ///< an integer in [min, max]
+  Flag,    ///< on or off
+  Text     ///< a name (from `choices` when it has any)
+};
+
+/// Which front end shows a setting (bit mask).
+enum SettingFrontEnd : unsigned
+{
+  kCli = 1u,      ///< `shadinglab render` / `compare` flag --key
+  kParaView = 2u, ///< property `property` of the ShadingLab Surface
+  kMapper = 4u,   ///< read by vtkShadingLabPolyDataMapper
+  kExplorer = 8u  ///< a control of the explorer
+};
+
+/// One choice of a Choice or Text setting.
+struct SettingChoice
+{
+  std::string key;   ///< command-line spelling (kebab-case)
+  std::string label; ///< display spelling (Title Case, as ParaView shows it)
+};
+
+/// A setting's value: numbers (a Choice's index, a Flag's 0/1) or text.
+struct SettingValue
+{
+  std::vector<double> numbers;
+  std::string text;
+};
+
+struct SettingRow
+{
+  std::string key;      ///< "max-error": the CLI flag --max-error
+  std::string property; ///< "MaxError": the ParaView property
+  std::string label;    ///< "Max Error (1/255)"
+  SettingGroup group = SettingGroup::Render;
+  SettingKind kind = SettingKind::Real;
+  /// Real: how many values are given; the CLI accepts 1..maxCount and
+  /// broadcasts a single value when `broadcast` (an RGB triple).
+  int minCount = 1;
+  int maxCount = 1;
+  bool broadcast = false;
+  /// Values of the ParaView property (0: maxCount); the ambient Ra is one
+  /// grey value there.
+  int paraviewCount = 0;
+  double min = 0;
+  double max = 0;
+  std::vector<SettingChoice> choices;
+  std::string doc; ///< one line, for --help, tooltips and the ParaView panel
+  unsigned frontEnds = 0;
+  /// The CLI's name for the value in --help ("E", "DEG", "R,G,B").
+  std::string metavar;
+  std::function<void(Settings&, const SettingValue&)> set;
+  std::function<SettingValue(const Settings&)> get;
+};
+
+/// The table, in the order the front ends list the settings.
+const std::vector<SettingRow>& SettingsTable();
+/// The row with this key, or nullptr.
+const SettingRow* FindSetting(const std::string& key);
+
+/// Parses a typed value: a choice's key or label (any case), a comma list
+/// of reals, an integer, or on/off. Returns "" or a one-line error that
+/// names the setting with `prefix` ("--" on the command line).
+std::string ParseSetting(
+  const SettingRow& row, const std::string& text, SettingValue& value, const std::string& prefix);
+/// Checks `value` against the row's count, range and choices, then sets it.
+/// Returns "" or a one-line error.
+std::string ApplySetting(
+  Settings& settings, const SettingRow& row, const SettingValue& value, const std::string& prefix);
+/// ParseSetting then ApplySetting, by key.
+std::string ApplySettingText(Settings& settings, const std::string& key, const std::string& text,
+  const std::string& prefix = "");
+
+/// The value as a user would type it: a choice's key, "1.5,1.5,1.5", "on".
+std::string FormatSetting(const SettingRow& row, const SettingValue& value);
+/// The default (Settings{}'s value), formatted.
+std::string DefaultText(const SettingRow& row);
+/// "[0.01, 255]", "flat | gouraud | ...", for help and docs.
+std::string RangeText(const SettingRow& row);
+
+/// Whether every setting of the table has the same value in `a` and `b`.
+bool SameSettings(const Settings& a, const Settings& b);
+
+/// The --help lines of every row shown on the command line in `group`.
+std::string CliHelp(SettingGroup group);
+
+/// The material's lobe weights as relative weights: scaled to sum to 1 over
+/// the used lobes (the one policy of every front end); a zero sum is left
+/// for ValidateMaterial to report.
+void NormalizeLobeWeights(Material<double>& material);
+
+} // namespace shadinglab::render

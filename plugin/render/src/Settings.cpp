@@ -1,0 +1,793 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The settings table: one row a setting (Settings.h says what reads it).
+#include "shadinglab/render/Settings.h"
+
+#include "shadinglab/model/Materials.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <sstream>
+
+namespace shadinglab::render
+{
+
+namespace
+{
+
+SettingValue Number(double v)
+{
+  return { { v }, {} };
+}
+
+SettingValue Triple(const Vec3<double>& v)
+{
+  return { { v.x, v.y, v.z }, {} };
+}
+
+Vec3<double> TripleOf(const SettingValue& v)
+{
+  // One value is broadcast to the three channels (rows with `broadcast`).
+  return v.numbers.size() == 1 ? Vec3<double>(v.numbers[0], v.numbers[0], v.numbers[0])
+                               : Vec3<double>(v.numbers[0], v.numbers[1], v.numbers[2]);
+}
+
+template <typename Row, size_t N>
+std::vector<SettingChoice> ChoicesOf(const Row (&table)[N])
+{
+  std::vector<SettingChoice> out;
+  for (const auto& row : table)
+  {
+    out.push_back({ row.name, row.label });
+  }
+  return out;
+}
+
+std::string TitleCase(std::string name)
+{
+  if (!name.empty())
+  {
+    name[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(name[0])));
+  }
+  return name;
+}
+
+std::string Lower(std::string text)
+{
+  for (char& c : text)
+  {
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  }
+  return text;
+}
+
+std::string Number(double v, int digits)
+{
+  std::ostringstream s;
+  s.precision(digits);
+  s << v;
+  return s.str();
+}
+
+SettingRow Row(const char* key, const char* property, const char* label, SettingGroup group,
+  SettingKind kind)
+{
+  SettingRow row;
+  row.key = key;
+  row.property = property;
+  row.label = label;
+  row.group = group;
+  row.kind = kind;
+  return row;
+}
+
+std::vector<SettingRow> MakeTable()
+{
+  using G = SettingGroup;
+  using K = SettingKind;
+  std::vector<SettingRow> t;
+
+  // --- where the model is evaluated -----------------------------------
+  {
+    SettingRow r = Row("mode", "ShadingMode", "Shading Mode", G::Render, K::Choice);
+    r.choices = ChoicesOf(kShadingModes);
+    r.choices.push_back({ "auto", "Auto" });
+    r.doc = "where the reflectance model is evaluated (docs/model.md section 2): once per "
+            "polygon, at the vertices, per pixel, by Bishop & Weimer's quadratic, or auto: the "
+            "cheapest of flat, gouraud and phong predicted to keep the mean error under "
+            "max-error (eq. 4.1-4.5)";
+    r.frontEnds = kCli | kParaView | kMapper | kExplorer;
+    r.metavar = "M";
+    r.set = [](Settings& s, const SettingValue& v) {
+      const int i = static_cast<int>(v.numbers[0]);
+      s.autoMode = i == kShadingModeCount;
+      if (!s.autoMode)
+      {
+        s.render.mode = kShadingModes[i].value;
+      }
+    };
+    r.get = [](const Settings& s) {
+      return Number(s.autoMode ? kShadingModeCount : static_cast<int>(s.render.mode));
+    };
+    t.push_back(r);
+  }
+  {
+    SettingRow r = Row("max-error", "MaxError", "Max Error (1/255)", G::Render, K::Real);
+    // Below 0.01/255 no mode is predicted to comply (the fit's floor);
+    // above 255 every mode does.
+    r.min = 0.01;
+    r.max = 255;
+    r.doc = "auto mode: the mean error allowed against exact shading, in 1/255 of the display "
+            "range";
+    r.frontEnds = kCli | kParaView | kMapper | kExplorer;
+    r.metavar = "E";
+    r.set = [](Settings& s, const SettingValue& v) { s.maxError = v.numbers[0]; };
+    r.get = [](const Settings& s) { return Number(s.maxError); };
+    t.push_back(r);
+  }
+  {
+    SettingRow r = Row("interp", "InterpolationSpace", "Interpolation Space", G::Render, K::Choice);
+    r.choices = ChoicesOf(kInterpolationSpaces);
+    r.doc = "perspective-correct interpolation, or linear in screen space as the lecture (shows "
+            "its perspective distortion, docs/model.md eq. 3.1)";
+    r.frontEnds = kCli | kParaView | kMapper | kExplorer;
+    r.metavar = "I";
+    r.set = [](Settings& s, const SettingValue& v) {
+      s.render.interpolation = kInterpolationSpaces[static_cast<int>(v.numbers[0])].value;
+    };
+    r.get = [](const Settings& s) { return Number(static_cast<int>(s.render.interpolation)); };
+    t.push_back(r);
+  }
+  {
+    SettingRow r = Row("polygons", "PolygonHandling", "Polygons", G::Render, K::Choice);
+    r.choices = { { "triangulate", "Triangulate" }, { "direct", "Direct" } };
+    r.doc = "polygons of more than three vertices fan-triangulated, or scan-converted as such "
+            "(shows orientation dependence, eq. 3.2; CPU)";
+    r.frontEnds = kCli;
+    r.metavar = "P";
+    r.set = [](Settings& s, const SettingValue& v) {
+      s.render.polygons = static_cast<PolygonHandling>(static_cast<int>(v.numbers[0]));
+    };
+    r.get = [](const Settings& s) { return Number(static_cast<int>(s.render.polygons)); };
+    t.push_back(r);
+  }
+  {
+    SettingRow r = Row("expansion", "ExpansionPoint", "Fast Phong Expansion", G::Render, K::Choice);
+    r.choices = { { "vertex", "Vertex" }, { "centroid", "Centroid" } };
+    r.doc = "fast-phong Taylor point: the provoking vertex (both backends) or the centroid "
+            "(lower error, eq. 2.7; CPU only)";
+    r.frontEnds = kCli;
+    r.metavar = "E";
+    r.set = [](Settings& s, const SettingValue& v) {
+      s.render.expansion = v.numbers[0] == 0 ? ExpansionPoint::Vertex : ExpansionPoint::Centroid;
+    };
+    r.get = [](const Settings& s) {
+      return Number(s.render.expansion == ExpansionPoint::Vertex ? 0 : 1);
+    };
+    t.push_back(r);
+  }
+  {
+    SettingRow r = Row("fast-phong-max-spread", "FastPhongMaxSpread", "Fast Phong Spread Limit",
+      G::Render, K::Real);
+    r.min = 0;
+    r.max = 180;
+    r.doc = "fast-phong evaluates a pixel exactly where its normal is more than this many "
+            "degrees from the expansion point's (eq. 2.9); 180 shows the raw quadratic";
+    r.frontEnds = kCli | kParaView | kMapper;
+    r.metavar = "DEG";
+    r.set = [](Settings& s, const SettingValue& v) { s.render.fastPhongMaxSpread = v.numbers[0]; };
+    r.get = [](const Settings& s) { return Number(s.render.fastPhongMaxSpread); };
+    t.push_back(r);
+  }
+  {
+    SettingRow r = Row("fast-phong-as-is", "FastPhongAsIs", "Fast Phong As Is", G::Render, K::Flag);
+    r.doc = "fast-phong with its quadratics even on triangles too small for them to pay (CPU; "
+            "default: exact Phong there, said on stderr)";
+    r.frontEnds = kCli;
+    r.set = [](Settings& s, const SettingValue& v) { s.render.fastPhongFallback = v.numbers[0] == 0; };
+    r.get = [](const Settings& s) { return Number(s.render.fastPhongFallback ? 0 : 1); };
+    t.push_back(r);
+  }
+  {
+    SettingRow r = Row("ssaa", "Supersampling", "Supersampling", G::Render, K::Integer);
+    r.min = 1;
+    r.max = kMaxSupersampling;
+    r.doc = "supersampling N x N per pixel (box filter)";
+    r.frontEnds = kCli;
+    r.metavar = "N";
+    r.set = [](Settings& s, const SettingValue& v) { s.render.ssaa = static_cast<int>(v.numbers[0]); };
+    r.get = [](const Settings& s) { return Number(s.render.ssaa); };
+    t.push_back(r);
+  }
+  {
+    SettingRow r = Row("threads", "Threads", "Threads", G::Render, K::Integer);
+    r.min = 0;
+    r.max = 256;
+    r.doc = "worker threads of the CPU renderer; 0: all cores";
+    r.frontEnds = kCli;
+    r.metavar = "N";
+    r.set = [](Settings& s, const SettingValue& v) { s.render.threads = static_cast<int>(v.numbers[0]); };
+    r.get = [](const Settings& s) { return Number(s.render.threads); };
+    t.push_back(r);
+  }
+  {
+    SettingRow r = Row("cull", "CullBackFaces", "Cull Back Faces", G::Render, K::Flag);
+    r.doc = "cull back faces";
+    r.frontEnds = kCli;
+    r.set = [](Settings& s, const SettingValue& v) { s.render.cullBackFaces = v.numbers[0] != 0; };
+    r.get = [](const Settings& s) { return Number(s.render.cullBackFaces ? 1 : 0); };
+    t.push_back(r);
+  }
+  {
+    SettingRow r = Row("display", "DisplayTransform", "Display", G::Render, K::Choice);
+    r.choices = { { "clamp", "Clamp" }, { "srgb", "sRGB" } };
+    r.doc = "linear intensity clamped to [0, 1], or clamped then sRGB-encoded";
+    r.frontEnds = kCli;
+    r.metavar = "D";
+    r.set = [](Settings& s, const SettingValue& v) {
+      s.display = v.numbers[0] == 0 ? DisplayTransform::Clamp : DisplayTransform::SRGB;
+    };
+    r.get = [](const Settings& s) { return Number(s.display == DisplayTransform::Clamp ? 0 : 1); };
+    t.push_back(r);
+  }
+
+  // --- lights ---------------------------------------------------------
+  {
+    SettingRow r = Row("light-intensity", "LightIntensity", "Light Intensity", G::Lights, K::Real);
+    // 1e6 keeps I_L times any reflectance (<= 1/sr x pi) far inside float.
+    r.min = 0;
+    r.max = 1e6;
+    r.doc = "scales the intensity I_L of every light (eq. 1.1)";
+    r.frontEnds = kCli | kParaView | kMapper | kExplorer;
+    r.metavar = "I";
+    r.set = [](Settings& s, const SettingValue& v) { s.lightIntensity = v.numbers[0]; };
+    r.get = [](const Settings& s) { return Number(s.lightIntensity); };
+    t.push_back(r);
+  }
+
+  // --- the material (docs/model.md section 1) --------------------------
+  {
+    SettingRow r = Row("material", "MaterialPreset", "Material Preset", G::Material, K::Text);
+    r.choices.push_back({ "custom", "Custom" });
+    for (const auto& p : MaterialPresets())
+    {
+      r.choices.push_back({ p.name, TitleCase(p.name) });
+    }
+    r.doc = "a named material with cited optical constants (plugin/model/src/Materials.cpp) "
+            "that replaces every material parameter; custom: the parameters";
+    r.frontEnds = kCli | kParaView | kMapper;
+    r.metavar = "PRESET";
+    r.set = [](Settings& s, const SettingValue& v) {
+      s.preset = v.text == "custom" ? std::string() : v.text;
+      if (const MaterialPreset* preset = FindMaterialPreset(s.preset))
+      {
+        s.material = preset->material;
+      }
+    };
+    r.get = [](const Settings& s) { return SettingValue{ {}, s.preset.empty() ? "custom" : s.preset }; };
+    t.push_back(r);
+  }
+  {
+    SettingRow r = Row("model", "ReflectanceModel", "Reflectance Model", G::Material, K::Choice);
+    r.choices = ChoicesOf(kReflectanceModels);
+    r.doc = "what is evaluated (docs/model.md section 1), independent of the shading mode";
+    r.frontEnds = kCli | kParaView | kMapper | kExplorer;
+    r.metavar = "NAME";
+    r.set = [](Settings& s, const SettingValue& v) {
+      s.material.model = kReflectanceModels[static_cast<int>(v.numbers[0])].value;
+    };
+    r.get = [](const Settings& s) { return Number(static_cast<int>(s.material.model)); };
+    t.push_back(r);
+  }
+  {
+    SettingRow r = Row("kd", "Kd", "Diffuse kd", G::Material, K::Real);
+    r.min = 0;
+    r.max = 1;
+    r.doc = "diffuse weight kd of R = kd Rd + ks Rs (kd + ks <= 1)";
+    r.frontEnds = kCli | kParaView | kMapper | kExplorer;
+    r.metavar = "X";
+    r.set = [](Settings& s, const SettingValue& v) { s.material.kd = v.numbers[0]; };
+    r.get = [](const Settings& s) { return Number(s.material.kd); };
+    t.push_back(r);
+  }
+  {
+    SettingRow r = Row("ks", "Ks", "Specular ks", G::Material, K::Real);
+    r.min = 0;
+    r.max = 1;
+    r.doc = "specular weight ks of R = kd Rd + ks Rs (kd + ks <= 1)";
+    r.frontEnds = kCli | kParaView | kMapper | kExplorer;
+    r.metavar = "X";
+    r.set = [](Settings& s, const SettingValue& v) { s.material.ks = v.numbers[0]; };
+    r.get = [](const Settings& s) { return Number(s.material.ks); };
+    t.push_back(r);
+  }
+  {
+    SettingRow r = Row("shininess", "Shininess", "Shininess n", G::Material, K::Real);
+    r.min = 0;
+    r.max = 1e4;
+    r.doc = "exponent n of the Phong (R.V)^n and Blinn-Phong (N.H)^n lobes, normalized by "
+            "(n+2)/2pi and (n+8)/8pi";
+    r.frontEnds = kCli | kParaView | kMapper | kExplorer;
+    r.metavar = "N";
+    r.set = [](Settings& s, const SettingValue& v) { s.material.shininess = v.numbers[0]; };
+    r.get = [](const Settings& s) { return Number(s.material.shininess); };
+    t.push_back(r);
+  }
+  {
+    SettingRow r = Row("albedo", "Albedo", "Albedo rho", G::Material, K::Real);
+    r.maxCount = 3;
+    r.broadcast = true;
+    r.min = 0;
+    r.max = 1;
+    r.doc = "diffuse colour rho, Rd = rho/pi (in ParaView and VTK the mapped colour is rho)";
+    r.frontEnds = kCli;
+    r.metavar = "R,G,B";
+    r.set = [](Settings& s, const SettingValue& v) { s.material.diffuseColor = TripleOf(v); };
+    r.get = [](const Settings& s) { return Triple(s.material.diffuseColor); };
+    t.push_back(r);
+  }
+  {
+    SettingRow r = Row("ambient", "AmbientReflectance", "Ambient Ra", G::Material, K::Real);
+    r.maxCount = 3;
+    r.broadcast = true;
+    r.min = 0;
+    r.max = 1;
+    r.paraviewCount = 1;
+    r.doc = "ambient reflectance Ra of the term Ra Ia (eq. 1.1)";
+    r.frontEnds = kCli | kParaView | kMapper | kExplorer;
+    r.metavar = "R,G,B";
+    r.set = [](Settings& s, const SettingValue& v) { s.material.ambient = TripleOf(v); };
+    r.get = [](const Settings& s) { return Triple(s.material.ambient); };
+    t.push_back(r);
+  }
+  {
+    SettingRow r = Row("specular", "SpecularTint", "Specular Colour", G::Material, K::Real);
+    r.maxCount = 3;
+    r.broadcast = true;
+    r.min = 0;
+    r.max = 1;
+    r.doc = "specular colour of the Phong and Blinn-Phong lobes (Cook-Torrance takes its "
+            "colour from Fresnel)";
+    r.frontEnds = kCli | kParaView | kMapper;
+    r.metavar = "R,G,B";
+    r.set = [](Settings& s, const SettingValue& v) { s.material.specularColor = TripleOf(v); };
+    r.get = [](const Settings& s) { return Triple(s.material.specularColor); };
+    t.push_back(r);
+  }
+  {
+    SettingRow r = Row("m", "BeckmannRoughness", "Roughness m", G::Material, K::Real);
+    r.maxCount = kMaxLobes;
+    // 0 marks an unused lobe; a used one must lie in [1e-3, 1e3]
+    // (ValidateMaterial).
+    r.min = 0;
+    r.max = 1e3;
+    r.doc = "Cook-Torrance RMS microfacet slopes m_k of the Beckmann mixture, one per lobe "
+            "(the leading positive values are the lobes)";
+    r.frontEnds = kCli | kParaView | kMapper | kExplorer;
+    r.metavar = "M[,M..]";
+    r.set = [](Settings& s, const SettingValue& v) {
+      Material<double>& m = s.material;
+      m.lobeCount = 0;
+      for (size_t k = 0; k < v.numbers.size() && v.numbers[k] > 0; ++k)
+      {
+        m.lobes[k].m = v.numbers[k];
+        m.lobeCount = static_cast<int>(k) + 1;
+      }
+      if (m.lobeCount == 0)
+      {
+        m.lobeCount = 1;
+        m.lobes[0].m = v.numbers[0]; // rejected by ValidateMaterial with its own message
+      }
+    };
+    r.get = [](const Settings& s) {
+      SettingValue v;
+      for (int k = 0; k < kMaxLobes; ++k)
+      {
+        v.numbers.push_back(k < s.material.lobeCount ? s.material.lobes[k].m : 0.0);
+      }
+      return v;
+    };
+    t.push_back(r);
+  }
+  {
+    SettingRow r = Row("w", "BeckmannWeights", "Lobe Weights w", G::Material, K::Real);
+    r.maxCount = kMaxLobes;
+    r.min = 0;
+    r.max = 1;
+    r.doc = "relative weights w_k of the Beckmann lobes, normalized to sum to 1 over the used "
+            "lobes";
+    r.frontEnds = kCli | kParaView | kMapper | kExplorer;
+    r.metavar = "W[,W..]";
+    r.set = [](Settings& s, const SettingValue& v) {
+      for (int k = 0; k < kMaxLobes; ++k)
+      {
+        s.material.lobes[k].weight = k < static_cast<int>(v.numbers.size()) ? v.numbers[k] : 0.0;
+      }
+    };
+    r.get = [](const Settings& s) {
+      SettingValue v;
+      for (int k = 0; k < kMaxLobes; ++k)
+      {
+        v.numbers.push_back(k < s.material.lobeCount ? s.material.lobes[k].weight : 0.0);
+      }
+      return v;
+    };
+    t.push_back(r);
+  }
+  {
+    SettingRow r = Row("eta", "Eta", "Index eta (RGB)", G::Material, K::Real);
+    r.maxCount = 3;
+    r.broadcast = true;
+    // An index below 0.01 or above 100 is no material (ValidateMaterial).
+    r.min = 0.01;
+    r.max = 100;
+    r.doc = "relative index of refraction per RGB channel, for the Fresnel term";
+    r.frontEnds = kCli | kParaView | kMapper | kExplorer;
+    r.metavar = "E[,E,E]";
+    r.set = [](Settings& s, const SettingValue& v) { s.material.eta = TripleOf(v); };
+    r.get = [](const Settings& s) { return Triple(s.material.eta); };
+    t.push_back(r);
+  }
+  {
+    SettingRow r = Row("k", "Extinction", "Extinction k (RGB)", G::Material, K::Real);
+    r.maxCount = 3;
+    r.broadcast = true;
+    r.min = 0;
+    r.max = 100;
+    r.doc = "extinction coefficient per RGB channel; any k > 0 selects the conductor Fresnel "
+            "with complex index eta + ik";
+    r.frontEnds = kCli | kParaView | kMapper | kExplorer;
+    r.metavar = "K[,K,K]";
+    r.set = [](Settings& s, const SettingValue& v) { s.material.k = TripleOf(v); };
+    r.get = [](const Settings& s) { return Triple(s.material.k); };
+    t.push_back(r);
+  }
+  {
+    SettingRow r = Row("variant", "SpecularVariant", "Specular Variant", G::Material, K::Choice);
+    r.choices = { { "1982", "Cook-Torrance 1982" }, { "walter", "Walter 2007" } };
+    r.doc = "Cook-Torrance denominator: (N.L)(N.V) as Cook & Torrance 1982 and the lecture, or "
+            "4(N.L)(N.V) of Walter et al. 2007 (eq. 1.5)";
+    r.frontEnds = kCli | kParaView | kMapper;
+    r.metavar = "V";
+    r.set = [](Settings& s, const SettingValue& v) {
+      s.material.variant =
+        v.numbers[0] == 0 ? SpecularVariant::CookTorrance1982 : SpecularVariant::Walter2007;
+    };
+    r.get = [](const Settings& s) {
+      return Number(s.material.variant == SpecularVariant::CookTorrance1982 ? 0 : 1);
+    };
+    t.push_back(r);
+  }
+
+  // --- normals made for a mesh without them ----------------------------
+  {
+    SettingRow r = Row("normal-weighting", "NormalWeighting", "Normal Weighting", G::Mesh, K::Choice);
+    r.choices = { { "uniform", "Uniform" }, { "area", "Area" }, { "angle", "Angle" },
+      { "max", "Max" } };
+    r.doc = "weighting of the vertex normals made when the data has none (or always, with "
+            "recompute-normals): uniform, area, angle (Thurmer & Wuthrich 1998) or Max (1999)";
+    r.frontEnds = kParaView | kMapper;
+    r.metavar = "W";
+    r.set = [](Settings& s, const SettingValue& v) { s.normals.weighting = static_cast<int>(v.numbers[0]); };
+    r.get = [](const Settings& s) { return Number(s.normals.weighting); };
+    t.push_back(r);
+  }
+  {
+    SettingRow r = Row("feature-angle", "FeatureAngle", "Feature Angle", G::Mesh, K::Real);
+    r.min = 0;
+    r.max = 180;
+    r.doc = "made normals are split where faces meet at more than this angle in degrees; 180 "
+            "splits nowhere";
+    r.frontEnds = kParaView | kMapper;
+    r.metavar = "DEG";
+    r.set = [](Settings& s, const SettingValue& v) { s.normals.featureAngle = v.numbers[0]; };
+    r.get = [](const Settings& s) { return Number(s.normals.featureAngle); };
+    t.push_back(r);
+  }
+  {
+    SettingRow r = Row("recompute-normals", "RecomputeNormals", "Recompute Normals", G::Mesh, K::Flag);
+    r.doc = "make normals with the weighting and feature angle even when the data has normals";
+    r.frontEnds = kParaView | kMapper;
+    r.set = [](Settings& s, const SettingValue& v) { s.normals.recompute = v.numbers[0] != 0; };
+    r.get = [](const Settings& s) { return Number(s.normals.recompute ? 1 : 0); };
+    t.push_back(r);
+  }
+  return t;
+}
+
+bool ParseReal(const std::string& text, double& value)
+{
+  const char* begin = text.c_str();
+  char* end = nullptr;
+  value = std::strtod(begin, &end);
+  return end != begin && *end == '\0' && std::isfinite(value);
+}
+
+} // namespace
+
+const std::vector<SettingRow>& SettingsTable()
+{
+  static const std::vector<SettingRow> table = MakeTable();
+  return table;
+}
+
+const SettingRow* FindSetting(const std::string& key)
+{
+  for (const auto& row : SettingsTable())
+  {
+    if (row.key == key)
+    {
+      return &row;
+    }
+  }
+  return nullptr;
+}
+
+std::string ParseSetting(
+  const SettingRow& row, const std::string& text, SettingValue& value, const std::string& prefix)
+{
+  const std::string name = prefix + row.key;
+  value = SettingValue{};
+  if (row.kind == SettingKind::Choice || row.kind == SettingKind::Text)
+  {
+    const std::string lower = Lower(text);
+    for (size_t i = 0; i < row.choices.size(); ++i)
+    {
+      if (lower == Lower(row.choices[i].key) || lower == Lower(row.choices[i].label))
+      {
+        value.numbers = { static_cast<double>(i) };
+        value.text = row.choices[i].key;
+        return {};
+      }
+    }
+    if (row.kind == SettingKind::Text && row.choices.empty())
+    {
+      value.text = text;
+      return {};
+    }
+    return "unknown " + name + " '" + text + "' (expected " + RangeText(row) + ")";
+  }
+  if (row.kind == SettingKind::Flag)
+  {
+    const std::string lower = Lower(text);
+    if (lower == "on" || lower == "1" || lower == "true" || lower.empty())
+    {
+      value.numbers = { 1 };
+      return {};
+    }
+    if (lower == "off" || lower == "0" || lower == "false")
+    {
+      value.numbers = { 0 };
+      return {};
+    }
+    return name + " takes on or off (got '" + text + "')";
+  }
+  std::stringstream in(text);
+  std::string item;
+  while (std::getline(in, item, ','))
+  {
+    double v = 0;
+    if (!ParseReal(item, v))
+    {
+      return name + ": '" + item + "' is not a finite number";
+    }
+    value.numbers.push_back(v);
+  }
+  if (value.numbers.empty())
+  {
+    return name + " needs a value";
+  }
+  return {};
+}
+
+std::string ApplySetting(
+  Settings& settings, const SettingRow& row, const SettingValue& value, const std::string& prefix)
+{
+  const std::string name = prefix + row.key;
+  if (row.kind == SettingKind::Choice || row.kind == SettingKind::Text)
+  {
+    if (row.kind == SettingKind::Choice || !row.choices.empty())
+    {
+      // A Text value may arrive as text only (ParaView's string property).
+      SettingValue v = value;
+      if (v.numbers.empty())
+      {
+        const std::string problem = ParseSetting(row, value.text, v, prefix);
+        if (!problem.empty())
+        {
+          return problem;
+        }
+      }
+      const double i = v.numbers.empty() ? -1 : v.numbers[0];
+      if (!(i >= 0 && i < static_cast<double>(row.choices.size())) || i != std::floor(i))
+      {
+        return name + " must be one of " + RangeText(row);
+      }
+      v.text = row.choices[static_cast<size_t>(i)].key;
+      row.set(settings, v);
+      return {};
+    }
+    row.set(settings, value);
+    return {};
+  }
+  const int count = static_cast<int>(value.numbers.size());
+  if (row.kind == SettingKind::Flag)
+  {
+    if (count != 1)
+    {
+      return name + " takes one value";
+    }
+    row.set(settings, value);
+    return {};
+  }
+  const bool countOk = count >= row.minCount && count <= row.maxCount &&
+    (!row.broadcast || count == 1 || count == row.maxCount);
+  if (!countOk)
+  {
+    return name + ": expected " +
+      (row.broadcast ? "1 or " + std::to_string(row.maxCount)
+                     : (row.minCount == row.maxCount ? std::to_string(row.minCount)
+                                                     : std::to_string(row.minCount) + " to " +
+                              std::to_string(row.maxCount))) +
+      " value" + (row.maxCount > 1 ? "s" : "") + ", got " + std::to_string(count);
+  }
+  for (double v : value.numbers)
+  {
+    if (!(v >= row.min && v <= row.max))
+    {
+      return name + " must be in " + RangeText(row) + " (got " + Number(v, 6) + ")";
+    }
+    if (row.kind == SettingKind::Integer && v != std::floor(v))
+    {
+      return name + " must be an integer (got " + Number(v, 6) + ")";
+    }
+  }
+  row.set(settings, value);
+  return {};
+}
+
+std::string ApplySettingText(
+  Settings& settings, const std::string& key, const std::string& text, const std::string& prefix)
+{
+  const SettingRow* row = FindSetting(key);
+  if (!row)
+  {
+    return "unknown setting '" + key + "'";
+  }
+  SettingValue value;
+  std::string problem = ParseSetting(*row, text, value, prefix);
+  return problem.empty() ? ApplySetting(settings, *row, value, prefix) : problem;
+}
+
+std::string FormatSetting(const SettingRow& row, const SettingValue& value)
+{
+  switch (row.kind)
+  {
+    case SettingKind::Choice:
+      return row.choices.at(static_cast<size_t>(value.numbers.at(0))).key;
+    case SettingKind::Text:
+      return value.text;
+    case SettingKind::Flag:
+      return value.numbers.at(0) != 0 ? "on" : "off";
+    default:
+    {
+      std::string out;
+      for (size_t i = 0; i < value.numbers.size(); ++i)
+      {
+        out += (i ? "," : "") + Number(value.numbers[i], 10);
+      }
+      return out;
+    }
+  }
+}
+
+std::string DefaultText(const SettingRow& row)
+{
+  return FormatSetting(row, row.get(Settings{}));
+}
+
+std::string RangeText(const SettingRow& row)
+{
+  if (!row.choices.empty())
+  {
+    std::string out;
+    for (size_t i = 0; i < row.choices.size(); ++i)
+    {
+      out += (i ? " | " : "") + row.choices[i].key;
+    }
+    return out;
+  }
+  if (row.kind == SettingKind::Flag)
+  {
+    return "on | off";
+  }
+  return "[" + Number(row.min, 6) + ", " + Number(row.max, 6) + "]";
+}
+
+bool SameSettings(const Settings& a, const Settings& b)
+{
+  for (const auto& row : SettingsTable())
+  {
+    const SettingValue va = row.get(a), vb = row.get(b);
+    if (va.numbers != vb.numbers || va.text != vb.text)
+    {
+      return false;
+    }
+  }
+  return true;
+}
+
+std::string CliHelp(SettingGroup group)
+{
+  // Two columns: the flag (with its value's name) and the documentation,
+  // wrapped at 92 columns.
+  constexpr size_t kFlagColumn = 28;
+  constexpr size_t kWidth = 92;
+  std::string out;
+  for (const auto& row : SettingsTable())
+  {
+    if (row.group != group || !(row.frontEnds & kCli))
+    {
+      continue;
+    }
+    std::string flag = "  --" + row.key + (row.kind == SettingKind::Flag ? "" : " " + row.metavar);
+    std::string doc = row.doc;
+    if (row.kind == SettingKind::Choice || row.kind == SettingKind::Text)
+    {
+      doc += ": " + RangeText(row);
+    }
+    else if (row.kind != SettingKind::Flag)
+    {
+      doc += "; " + RangeText(row);
+    }
+    if (row.kind != SettingKind::Flag)
+    {
+      doc += " (default " + DefaultText(row) + ")";
+    }
+    std::string line = flag;
+    if (line.size() + 1 > kFlagColumn)
+    {
+      out += line + "\n";
+      line.clear();
+    }
+    std::istringstream words(doc);
+    std::string word;
+    while (words >> word)
+    {
+      if (line.size() < kFlagColumn)
+      {
+        line.resize(kFlagColumn, ' ');
+      }
+      else if (line.size() + 1 + word.size() > kWidth)
+      {
+        out += line + "\n";
+        line.assign(kFlagColumn, ' ');
+      }
+      else
+      {
+        line += ' ';
+      }
+      line += word;
+    }
+    out += line + "\n";
+  }
+  return out;
+}
+
+void NormalizeLobeWeights(Material<double>& material)
+{
+  double sum = 0;
+  for (int k = 0; k < material.lobeCount; ++k)
+  {
+    sum += material.lobes[k].weight;
+  }
+  if (sum > 0)
+  {
+    for (int k = 0; k < material.lobeCount; ++k)
+    {
+      material.lobes[k].weight /= sum;
+    }
+  }
+}
+
+} // namespace shadinglab::render

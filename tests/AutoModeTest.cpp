@@ -313,3 +313,54 @@ TEST(AutoModeTest, PolygonsOfFewerThanThreeCornersCountNoTriangles)
   EXPECT_EQ(view.triangles, 1);
   EXPECT_EQ(view.visibleTriangles, 1);
 }
+
+TEST(AutoModeTest, TheRendererResolvesAutoAndSaysWhatItDrew)
+{
+  // Auto is a render option: the CPU renderer chooses inside Render, from
+  // the normals it draws with (made once for a mesh without them), and
+  // draws exactly what the chosen fixed mode draws.
+  sl::render::Mesh mesh = Icosphere(2);
+  mesh.normals.clear(); // area-weighted normals, made by the renderer
+  const View v = KeyLitView(mesh);
+  const sl::render::Scene scene{ &mesh, v.camera, v.lighting, Plastic() };
+  sl::cpu::SoftwareRenderer renderer;
+  sl::render::RenderOptions ro;
+  ro.width = v.width;
+  ro.height = v.height;
+  ro.mode = ShadingMode::Auto;
+  // 255/255: every mode complies, so the cheapest (flat or Gouraud, never
+  // Phong); 0.01/255: none does, so the most accurate, Phong.
+  for (const double budget : { 255.0, 0.01 })
+  {
+    ro.maxError = budget;
+    sl::render::RenderStats stats;
+    const sl::render::Image chosen = renderer.Render(scene, ro, &stats);
+    const ShadingMode expected = stats.drawnMode;
+    if (budget > 1)
+    {
+      EXPECT_TRUE(expected == ShadingMode::Flat || expected == ShadingMode::Gouraud)
+        << sl::render::ShadingModeName(expected);
+    }
+    else
+    {
+      EXPECT_EQ(expected, ShadingMode::Phong);
+    }
+    EXPECT_NE(stats.autoChoice.find(std::string("-> ") + sl::render::ShadingModeName(expected)),
+      std::string::npos) << stats.autoChoice;
+    EXPECT_TRUE(stats.normalsComputed);
+    sl::render::RenderOptions fixed = ro;
+    fixed.mode = expected;
+    sl::render::RenderStats fixedStats;
+    const sl::render::Image& drawn = renderer.Render(scene, fixed, &fixedStats);
+    EXPECT_EQ(chosen.rgb, drawn.rgb) << "budget " << budget;
+    EXPECT_EQ(fixedStats.drawnMode, expected);
+    EXPECT_TRUE(fixedStats.autoChoice.empty());
+  }
+  // A second auto frame of the unchanged mesh reuses the normals.
+  ro.maxError = 0.01;
+  sl::render::RenderStats again;
+  renderer.Render(scene, ro, &again);
+  EXPECT_TRUE(again.normalsCached);
+  ro.maxError = 0.0; // outside [kMinMaxError, kMaxMaxError]
+  EXPECT_THROW(renderer.Render(scene, ro), std::invalid_argument);
+}

@@ -557,7 +557,7 @@ void ExplorerGLTest::AutoPanelFollowsItsBudget()
     widgets::ComparisonWidget* view = window->Comparison();
     QCOMPARE(view->PanelCount(), 6);
     widgets::ShadingPanel* autoPanel = view->Panel(5);
-    QVERIFY(autoPanel->Spec().autoMode);
+    QVERIFY(autoPanel->Spec().mode == render::ShadingMode::Auto);
     const double budgets[2] = { 255.0, 0.01 };
     for (int k = 0; k < 2; ++k)
     {

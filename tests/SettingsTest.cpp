@@ -63,7 +63,7 @@ TEST(SettingsTest, ChoicesTakeBothSpellingsInAnyCase)
   EXPECT_GT(gold.material.k.x, 0.0); // a conductor
   sr::Settings autoMode;
   EXPECT_EQ(sr::ApplySettingText(autoMode, "mode", "Auto"), "");
-  EXPECT_TRUE(autoMode.autoMode);
+  EXPECT_EQ(autoMode.render.mode, sr::ShadingMode::Auto);
   sr::Settings lommel;
   EXPECT_EQ(sr::ApplySettingText(lommel, "model", "lommel-seeliger"), "");
   EXPECT_EQ(lommel.material.model, shadinglab::ReflectanceModel::LommelSeeliger);

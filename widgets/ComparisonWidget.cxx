@@ -170,6 +170,12 @@ void ComparisonWidget::SetLight(double azimuth, double elevation)
   this->RenderAll();
 }
 
+void ComparisonWidget::SetLightIntensity(double intensity)
+{
+  this->State.lightIntensity = intensity;
+  this->RenderAll();
+}
+
 void ComparisonWidget::RenderAll()
 {
   if (this->Fit.pending && !this->FitCamera() && this->FitRetries < kMaxFitRetries)

@@ -49,6 +49,8 @@ public:
   void SetCamera(const render::Camera& camera);
   /// The light in the camera's frame: re-renders every panel.
   void SetLight(double azimuth, double elevation);
+  /// The light's intensity I_L (the light-intensity setting); redraws all.
+  void SetLightIntensity(double intensity);
   void SetProfileTool(bool on) { this->State.profileTool = on; }
 
   void RenderAll();

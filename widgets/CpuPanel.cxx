@@ -6,7 +6,6 @@
 #include "PolyDataMesh.h"
 #include "VtkCamera.h"
 #include "shadinglab/cpu/SoftwareRenderer.h"
-#include "shadinglab/render/AutoMode.h"
 
 #include <vtkCamera.h>
 #include <vtkPolyData.h>
@@ -102,28 +101,14 @@ const render::Mesh& CpuMeshCache::Get(vtkPolyData* polydata)
   if (this->Source != polydata || this->Time != polydata->GetMTime())
   {
     this->Mesh = render::MeshFromPolyData(polydata, this->Frame);
-    this->AutoNormals.clear();
     this->Source = polydata;
     this->Time = polydata->GetMTime();
   }
   return this->Mesh;
 }
 
-const std::vector<float>& CpuMeshCache::Normals()
-{
-  if (!this->Mesh.normals.empty())
-  {
-    return this->Mesh.normals;
-  }
-  if (this->AutoNormals.empty())
-  {
-    this->AutoNormals = cpu::AreaWeightedNormals(this->Mesh); // what the renderer computes
-  }
-  return this->AutoNormals;
-}
-
 const render::Image& RenderOnCpu(cpu::SoftwareRenderer& renderer, CpuMeshCache& cache,
-  const PanelSpec& spec, const ViewState& view, int width, int height, render::ModeChoice* choice)
+  const PanelSpec& spec, const ViewState& view, int width, int height, render::RenderStats* stats)
 {
   render::Scene scene;
   scene.mesh = &cache.Get(spec.mesh);
@@ -137,18 +122,7 @@ const render::Image& RenderOnCpu(cpu::SoftwareRenderer& renderer, CpuMeshCache& 
   const double distance = Length(scene.camera.position);
   scene.camera.nearClip = std::max(distance - 1.01, 1e-3 * (distance + 1.01));
   scene.camera.farClip = distance + 1.01;
-  render::RenderOptions options = PanelOptions(spec, view, width, height);
-  if (spec.autoMode)
-  {
-    const render::ModeChoice chosen = render::ChooseMode(*scene.mesh, cache.Normals(),
-      scene.camera, scene.lighting, spec.material, width, height, spec.maxError);
-    options.mode = chosen.mode;
-    if (choice)
-    {
-      *choice = chosen;
-    }
-  }
-  return renderer.Render(scene, options);
+  return renderer.Render(scene, PanelOptions(spec, view, width, height), stats);
 }
 
 CpuPanel::CpuPanel(const PanelSpec& spec, ViewState* view, QWidget* parent)
@@ -187,11 +161,10 @@ bool CpuPanel::RenderView()
   const auto start = std::chrono::steady_clock::now();
   try
   {
-    render::ModeChoice choice;
-    choice.mode = this->SpecValue.mode;
+    render::RenderStats stats;
     this->Last = RenderOnCpu(
-      *this->Renderer, this->Cache, this->SpecValue, *this->View, width, height, &choice);
-    this->NoteDrawnMode(choice.mode, choice.why);
+      *this->Renderer, this->Cache, this->SpecValue, *this->View, width, height, &stats);
+    this->NoteDrawnMode(stats.drawnMode, stats.autoChoice);
   }
   catch (const std::exception& e)
   {

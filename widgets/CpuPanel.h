@@ -5,7 +5,6 @@
 #pragma once
 
 #include "ShadingPanel.h"
-#include "shadinglab/render/AutoMode.h"
 
 #include <QImage>
 
@@ -30,21 +29,19 @@ struct CpuMeshCache
   render::WorldFrame Frame;
   const void* Source = nullptr; ///< the vtkPolyData Mesh was made from
   unsigned long Time = 0;       ///< and its modification time then
-  std::vector<float> AutoNormals; ///< Mesh's normals, or area-weighted (auto mode)
   const render::Mesh& Get(vtkPolyData* polydata);
-  /// The vertex normals the auto mode reads (Mesh must be current).
-  const std::vector<float>& Normals();
 };
 
 /**
  * Renders `spec` as a panel of `view` would at width x height with the CPU
  * renderer (the shared camera and light, clipping fitted to the mesh).
  * The panels and the explorer's parameter studies both draw through it.
+ * An auto panel's choice is the renderer's (`stats`: drawnMode, autoChoice).
  * Throws what Renderer::Render throws.
  */
 const render::Image& RenderOnCpu(cpu::SoftwareRenderer& renderer, CpuMeshCache& cache,
   const PanelSpec& spec, const ViewState& view, int width, int height,
-  render::ModeChoice* choice = nullptr);
+  render::RenderStats* stats = nullptr);
 
 class CpuPanel final : public ShadingPanel
 {

@@ -62,14 +62,6 @@ void GpuPanel::Configure()
   this->Mapper->SetInputData(this->SpecValue.mesh);
   const render::RenderOptions options = PanelOptions(this->SpecValue, *this->View, 1, 1);
   gl::ConfigureActor(options, this->SpecValue.material, this->Mapper, this->Actor);
-  if (this->SpecValue.autoMode)
-  {
-    // The mapper chooses at every render, from the camera, size and lights.
-    render::Settings settings = this->Mapper->GetSettings();
-    settings.autoMode = true;
-    settings.maxError = this->SpecValue.maxError;
-    this->Mapper->SetSettings(settings);
-  }
 }
 
 void GpuPanel::OnSpecChanged()

@@ -2,6 +2,7 @@
 #include "MaterialEditor.h"
 
 #include "shadinglab/model/Materials.h"
+#include "shadinglab/render/Settings.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -49,25 +50,25 @@ MaterialEditor::MaterialEditor(QWidget* parent)
   this->Lobes->addItem("1 Beckmann lobe");
   this->Lobes->addItem("2 lobes (mixture)");
   form->addRow("Roughness", this->Lobes);
-  this->AddRow("kd", 0.0, 1.0, false, &this->Value.kd);
-  this->AddRow("ks", 0.0, 1.0, false, &this->Value.ks);
-  this->AddRow("shininess n", 1.0, 1000.0, true, &this->Value.shininess);
-  this->AddRow("m (lobe 1)", kMinRoughness<double>, 1.0, true, &this->Value.lobes[0].m);
-  this->AddRow("weight lobe 1", 0.0, 1.0, false, &this->Value.lobes[0].weight);
-  this->AddRow("m (lobe 2)", kMinRoughness<double>, 1.0, true, &this->Value.lobes[1].m);
-  this->AddRow("eta R", 0.05, 4.0, false, &this->Value.eta.x);
-  this->AddRow("eta G", 0.05, 4.0, false, &this->Value.eta.y);
-  this->AddRow("eta B", 0.05, 4.0, false, &this->Value.eta.z);
-  this->AddRow("k R", 0.0, 10.0, false, &this->Value.k.x);
-  this->AddRow("k G", 0.0, 10.0, false, &this->Value.k.y);
-  this->AddRow("k B", 0.0, 10.0, false, &this->Value.k.z);
-  this->AddRow("albedo R", 0.0, 1.0, false, &this->Value.diffuseColor.x);
-  this->AddRow("albedo G", 0.0, 1.0, false, &this->Value.diffuseColor.y);
-  this->AddRow("albedo B", 0.0, 1.0, false, &this->Value.diffuseColor.z);
-  this->AddRow("specular R", 0.0, 1.0, false, &this->Value.specularColor.x);
-  this->AddRow("specular G", 0.0, 1.0, false, &this->Value.specularColor.y);
-  this->AddRow("specular B", 0.0, 1.0, false, &this->Value.specularColor.z);
-  this->AddRow("ambient", 0.0, 0.5, false, &this->Value.ambient.x);
+  this->AddRow("kd", "kd", 0.0, 1.0, false, &this->Value.kd);
+  this->AddRow("ks", "ks", 0.0, 1.0, false, &this->Value.ks);
+  this->AddRow("shininess", "shininess n", 1.0, 1000.0, true, &this->Value.shininess);
+  this->AddRow("m", "m (lobe 1)", kMinRoughness<double>, 1.0, true, &this->Value.lobes[0].m);
+  this->AddRow("w", "weight lobe 1", 0.0, 1.0, false, &this->Value.lobes[0].weight);
+  this->AddRow("m", "m (lobe 2)", kMinRoughness<double>, 1.0, true, &this->Value.lobes[1].m);
+  this->AddRow("eta", "eta R", 0.05, 4.0, false, &this->Value.eta.x);
+  this->AddRow("eta", "eta G", 0.05, 4.0, false, &this->Value.eta.y);
+  this->AddRow("eta", "eta B", 0.05, 4.0, false, &this->Value.eta.z);
+  this->AddRow("k", "k R", 0.0, 10.0, false, &this->Value.k.x);
+  this->AddRow("k", "k G", 0.0, 10.0, false, &this->Value.k.y);
+  this->AddRow("k", "k B", 0.0, 10.0, false, &this->Value.k.z);
+  this->AddRow("albedo", "albedo R", 0.0, 1.0, false, &this->Value.diffuseColor.x);
+  this->AddRow("albedo", "albedo G", 0.0, 1.0, false, &this->Value.diffuseColor.y);
+  this->AddRow("albedo", "albedo B", 0.0, 1.0, false, &this->Value.diffuseColor.z);
+  this->AddRow("specular", "specular R", 0.0, 1.0, false, &this->Value.specularColor.x);
+  this->AddRow("specular", "specular G", 0.0, 1.0, false, &this->Value.specularColor.y);
+  this->AddRow("specular", "specular B", 0.0, 1.0, false, &this->Value.specularColor.z);
+  this->AddRow("ambient", "ambient", 0.0, 0.5, false, &this->Value.ambient.x);
   for (const Row& row : this->Rows)
   {
     auto* line = new QWidget(this);
@@ -121,15 +122,22 @@ MaterialEditor::MaterialEditor(QWidget* parent)
   this->Refresh();
 }
 
-void MaterialEditor::AddRow(
-  const QString& label, double lo, double hi, bool logScale, double* target)
+void MaterialEditor::AddRow(const char* key, const QString& label, double lo, double hi,
+  bool logScale, double* target)
 {
-  Row row{ label, lo, hi, logScale, new QSlider(Qt::Horizontal, this),
-    new QDoubleSpinBox(this), target };
+  // The value's range and documentation are the settings table's (one
+  // home for every front end); [lo, hi] is the part the slider spans.
+  const render::SettingRow* setting = render::FindSetting(key);
+  Row row{ label, lo, hi, setting->min, setting->max, logScale,
+    new QSlider(Qt::Horizontal, this), new QDoubleSpinBox(this), target };
   row.slider->setRange(0, kSliderSteps);
   row.slider->setObjectName(label); // found by label (tests, scripting)
-  row.box->setRange(lo, hi);
+  row.box->setRange(row.min, row.max);
   row.box->setDecimals(hi > 100 ? 1 : 3);
+  const QString tip = QString::fromStdString(setting->doc + " (" + render::RangeText(*setting) +
+    "; --" + setting->key + " on the command line)");
+  row.slider->setToolTip(tip);
+  row.box->setToolTip(tip);
   row.box->setSingleStep((hi - lo) / 100.0);
   row.box->setKeyboardTracking(false);
   const int index = static_cast<int>(this->Rows.size());
@@ -157,7 +165,7 @@ void MaterialEditor::AddRow(
 void MaterialEditor::OnRowEdited(int index, double value)
 {
   Row& row = this->Rows[index];
-  *row.target = std::clamp(value, row.lo, row.hi);
+  *row.target = std::clamp(value, row.min, row.max);
   Material<double>& m = this->Value;
   // kd + ks <= 1 (docs/model.md eq. 1.2): the other coefficient gives way.
   if (row.target == &m.kd && m.kd + m.ks > 1.0)
@@ -209,9 +217,10 @@ void MaterialEditor::Refresh()
   this->Updating = true;
   for (Row& row : this->Rows)
   {
-    const double v = std::clamp(*row.target, row.lo, row.hi);
-    const double t = row.logScale ? std::log(v / row.lo) / std::log(row.hi / row.lo)
-                                  : (v - row.lo) / (row.hi - row.lo);
+    const double v = std::clamp(*row.target, row.min, row.max);
+    const double onSlider = std::clamp(v, row.lo, row.hi);
+    const double t = row.logScale ? std::log(onSlider / row.lo) / std::log(row.hi / row.lo)
+                                  : (onSlider - row.lo) / (row.hi - row.lo);
     row.slider->setValue(static_cast<int>(std::lround(t * kSliderSteps)));
     row.box->setValue(v);
   }

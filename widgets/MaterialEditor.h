@@ -39,13 +39,17 @@ private:
   struct Row
   {
     QString label;
-    double lo, hi;
+    double lo, hi;   ///< the slider's span
+    double min, max; ///< the setting's range (shadinglab/render/Settings.h)
     bool logScale;
     QSlider* slider;
     QDoubleSpinBox* box;
     double* target;
   };
-  void AddRow(const QString& label, double lo, double hi, bool logScale, double* target);
+  /// A slider and spin box for `target`, the setting `key`'s value (or one
+  /// channel of it).
+  void AddRow(const char* key, const QString& label, double lo, double hi, bool logScale,
+    double* target);
   void OnRowEdited(int index, double value);
   void Refresh();
   void Emit();

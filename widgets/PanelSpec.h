@@ -24,11 +24,10 @@ struct PanelSpec
   /// may share one mesh or show different ones (repair, subdivision, normal
   /// weightings) under the one camera.
   vtkSmartPointer<vtkPolyData> mesh;
-  render::ShadingMode mode = render::ShadingMode::Phong;
   /// Auto: at every render, the cheapest of flat, Gouraud and Phong
   /// predicted to keep the mean error under maxError (1/255) for this mesh,
-  /// view and material (render::ChooseMode); `mode` is then unused.
-  bool autoMode = false;
+  /// view and material, chosen by the panel's renderer.
+  render::ShadingMode mode = render::ShadingMode::Phong;
   double maxError = 1.0;
   Material<double> material;
   /// GPU by default; a GPU panel without OpenGL >= 3.2 becomes a CPU panel

@@ -137,7 +137,7 @@ void ShadingPanel::UpdateTitle()
 void ShadingPanel::NoteDrawnMode(render::ShadingMode drawn, const std::string& why)
 {
   this->Drawn = drawn;
-  if (this->SpecValue.autoMode)
+  if (this->SpecValue.mode == render::ShadingMode::Auto)
   {
     this->AutoNote = QString("(auto: %1)").arg(render::ShadingModeName(drawn));
     this->TitleLabel->setToolTip(QString("Auto mode, max error %1/255: %2")
@@ -189,6 +189,7 @@ render::RenderOptions PanelOptions(const PanelSpec& spec, const ViewState& view,
 {
   render::RenderOptions options;
   options.mode = spec.mode;
+  options.maxError = spec.maxError;
   options.interpolation = spec.interpolation;
   options.polygons = spec.polygons;
   options.width = width;

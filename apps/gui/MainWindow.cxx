@@ -209,6 +209,7 @@ bool MainWindow::LoadScene(const std::string& name, std::string& error)
   this->View->View().lightIntensity = scene.lightIntensity;
   this->LightAzimuth->setValue(static_cast<int>(scene.lightAzimuth));
   this->LightElevation->setValue(static_cast<int>(scene.lightElevation));
+  this->LightIntensity->setValue(scene.lightIntensity);
   this->Perceived->setChecked(scene.perceived);
   this->ProfileChart->SetShowPerceived(scene.perceived);
   for (int i = 0; i < this->SceneNames->count(); ++i)
@@ -326,9 +327,9 @@ void MainWindow::OnPanelSelected(int index)
   this->Updating = true;
   this->PanelLabel->setText(QString("Panel %1: %2").arg(index + 1).arg(panel->Title()));
   this->Mode->setCurrentIndex(
-    this->Mode->findData(spec.autoMode ? kAutoModeItem : static_cast<int>(spec.mode)));
+    this->Mode->findData(static_cast<int>(spec.mode)));
   this->MaxError->setValue(spec.maxError);
-  this->MaxError->setEnabled(spec.autoMode);
+  this->MaxError->setEnabled(spec.mode == render::ShadingMode::Auto);
   this->Backend->setCurrentIndex(this->Backend->findData(static_cast<int>(spec.backend)));
   this->Interpolation->setCurrentIndex(
     this->Interpolation->findData(static_cast<int>(spec.interpolation)));
@@ -344,19 +345,14 @@ void MainWindow::OnPanelEdited()
   }
   const int index = this->View->CurrentPanel();
   widgets::PanelSpec spec = this->View->Panel(index)->Spec();
-  const int mode = this->Mode->currentData().toInt();
-  spec.autoMode = mode == kAutoModeItem;
-  if (!spec.autoMode)
-  {
-    spec.mode = static_cast<render::ShadingMode>(mode);
-  }
+  spec.mode = static_cast<render::ShadingMode>(this->Mode->currentData().toInt());
   spec.maxError = this->MaxError->value();
-  this->MaxError->setEnabled(spec.autoMode);
+  this->MaxError->setEnabled(spec.mode == render::ShadingMode::Auto);
   spec.interpolation =
     static_cast<render::InterpolationSpace>(this->Interpolation->currentData().toInt());
   spec.material = this->Editor->GetMaterial();
   const auto backend = static_cast<render::Backend>(this->Backend->currentData().toInt());
-  if (!spec.autoMode && !render::SupportsModel(spec.mode, spec.material.model))
+  if (!render::SupportsModel(spec.mode, spec.material.model))
   {
     this->statusBar()->showMessage(QString("%1 cannot evaluate %2; choose another mode")
                                      .arg(render::ShadingModeLabel(spec.mode))

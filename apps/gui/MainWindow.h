@@ -88,12 +88,11 @@ private:
   QLabel* PanelLabel;
   QComboBox* Mode;
   QDoubleSpinBox* MaxError; ///< auto mode's budget (enabled with auto)
-  /// The Mode box's item data for auto (not a render::ShadingMode).
-  static constexpr int kAutoModeItem = -1;
   QComboBox* Backend;
   QComboBox* Interpolation;
   QSlider* LightAzimuth;
   QSlider* LightElevation;
+  QDoubleSpinBox* LightIntensity; ///< the light-intensity setting: I_L of the one light
   QComboBox* Weighting;
   QDoubleSpinBox* CreaseAngle;
   QSpinBox* Subdivision;

@@ -8,6 +8,7 @@
 #include "ComparisonWidget.h"
 #include "MaterialEditor.h"
 #include "ProfilePlot.h"
+#include "SettingControls.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -45,21 +46,12 @@ QWidget* MainWindow::BuildControls()
   this->PanelLabel = new QLabel;
   this->PanelLabel->setWordWrap(true);
   panelForm->addRow(this->PanelLabel);
-  this->Mode = new QComboBox;
-  for (const auto& row : render::kShadingModes)
-  {
-    this->Mode->addItem(row.label, static_cast<int>(row.value));
-  }
-  this->Mode->addItem("Auto (cheapest under the error budget)", kAutoModeItem);
+  // Choices, ranges and tooltips from the settings table.
+  this->Mode = widgets::MakeSettingComboBox("mode");
   panelForm->addRow("Shading", this->Mode);
-  this->MaxError = new QDoubleSpinBox;
-  this->MaxError->setRange(0.01, 255.0);
-  this->MaxError->setDecimals(2);
+  this->MaxError = widgets::MakeSettingSpinBox("max-error");
   this->MaxError->setSingleStep(0.5);
-  this->MaxError->setValue(1.0);
   this->MaxError->setEnabled(false); // until an auto panel is selected
-  this->MaxError->setToolTip("Auto mode: the mean error allowed against exact shading, in 1/255 "
-                             "(docs/model.md section 4); the title shows the mode chosen.");
   panelForm->addRow("Max error (1/255)", this->MaxError);
   connect(this->MaxError, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
     &MainWindow::OnPanelEdited);
@@ -67,11 +59,7 @@ QWidget* MainWindow::BuildControls()
   this->Backend->addItem("GPU (ShadingLab mapper)", static_cast<int>(render::Backend::GPU));
   this->Backend->addItem("CPU (software renderer)", static_cast<int>(render::Backend::CPU));
   panelForm->addRow("Backend", this->Backend);
-  this->Interpolation = new QComboBox;
-  for (const auto& row : render::kInterpolationSpaces)
-  {
-    this->Interpolation->addItem(row.label, static_cast<int>(row.value));
-  }
+  this->Interpolation = widgets::MakeSettingComboBox("interp");
   panelForm->addRow("Interpolation", this->Interpolation);
   layout->addWidget(panelBox);
   for (QComboBox* box : { this->Mode, this->Backend, this->Interpolation })
@@ -92,6 +80,16 @@ QWidget* MainWindow::BuildControls()
   this->LightElevation = MakeSlider(-90, 90, 25);
   lightForm->addRow("Azimuth (deg)", this->LightAzimuth);
   lightForm->addRow("Elevation (deg)", this->LightElevation);
+  this->LightIntensity = widgets::MakeSettingSpinBox("light-intensity");
+  this->LightIntensity->setSingleStep(0.1);
+  lightForm->addRow("Intensity I_L", this->LightIntensity);
+  connect(this->LightIntensity, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
+    [this](double intensity) {
+      if (!this->Updating)
+      {
+        this->View->SetLightIntensity(intensity);
+      }
+    });
   layout->addWidget(lightBox);
   for (QSlider* slider : { this->LightAzimuth, this->LightElevation })
   {

@@ -114,7 +114,7 @@ Scene Modes(const SceneOptions& o)
     Panel("Fast Phong (Bishop & Weimer)", mesh, ShadingMode::FastPhong, Plastic(), b),
     Panel("Cook-Torrance (Phong mode)", mesh, ShadingMode::Phong, Preset("plastic"), b),
     Panel("Auto: cheapest within 2/255", mesh, ShadingMode::Phong, Plastic(), b) };
-  s.panels.back().autoMode = true;
+  s.panels.back().mode = render::ShadingMode::Auto;
   s.panels.back().maxError = 2.0;
   s.elevation = 35;
   s.azimuth = 15;

@@ -73,7 +73,7 @@ int RunRender(int argc, char** argv)
                 "\"fast_phong_as_phong\":%s,\"threads\":%d,"
                 "\"shader_builds\":%d,\"normals_computed\":%s,\"read_ms\":%.3f,"
                 "\"prepare_ms\":%.3f,\"render_ms\":%.3f,\"write_ms\":%.3f,\"total_ms\":%.3f%s}\n",
-      render::BackendName(renderer->GetBackend()), render::ShadingModeName(options.mode),
+      render::BackendName(renderer->GetBackend()), render::ShadingModeName(stats.drawnMode),
       ReflectanceModelName(request->scene.material.model), options.width, options.height, options.ssaa,
       stats.milliseconds, static_cast<long long>(stats.polygons),
       static_cast<long long>(stats.triangles), static_cast<long long>(stats.rasterized),
@@ -88,7 +88,7 @@ int RunRender(int argc, char** argv)
       stats.threads, stats.shaderBuilds,
       stats.normalsComputed ? "true" : "false", request->readMs, request->prepareMs,
       stats.milliseconds, writeMs, total.Milliseconds(),
-      request->autoChoice.empty() ? "" : (",\"auto\":\"" + request->autoChoice + "\"").c_str());
+      stats.autoChoice.empty() ? "" : (",\"auto\":\"" + stats.autoChoice + "\"").c_str());
   }
   return 0;
 }

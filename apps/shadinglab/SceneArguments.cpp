@@ -9,7 +9,6 @@
 #include "RepairCheck.h"
 #include "PolyDataMesh.h"
 #include "shadinglab/cpu/SoftwareRenderer.h"
-#include "shadinglab/render/AutoMode.h"
 #include "shadinglab/model/Materials.h"
 
 #include <vtkPolyData.h>
@@ -111,15 +110,16 @@ std::unique_ptr<SceneArguments> SceneFromArguments(int argc, char** argv, const 
   }
   ApplySettingArguments(args, render::SettingGroup::Render, settings, implied);
   ApplySettingArguments(args, render::SettingGroup::Lights, settings);
-  if (settings.autoMode && !args.Has("max-error"))
+  render::RenderOptions& options = settings.render;
+  const bool autoMode = options.mode == render::ShadingMode::Auto;
+  if (autoMode && !args.Has("max-error"))
   {
     throw UsageError("--mode auto needs --max-error E (the mean error allowed, in 1/255)");
   }
-  if (!settings.autoMode && args.Has("max-error"))
+  if (!autoMode && args.Has("max-error"))
   {
     throw UsageError("--max-error is for --mode auto");
   }
-  render::RenderOptions& options = settings.render;
   {
     const std::string size = args.Get("size", "1024x768");
     const auto x = size.find('x');
@@ -144,7 +144,7 @@ std::unique_ptr<SceneArguments> SceneFromArguments(int argc, char** argv, const 
   const double lightIntensity = settings.lightIntensity;
   ApplyMaterialArguments(args, true, cookTorranceShorthand ? "cook-torrance" : "", settings);
   const Material<double>& material = settings.material;
-  if (!settings.autoMode && !render::SupportsModel(options.mode, material.model))
+  if (!render::SupportsModel(options.mode, material.model))
   {
     throw UsageError(std::string("fast-phong evaluates (N.L), (N.H)^n and (R.V)^n quadratics: use "
                                  "a lambert, phong or blinn-phong material (or another --mode for ") +
@@ -332,17 +332,6 @@ std::unique_ptr<SceneArguments> SceneFromArguments(int argc, char** argv, const 
   }
   lighting.ambientIntensity = Vec3<double>(1, 1, 1);
 
-  if (settings.autoMode)
-  {
-    // The renderers' normals when the mesh has none: area-weighted.
-    const std::vector<float> normals =
-      result->mesh.normals.empty() ? cpu::AreaWeightedNormals(result->mesh) : result->mesh.normals;
-    const render::ModeChoice choice = render::ChooseMode(result->mesh, normals,
-      scene.scene.camera, lighting, scene.scene.material, options.width, options.height,
-      settings.maxError);
-    scene.options.mode = choice.mode;
-    result->autoChoice = choice.why;
-  }
   result->prepareMs = preparing.Milliseconds();
   return result;
 }

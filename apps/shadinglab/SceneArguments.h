@@ -30,12 +30,11 @@ struct SceneArguments
   render::WorldFrame frame;
   render::Scene scene; ///< scene.mesh points at `mesh`
   render::Settings settings; ///< everything the settings table's flags set
-  render::RenderOptions options; ///< settings.render, auto's choice made
+  render::RenderOptions options; ///< settings.render with the size
   render::DisplayTransform display = render::DisplayTransform::Clamp;
   std::string notices; ///< said after success (errors stay one line)
-  std::string autoChoice; ///< --mode auto: what was chosen and why (--stats)
   double readMs = 0;    ///< reading (and checking) the input file
-  double prepareMs = 0; ///< the repair check, repair, conversion, auto choice
+  double prepareMs = 0; ///< the repair check, repair, conversion
 };
 
 /// The options 'render' and 'compare' accept, in their --help.

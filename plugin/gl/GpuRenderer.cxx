@@ -142,17 +142,16 @@ const render::Image& GpuRenderer::Render(
     stats->milliseconds =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     stats->polygons = scene.mesh->NumberOfPolygons();
-    for (int64_t p = 0; p < stats->polygons; ++p)
-    {
-      stats->triangles += scene.mesh->offsets[p + 1] - scene.mesh->offsets[p] - 2;
-    }
+    stats->triangles = scene.mesh->NumberOfTriangles();
     for (uint8_t c : in.Output.covered)
     {
       stats->pixelsCovered += c;
     }
     stats->shaderBuilds = in.Mapper->GetShaderBuildCount() - buildsBefore;
-    stats->normalsComputed = scene.mesh->normals.empty() &&
-      options.mode != render::ShadingMode::Flat;
+    stats->drawnMode = static_cast<render::ShadingMode>(in.Mapper->GetDrawnMode());
+    stats->autoChoice = in.Mapper->GetAutoChoice();
+    stats->normalsComputed =
+      scene.mesh->normals.empty() && stats->drawnMode != render::ShadingMode::Flat;
   }
   return in.Output;
 }

@@ -23,7 +23,6 @@ void ConfigureActor(const render::RenderOptions& options, const Material<double>
 {
   render::Settings settings = mapper->GetSettings();
   settings.render = options;
-  settings.autoMode = false;
   settings.material = material;
   mapper->SetSettings(settings);
   mapper->ScalarVisibilityOn();

@@ -79,6 +79,7 @@ static_assert(vtkShadingLabPolyDataMapper::FLAT == static_cast<int>(shadinglab::
   vtkShadingLabPolyDataMapper::GOURAUD == static_cast<int>(shadinglab::render::ShadingMode::Gouraud) &&
   vtkShadingLabPolyDataMapper::PHONG == static_cast<int>(shadinglab::render::ShadingMode::Phong) &&
   vtkShadingLabPolyDataMapper::FAST_PHONG == static_cast<int>(shadinglab::render::ShadingMode::FastPhong) &&
+  vtkShadingLabPolyDataMapper::AUTO == static_cast<int>(shadinglab::render::ShadingMode::Auto) &&
   shadinglab::render::kShadingModeCount == 4);
 
 vtkShadingLabPolyDataMapper::vtkShadingLabPolyDataMapper()
@@ -96,7 +97,7 @@ std::string VariantKey(const sl::render::Settings& s)
   const sl::Material<double>& m = s.material;
   return std::to_string(static_cast<int>(m.model)) + "/" + std::to_string(m.ks > 0) + "/" +
     std::to_string(m.lobeCount) + "/" + std::to_string(m.IsConductor()) + "/" +
-    std::to_string(s.autoMode) + "/" + std::to_string(static_cast<int>(s.render.mode)) + "/" +
+    std::to_string(static_cast<int>(s.render.mode)) + "/" +
     std::to_string(static_cast<int>(s.render.interpolation));
 }
 } // namespace
@@ -108,7 +109,7 @@ void vtkShadingLabPolyDataMapper::SetSettings(const sl::render::Settings& settin
   // other changes reach the GPU through the uniform comparison.
   sl::render::Settings& current = this->Internal->Settings;
   const bool modified = VariantKey(current) != VariantKey(settings) ||
-    current.maxError != settings.maxError ||
+    current.render.maxError != settings.render.maxError ||
     current.normals.weighting != settings.normals.weighting ||
     current.normals.featureAngle != settings.normals.featureAngle ||
     current.normals.recompute != settings.normals.recompute;
@@ -188,13 +189,16 @@ void vtkShadingLabPolyDataMapper::SetPropertyShaderParameters(
 int vtkShadingLabPolyDataMapper::GetDrawnMode() const
 {
   const sl::render::Settings& s = this->Internal->Settings;
-  return s.autoMode ? this->Internal->Drawn : static_cast<int>(s.render.mode);
+  return s.render.mode == sl::render::ShadingMode::Auto ? this->Internal->Drawn
+                                                       : static_cast<int>(s.render.mode);
 }
 
 const std::string& vtkShadingLabPolyDataMapper::GetAutoChoice() const
 {
   static const std::string none;
-  return this->Internal->Settings.autoMode ? this->Internal->AutoChoice : none;
+  return this->Internal->Settings.render.mode == sl::render::ShadingMode::Auto
+    ? this->Internal->AutoChoice
+    : none;
 }
 
 int vtkShadingLabPolyDataMapper::EffectiveMode() const
@@ -239,7 +243,7 @@ void vtkShadingLabPolyDataMapper::ChooseAutoMode(vtkRenderer* ren, vtkPolyData* 
     static_cast<double>(input->GetMTime()), static_cast<double>(this->GetMTime()),
     static_cast<double>(ren->GetActiveCamera()->GetMTime()),
     static_cast<double>(ren->GetSize()[0]), static_cast<double>(ren->GetSize()[1]),
-    in.Settings.maxError, in.Settings.lightIntensity };
+    in.Settings.render.maxError, in.Settings.lightIntensity };
   {
     vtkCollectionSimpleIterator lit;
     ren->GetLights()->InitTraversal(lit);
@@ -264,7 +268,7 @@ void vtkShadingLabPolyDataMapper::ChooseAutoMode(vtkRenderer* ren, vtkPolyData* 
   const int* size = ren->GetSize();
   const sl::render::ModeChoice choice = sl::render::ChooseMode(in.AutoMesh, in.AutoNormals,
     camera, lighting, in.Settings.material, std::max(size[0], 1), std::max(size[1], 1),
-    in.Settings.maxError);
+    in.Settings.render.maxError);
   in.Drawn = static_cast<int>(choice.mode);
   in.AutoChoice = choice.why;
 }
@@ -320,7 +324,7 @@ void vtkShadingLabPolyDataMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* a
 {
   vtkPolyData* input = this->CurrentInput;
   const sl::render::NormalSettings& made = this->Internal->Settings.normals;
-  if (this->Internal->Settings.autoMode)
+  if (this->Internal->Settings.render.mode == sl::render::ShadingMode::Auto)
   {
     this->ChooseAutoMode(ren, input);
   }

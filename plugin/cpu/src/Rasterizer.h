@@ -252,7 +252,7 @@ private:
     {
       const int64_t first = offsets[p];
       const int64_t size = offsets[p + 1] - first;
-      state.triangles += std::max<int64_t>(0, size - 2); // for the stats
+      state.triangles += render::TrianglesInPolygon(size); // for the stats
       const int n = static_cast<int>(std::min<int64_t>(size, kMaxPolygonVertices - 1));
       if (n < 3)
       {

@@ -11,6 +11,7 @@
 #include "Rasterizer.h"
 #include "ShadingStages.h"
 #include "VertexNormals.h"
+#include "shadinglab/render/AutoMode.h"
 
 #include <algorithm>
 #include <chrono>
@@ -143,6 +144,11 @@ public:
     const render::RenderOptions& options,
     RenderStats* stats);
 
+  /// Run with ShadingMode::Auto resolved (ChooseMode) from this mesh's
+  /// normals, made once per mesh version and shared with the drawing.
+  const Image& RunAuto(const render::Scene& scene, const Lighting<double>& lights,
+    const render::RenderOptions& options, RenderStats* stats);
+
 private:
   template<typename StageT>
   int64_t Rasterize(std::vector<ThreadState>& states)
@@ -157,6 +163,22 @@ private:
   ClosedMeshCache Closed;
   std::vector<float> ComputedNormals; ///< area-weighted, for a mesh without normals
   std::optional<uint64_t> NormalsFor;  ///< the content hash they were made for
+  /// This frame's content hash when Render already computed it (Auto).
+  std::optional<uint64_t> FrameHash;
+
+  /// The area-weighted normals of a mesh without normals, made once per
+  /// mesh version (kept while its arrays hash the same); `cached` says
+  /// whether they were an earlier frame's.
+  const std::vector<float>& ComputedNormalsOf(const Mesh& mesh, uint64_t hash, bool& cached)
+  {
+    cached = this->NormalsFor == hash;
+    if (!cached)
+    {
+      this->ComputedNormals = AreaWeightedNormals(mesh);
+      this->NormalsFor = hash;
+    }
+    return this->ComputedNormals;
+  }
   std::vector<float> Rgb;
   std::vector<uint8_t> Covered;
   std::vector<uint16_t> Coverage;
@@ -204,7 +226,8 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh,
   {
     if (!hashed)
     {
-      fingerprint = mesh.ContentHash(SpreadOver(this->Buffers.Pool, F.Threads));
+      fingerprint = this->FrameHash ? *this->FrameHash
+                                    : mesh.ContentHash(SpreadOver(this->Buffers.Pool, F.Threads));
       hashed = true;
     }
     return fingerprint;
@@ -233,15 +256,9 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh,
     {
       // Made once per mesh, not per frame: kept while its arrays hash the
       // same (a redraw of a large mesh without normals otherwise paid
-      // the whole normal pass every frame).
-      // (The hash covers the arrays' sizes too.)
-      normalsCached = this->NormalsFor == contentHash();
-      if (!normalsCached)
-      {
-        this->ComputedNormals = AreaWeightedNormals(mesh);
-        this->NormalsFor = contentHash();
-      }
-      F.NormalData = this->ComputedNormals.data();
+      // the whole normal pass every frame). The hash covers the arrays'
+      // sizes too.
+      F.NormalData = this->ComputedNormalsOf(mesh, contentHash(), normalsCached).data();
       computedNormals = true;
     }
   }
@@ -284,6 +301,7 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh,
   {
     switch (F.Opt.mode)
     {
+      case ShadingMode::Auto: // resolved by RunAuto before Run
       case ShadingMode::Flat:
         degenerateBeforeRows = this->Rasterize<FlatStage>(states);
         break;
@@ -352,6 +370,7 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh,
     stats->threads = F.Threads;
     stats->normalsComputed = computedNormals;
     stats->normalsCached = normalsCached;
+    stats->drawnMode = F.Opt.mode;
     stats->milliseconds =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   }
@@ -373,6 +392,39 @@ std::vector<float> AreaWeightedNormals(const Mesh& mesh)
   return std::vector<float>(normals.begin(), normals.end());
 }
 
+const Image& SoftwareRenderer::Internals::RunAuto(const render::Scene& scene,
+  const Lighting<double>& lights, const render::RenderOptions& options, RenderStats* stats)
+{
+  // Chosen from the normals the smooth modes draw with (the mesh's, or the
+  // area-weighted ones made once per mesh version and drawn by Run), with
+  // the lights as drawn.
+  const Mesh& mesh = *scene.mesh;
+  const std::vector<float>* normals = &mesh.normals;
+  bool cached = false;
+  const bool computed = static_cast<int64_t>(mesh.normals.size()) != 3 * mesh.NumberOfPoints();
+  if (computed)
+  {
+    const int threads = options.threads > 0
+      ? options.threads
+      : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    this->FrameHash = mesh.ContentHash(SpreadOver(this->Buffers.Pool, threads));
+    normals = &this->ComputedNormalsOf(mesh, *this->FrameHash, cached);
+  }
+  const render::ModeChoice choice = render::ChooseMode(mesh, *normals, scene.camera, lights,
+    scene.material, options.width, options.height, options.maxError);
+  render::RenderOptions drawn = options;
+  drawn.mode = choice.mode;
+  const Image& image =
+    this->Run(mesh, scene.camera, lights.Cast<float>(), scene.material.Cast<float>(), drawn, stats);
+  this->FrameHash.reset();
+  if (stats)
+  {
+    stats->autoChoice = choice.why;
+    stats->normalsCached = computed && cached && stats->normalsComputed;
+  }
+  return image;
+}
+
 SoftwareRenderer::SoftwareRenderer()
   : Impl(new Internals)
 {
@@ -390,10 +442,14 @@ const render::Image& SoftwareRenderer::Render(const render::Scene& scene,
     throw std::invalid_argument(error);
   }
   // No lights: a headlight, as VTK's automatic light (and the GL backend).
-  const Lighting<float> lighting =
-    render::LightsOrHeadlight(scene.lighting, scene.camera).Cast<float>();
-  return this->Impl->Run(
-    *scene.mesh, scene.camera, lighting, scene.material.Cast<float>(), options, stats);
+  const Lighting<double> lights = render::LightsOrHeadlight(scene.lighting, scene.camera);
+  const Lighting<float> lighting = lights.Cast<float>();
+  if (options.mode != render::ShadingMode::Auto)
+  {
+    return this->Impl->Run(
+      *scene.mesh, scene.camera, lighting, scene.material.Cast<float>(), options, stats);
+  }
+  return this->Impl->RunAuto(scene, lights, options, stats);
 }
 
 } // namespace shadinglab::cpu

@@ -41,17 +41,22 @@ bool ParseName(const EnumName<E> (&table)[N], const std::string& name, E& value)
 const char* ShadingModeName(ShadingMode mode)
 {
   const auto* row = Find(kShadingModes, mode);
-  return row ? row->name : "?";
+  return row ? row->name : (mode == ShadingMode::Auto ? "auto" : "?");
 }
 
 const char* ShadingModeLabel(ShadingMode mode)
 {
   const auto* row = Find(kShadingModes, mode);
-  return row ? row->label : "?";
+  return row ? row->label : (mode == ShadingMode::Auto ? "Auto" : "?");
 }
 
 bool ParseShadingMode(const std::string& name, ShadingMode& mode)
 {
+  if (name == "auto")
+  {
+    mode = ShadingMode::Auto;
+    return true;
+  }
   return ParseName(kShadingModes, name, mode);
 }
 
@@ -101,6 +106,10 @@ std::string ValidateOptions(const RenderOptions& options)
   if (!(options.fastPhongMaxSpread >= 0 && options.fastPhongMaxSpread <= 180))
   {
     return "fast-phong spread limit must be in [0, 180] degrees";
+  }
+  if (!(options.maxError >= kMinMaxError && options.maxError <= kMaxMaxError))
+  {
+    return "auto mode's max error must be in [0.01, 255] (1/255 units)";
   }
   if (!IsFinite(options.background))
   {

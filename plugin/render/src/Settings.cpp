@@ -81,6 +81,10 @@ SettingRow Row(const char* key, const char* property, const char* label, Setting
   return row;
 }
 
+// The mode row's choice indices are the enum's values: the drawn modes in
+// order, then Auto.
+static_assert(static_cast<int>(ShadingMode::Auto) == kShadingModeCount);
+
 std::vector<SettingRow> MakeTable()
 {
   using G = SettingGroup;
@@ -98,31 +102,23 @@ std::vector<SettingRow> MakeTable()
             "max-error (eq. 4.1-4.5)";
     r.frontEnds = kCli | kParaView | kMapper | kExplorer;
     r.metavar = "M";
+    // The choices' indices are the enum's values (Auto last).
     r.set = [](Settings& s, const SettingValue& v) {
-      const int i = static_cast<int>(v.numbers[0]);
-      s.autoMode = i == kShadingModeCount;
-      if (!s.autoMode)
-      {
-        s.render.mode = kShadingModes[i].value;
-      }
+      s.render.mode = static_cast<ShadingMode>(static_cast<int>(v.numbers[0]));
     };
-    r.get = [](const Settings& s) {
-      return Number(s.autoMode ? kShadingModeCount : static_cast<int>(s.render.mode));
-    };
+    r.get = [](const Settings& s) { return Number(static_cast<int>(s.render.mode)); };
     t.push_back(r);
   }
   {
     SettingRow r = Row("max-error", "MaxError", "Max Error (1/255)", G::Render, K::Real);
-    // Below 0.01/255 no mode is predicted to comply (the fit's floor);
-    // above 255 every mode does.
-    r.min = 0.01;
-    r.max = 255;
+    r.min = kMinMaxError;
+    r.max = kMaxMaxError;
     r.doc = "auto mode: the mean error allowed against exact shading, in 1/255 of the display "
             "range";
     r.frontEnds = kCli | kParaView | kMapper | kExplorer;
     r.metavar = "E";
-    r.set = [](Settings& s, const SettingValue& v) { s.maxError = v.numbers[0]; };
-    r.get = [](const Settings& s) { return Number(s.maxError); };
+    r.set = [](Settings& s, const SettingValue& v) { s.render.maxError = v.numbers[0]; };
+    r.get = [](const Settings& s) { return Number(s.render.maxError); };
     t.push_back(r);
   }
   {

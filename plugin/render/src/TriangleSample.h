@@ -12,16 +12,10 @@
 namespace shadinglab::render
 {
 
-/// The triangles of the mesh's polygon fans (a polygon of n >= 3 corners
-/// has n - 2; fewer corners, none), in the order Take() walks them.
+/// The triangles of the mesh's polygon fans, in the order Take() walks them.
 inline long long TriangleCount(const Mesh& mesh)
 {
-  long long triangles = 0;
-  for (int64_t p = 0; p < mesh.NumberOfPolygons(); ++p)
-  {
-    triangles += std::max<int64_t>(0, mesh.offsets[p + 1] - mesh.offsets[p] - 2);
-  }
-  return triangles;
+  return mesh.NumberOfTriangles();
 }
 
 /// Triangles are sampled in runs of this many consecutive ones: neighbours

@@ -26,7 +26,12 @@ enum class ShadingMode
   Flat,     ///< once per polygon from its face normal (eq. 2.1)
   Gouraud,  ///< at the vertices, intensities interpolated (eq. 2.2-2.4)
   Phong,    ///< normals interpolated and renormalized, model per pixel (eq. 2.5)
-  FastPhong ///< Bishop & Weimer 1986 quadratic by forward differences (eq. 2.6-2.8)
+  FastPhong, ///< Bishop & Weimer 1986 quadratic by forward differences (eq. 2.6-2.8)
+  /// Resolved by each backend inside Render, per mesh, view and material:
+  /// the cheapest of Flat, Gouraud and Phong predicted to keep the mean
+  /// error under RenderOptions::maxError (ChooseMode, eq. 4.1-4.5).
+  /// RenderStats::drawnMode says what was drawn, autoChoice why.
+  Auto
 };
 
 /// One row of an enum's name table.
@@ -39,6 +44,7 @@ struct EnumName
   const char* glsl;  ///< GLSL #define suffix (SL_MODE_<glsl>), or nullptr
 };
 
+/// The drawn modes (Auto resolves to one of them).
 inline constexpr EnumName<ShadingMode> kShadingModes[] = {
   { ShadingMode::Flat, "flat", "Flat", "FLAT" },
   { ShadingMode::Gouraud, "gouraud", "Gouraud", "GOURAUD" },
@@ -84,9 +90,17 @@ inline constexpr int kMaxSupersampling = 8;
 /// target.
 inline constexpr double kMaxFrameSamples = 4e8;
 
+/// Auto's budget: below 0.01/255 no mode is predicted to comply (the fit's
+/// floor, docs/model.md section 4); above 255 every mode does.
+inline constexpr double kMinMaxError = 0.01;
+inline constexpr double kMaxMaxError = 255.0;
+
 struct RenderOptions
 {
   ShadingMode mode = ShadingMode::Phong;
+  /// Auto's error budget: the mean error allowed against exact shading, in
+  /// 1/255 of the display range.
+  double maxError = 1.0;
   InterpolationSpace interpolation = InterpolationSpace::Perspective;
   PolygonHandling polygons = PolygonHandling::Triangulate;
   /// fast-phong's Taylor point: the provoking (last) vertex on both
@@ -153,13 +167,18 @@ struct RenderStats
   bool normalsComputed = false; ///< the mesh had no normals: area-weighted ones were made
   /// ... and were those of an earlier frame, the mesh's arrays unchanged (CPU).
   bool normalsCached = false;
+  /// The mode drawn: RenderOptions::mode, or Auto's choice.
+  ShadingMode drawnMode = ShadingMode::Phong;
+  /// Auto: the choice's reasons (predictors, each mode's predicted error
+  /// and cost; ModeChoice::why); "" in the other modes.
+  std::string autoChoice;
 };
 
 const char* ShadingModeName(ShadingMode mode);
 const char* ShadingModeLabel(ShadingMode mode);
-/// Parses a ShadingMode name ("flat", "gouraud", "phong", "fast-phong").
+/// Parses a ShadingMode name ("flat", "gouraud", "phong", "fast-phong", "auto").
 bool ParseShadingMode(const std::string& name, ShadingMode& mode);
-/// "flat, gouraud, phong or fast-phong", for error messages.
+/// "flat, gouraud, phong or fast-phong" (the drawn modes), for error messages.
 std::string ShadingModeChoices();
 
 const char* InterpolationSpaceName(InterpolationSpace space);
@@ -168,7 +187,8 @@ bool ParseInterpolationSpace(const std::string& name, InterpolationSpace& space)
 /**
  * Checks what every backend needs of the options: image size in
  * [1, kMaxImageSize], supersampling in [1, kMaxSupersampling], the frame
- * under kMaxFrameSamples, threads in [0, 256], a spread limit in [0, 180].
+ * under kMaxFrameSamples, threads in [0, 256], a spread limit in [0, 180],
+ * Auto's budget in [kMinMaxError, kMaxMaxError].
  * Returns "" or a one-line error.
  */
 std::string ValidateOptions(const RenderOptions& options);

@@ -12,6 +12,13 @@
 namespace shadinglab::render
 {
 
+/// The triangles of a polygon of `corners` corners as a fan: n - 2, and
+/// none for fewer than three corners (the one count of every statistic).
+inline int64_t TrianglesInPolygon(int64_t corners)
+{
+  return corners > 2 ? corners - 2 : 0;
+}
+
 /// A surface mesh as flat arrays (borrowed by a renderer, never modified).
 struct Mesh
 {
@@ -26,6 +33,16 @@ struct Mesh
   int64_t NumberOfPolygons() const
   {
     return offsets.empty() ? 0 : static_cast<int64_t>(offsets.size() - 1);
+  }
+  /// Every polygon's TrianglesInPolygon, summed.
+  int64_t NumberOfTriangles() const
+  {
+    int64_t triangles = 0;
+    for (int64_t p = 0; p < this->NumberOfPolygons(); ++p)
+    {
+      triangles += TrianglesInPolygon(this->offsets[p + 1] - this->offsets[p]);
+    }
+    return triangles;
   }
   /// Runs task(0) .. task(n - 1), possibly at once, returning when all have
   /// (the CPU renderer passes its kept threads: cpu::SpreadOver).

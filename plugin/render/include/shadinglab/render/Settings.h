@@ -33,12 +33,9 @@ struct NormalSettings
 /// Every setting of a surface's shading: one struct, passed whole.
 struct Settings
 {
-  /// Mode, interpolation, polygons, expansion, spread, ssaa, threads, culling.
+  /// Mode (Auto with its budget maxError), interpolation, polygons,
+  /// expansion, spread, ssaa, threads, culling.
   RenderOptions render;
-  /// Auto mode: the cheapest of flat, Gouraud and Phong predicted to keep the
-  /// mean error under maxError (docs/model.md eq. 4.1-4.5); render.mode unused.
-  bool autoMode = false;
-  double maxError = 1.0; ///< 1/255 of the display range
   DisplayTransform display = DisplayTransform::Clamp;
   /// Scales every light's intensity I_L (eq. 1.1): the CLI's lights, the
   /// explorer's light, the vtkLights a mapper draws with.

@@ -1,0 +1,21 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Qt controls made from the settings table (shadinglab/render/Settings.h):
+// their range, choices, default and tooltip are the table's, as the CLI's
+// flags and the ParaView properties are.
+#pragma once
+
+class QComboBox;
+class QDoubleSpinBox;
+class QWidget;
+
+namespace shadinglab::widgets
+{
+
+/// A spin box over the setting's range, at its default, documented.
+QDoubleSpinBox* MakeSettingSpinBox(const char* key, QWidget* parent = nullptr);
+
+/// The setting's choices by display label, each item's data its index (for
+/// the enumerations in the table, the enum's value), documented.
+QComboBox* MakeSettingComboBox(const char* key, QWidget* parent = nullptr);
+
+} // namespace shadinglab::widgets

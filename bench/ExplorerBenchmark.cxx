@@ -8,7 +8,7 @@
 // Run under an X server: xvfb-run -a bin/shadinglab_bench_explorer
 #include "AnalyticMeshes.h"
 #include "ComparisonWidget.h"
-#include "GpuRenderer.h"
+#include "shadinglab/gl/GpuRenderer.h"
 #include "ShadingPanel.h"
 
 #include <benchmark/benchmark.h>

@@ -171,7 +171,7 @@ void BM_CpuCookTorrance(benchmark::State& state)
 /// moments (a neighbour on the host only ever slows a frame, and a
 /// two-thread frame more, as it needs both cores at once). Under steady
 /// load no frame is undisturbed, so it is no steadier than `scaling`
-/// (README, "Two threads against one").
+/// (docs/performance.md, "Two threads against one").
 template<typename Run>
 void AlternateOneAndTwoThreads(benchmark::State& state, Run&& run)
 {

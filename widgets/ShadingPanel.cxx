@@ -5,7 +5,7 @@
 #include "GpuPanel.h"
 #include "ViewInteraction.h"
 
-#include "GpuRenderer.h"
+#include "shadinglab/gl/GpuRenderer.h"
 
 #include <QLabel>
 #include <QVBoxLayout>

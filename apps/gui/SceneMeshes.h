@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Meshes the scenes are made of, beyond datasets/generator's: every one
+// Meshes the scenes are made of, beyond ShadingLab::Analytic's: every one
 // returns a new vtkPolyData (the caller owns a reference through the smart
 // pointer) and never modifies its input.
 #pragma once

@@ -187,7 +187,7 @@ Scene Perspective(const SceneOptions& o)
   // Standing on the floor's near edge, looking down it: strong foreshortening.
   s.explicitCamera = true;
   // (Closer, the near edge crosses the frustum and the GPU's screen-space
-  // path loses triangles on llvmpipe: a known GPU bug, see README.)
+  // path loses triangles on llvmpipe: a known GPU behaviour, docs/gpu-mapper.md.)
   s.camera.position = { 0.0, 0.45, 0.8 };
   s.camera.focalPoint = { 0.0, 0.0, -1.6 };
   s.camera.viewUp = { 0.0, 1.0, 0.0 };

@@ -4,7 +4,7 @@
 #include "AccuracyStudy.h"
 #include "Commands.h"
 
-#include "GpuRenderer.h"
+#include "shadinglab/gl/GpuRenderer.h"
 #ifdef SHADINGLAB_HAVE_QT
 #include "AccuracyPlot.h"
 #endif

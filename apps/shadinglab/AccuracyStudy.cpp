@@ -9,7 +9,7 @@
 #include "shadinglab/model/Materials.h"
 #include "shadinglab/reference/AnalyticSurface.h"
 
-#include "GpuRenderer.h"
+#include "shadinglab/gl/GpuRenderer.h"
 
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>

@@ -41,5 +41,6 @@ int RunRender(int argc, char** argv);
 int RunCompare(int argc, char** argv);
 int RunNormals(int argc, char** argv);
 int RunAccuracy(int argc, char** argv);
+int RunSettings(int argc, char** argv);
 
 } // namespace shadinglab::cli

@@ -2,7 +2,7 @@
 #include "SceneArguments.h"
 
 #include "Commands.h"
-#include "GpuRenderer.h"
+#include "shadinglab/gl/GpuRenderer.h"
 #include "MeshIO.h"
 #include "MeshArrays.h"
 #include "MeshPipeline.h"
@@ -64,37 +64,10 @@ Vec3<double> ParseVector(const std::string& text, const std::string& what)
   return { v[0], v[1], v[2] };
 }
 
-} // namespace
 
-std::unique_ptr<SceneArguments> SceneFromArguments(int argc, char** argv, const std::string& help,
-  const std::vector<std::string>& extraValued)
+/// The settings table's flags, the image size, the material and the backend.
+void SettingsFromArguments(const Arguments& args, SceneArguments& scene)
 {
-  std::vector<std::string> valued = { "backend", "size", "out", "azimuth", "elevation", "zoom",
-    "camera-position", "focal-point", "view-up", "view-angle", "normals", "feature-angle",
-    "subdivide", "scheme" };
-  std::vector<std::string> flags = { "help", "stats", "parallel", "fix-t-junctions" };
-  for (auto group : { render::SettingGroup::Render, render::SettingGroup::Lights,
-         render::SettingGroup::Material })
-  {
-    AddSettingFlags(valued, flags, group);
-  }
-  valued.insert(valued.end(), extraValued.begin(), extraValued.end());
-  auto result =
-    std::make_unique<SceneArguments>(Arguments(argc, argv, valued, flags, { "light" }, { "weld" }));
-  SceneArguments& scene = *result;
-  const Arguments& args = scene.args;
-  if (args.Has("help"))
-  {
-    std::cout << help << SceneOptionsHelp() << MaterialHelp();
-    scene.helpShown = true;
-    return result;
-  }
-  if (args.Positionals().size() != 1)
-  {
-    throw UsageError(args.Positionals().empty() ? "missing INPUT mesh" : "more than one INPUT given");
-  }
-  const std::string input = args.Positionals()[0];
-
   // Every render setting from the table; --mode cook-torrance is the
   // documented shorthand for phong with a Cook-Torrance material.
   render::Settings& settings = scene.settings;
@@ -129,9 +102,11 @@ std::unique_ptr<SceneArguments> SceneFromArguments(int argc, char** argv, const 
     }
     const double w = ParseDouble(size.substr(0, x), "--size"),
                  h = ParseDouble(size.substr(x + 1), "--size");
-    if (w != std::floor(w) || h != std::floor(h) || w < 1 || h < 1 || w > render::kMaxImageSize || h > render::kMaxImageSize)
+    if (w != std::floor(w) || h != std::floor(h) || w < 1 || h < 1 ||
+      w > render::kMaxImageSize || h > render::kMaxImageSize)
     {
-      throw UsageError("--size must be WxH with integers 1.." + std::to_string(render::kMaxImageSize) + " (got '" + size + "')");
+      throw UsageError("--size must be WxH with integers 1.." +
+        std::to_string(render::kMaxImageSize) + " (got '" + size + "')");
     }
     options.width = static_cast<int>(w);
     options.height = static_cast<int>(h);
@@ -141,7 +116,6 @@ std::unique_ptr<SceneArguments> SceneFromArguments(int argc, char** argv, const 
   {
     throw UsageError("--zoom must be in (0, 1000]");
   }
-  const double lightIntensity = settings.lightIntensity;
   ApplyMaterialArguments(args, true, cookTorranceShorthand ? "cook-torrance" : "", settings);
   const Material<double>& material = settings.material;
   if (!render::SupportsModel(options.mode, material.model))
@@ -159,7 +133,13 @@ std::unique_ptr<SceneArguments> SceneFromArguments(int argc, char** argv, const 
   {
     throw UsageError("unknown --backend '" + backend + "' (expected auto, cpu or gpu)");
   }
+}
 
+/// Reads INPUT, makes its faces' orientation consistent when they are not,
+/// prepares it as asked (the filters of 'shadinglab normals') and converts
+/// it to the renderers' arrays in a local frame.
+void ReadAndPrepare(const Arguments& args, const std::string& input, SceneArguments& scene)
+{
   vtkSmartPointer<vtkPolyData> polydata;
   const Stopwatch reading;
   try
@@ -206,8 +186,16 @@ std::unique_ptr<SceneArguments> SceneFromArguments(int argc, char** argv, const 
   // it below, so far-off or tiny meshes render like unit ones.
   scene.mesh = render::MeshFromPolyData(polydata, scene.frame);
   scene.scene.mesh = &scene.mesh;
-  const render::Mesh& mesh = scene.mesh;
+  scene.prepareMs = preparing.Milliseconds();
 
+}
+
+/// The camera fitted to the mesh and moved by the camera flags.
+void CameraFromArguments(const Arguments& args, SceneArguments& scene)
+{
+  const render::Mesh& mesh = scene.mesh;
+  const render::RenderOptions& options = scene.options;
+  const double zoom = args.GetDouble("zoom", 1.0); // checked by SettingsFromArguments
   double bounds[6];
   mesh.Bounds(bounds);
   const double aspect = static_cast<double>(options.width) / options.height;
@@ -263,6 +251,13 @@ std::unique_ptr<SceneArguments> SceneFromArguments(int argc, char** argv, const 
     }
   }
 
+}
+
+/// The --light flags (world coordinates), or the default key light.
+void LightsFromArguments(const Arguments& args, SceneArguments& scene)
+{
+  const double lightIntensity = scene.settings.lightIntensity;
+  const render::Camera& camera = scene.scene.camera;
   Lighting<double>& lighting = scene.scene.lighting;
   lighting.lightCount = 0;
   const auto lights = args.GetAll("light");
@@ -332,7 +327,45 @@ std::unique_ptr<SceneArguments> SceneFromArguments(int argc, char** argv, const 
   }
   lighting.ambientIntensity = Vec3<double>(1, 1, 1);
 
-  result->prepareMs = preparing.Milliseconds();
+}
+
+} // namespace
+
+std::unique_ptr<SceneArguments> SceneFromArguments(int argc, char** argv, const std::string& help,
+  const std::vector<std::string>& extraValued)
+{
+  std::vector<std::string> valued = { "backend", "size", "out", "azimuth", "elevation", "zoom",
+    "camera-position", "focal-point", "view-up", "view-angle", "normals", "feature-angle",
+    "subdivide", "scheme" };
+  std::vector<std::string> flags = { "help", "stats", "parallel", "fix-t-junctions" };
+  for (auto group : { render::SettingGroup::Render, render::SettingGroup::Lights,
+         render::SettingGroup::Material })
+  {
+    AddSettingFlags(valued, flags, group);
+  }
+  valued.insert(valued.end(), extraValued.begin(), extraValued.end());
+  auto result =
+    std::make_unique<SceneArguments>(Arguments(argc, argv, valued, flags, { "light" }, { "weld" }));
+  SceneArguments& scene = *result;
+  const Arguments& args = scene.args;
+  if (args.Has("help"))
+  {
+    std::cout << help << SceneOptionsHelp() << MaterialHelp();
+    scene.helpShown = true;
+    return result;
+  }
+  if (args.Positionals().size() != 1)
+  {
+    throw UsageError(args.Positionals().empty() ? "missing INPUT mesh" : "more than one INPUT given");
+  }
+  const std::string input = args.Positionals()[0];
+
+  SettingsFromArguments(args, scene);
+  ReadAndPrepare(args, input, scene);
+  const Stopwatch placing;
+  CameraFromArguments(args, scene);
+  LightsFromArguments(args, scene);
+  scene.prepareMs += placing.Milliseconds();
   return result;
 }
 

@@ -15,7 +15,8 @@ const char* kUsage = "usage: shadinglab COMMAND [options]   (shadinglab COMMAND 
                      "  render    render a mesh in one shading mode to PNG\n"
                      "  compare   render a mesh in every shading mode, side by side\n"
                      "  normals   repair, subdivide and compute vertex normals of a mesh\n"
-                     "  accuracy  frame time against error for every mode, vs exact surfaces\n";
+                     "  accuracy  frame time against error for every mode, vs exact surfaces\n"
+                     "  settings  every setting (flags, ParaView properties) as Markdown\n";
 
 } // namespace
 
@@ -44,6 +45,10 @@ int main(int argc, char** argv)
     if (command == "accuracy")
     {
       return shadinglab::cli::RunAccuracy(argc - 2, argv + 2);
+    }
+    if (command == "settings")
+    {
+      return shadinglab::cli::RunSettings(argc - 2, argv + 2);
     }
     if (command == "render")
     {

@@ -3,7 +3,7 @@
 // faces, neighbours with opposite orientations, edges of more than two
 // faces, closed components facing inward. Flat arrays, no halfedge
 // structure: a vertex-to-face table and one pass over the edges, so that
-// a clean 5M-triangle mesh does not pay for OpenMesh (docs: README, mesh
+// a clean 5M-triangle mesh does not pay for OpenMesh (docs/cli.md, mesh
 // preparation).
 #pragma once
 

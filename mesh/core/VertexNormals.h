@@ -2,7 +2,7 @@
 // Vertex normals from a polygon mesh held as flat arrays (the layout of
 // vtkCellArray's offsets and connectivity), with selectable weights and
 // crease splitting. Plain loops over the arrays: no halfedge structure is
-// needed for this, and none is built (see README "Where OpenMesh is used").
+// needed for this, and none is built (docs/contributing.md, "Mesh code").
 #pragma once
 
 #include "Geometry.h"

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "GpuRenderer.h"
+#include "shadinglab/gl/GpuRenderer.h"
 
 #include "GpuScene.h"
 

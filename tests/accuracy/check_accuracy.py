@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Runs `shadinglab accuracy --quick` and checks what it writes: the
-documented CSV columns, a Markdown table, a PNG, and the trends the README
+documented CSV columns, a Markdown table, a PNG, and the trends the docs
 reads from the numbers (errors fall with tessellation; Phong beats Gouraud
 and flat on a fine mesh; coverage converges)."""
 import csv

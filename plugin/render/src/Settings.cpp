@@ -85,13 +85,11 @@ SettingRow Row(const char* key, const char* property, const char* label, Setting
 // order, then Auto.
 static_assert(static_cast<int>(ShadingMode::Auto) == kShadingModeCount);
 
-std::vector<SettingRow> MakeTable()
+/// The rows of where and how the model is evaluated, and how the image is made.
+void RenderRows(std::vector<SettingRow>& t)
 {
   using G = SettingGroup;
   using K = SettingKind;
-  std::vector<SettingRow> t;
-
-  // --- where the model is evaluated -----------------------------------
   {
     SettingRow r = Row("mode", "ShadingMode", "Shading Mode", G::Render, K::Choice);
     r.choices = ChoicesOf(kShadingModes);
@@ -226,8 +224,13 @@ std::vector<SettingRow> MakeTable()
     r.get = [](const Settings& s) { return Number(s.display == DisplayTransform::Clamp ? 0 : 1); };
     t.push_back(r);
   }
+}
 
-  // --- lights ---------------------------------------------------------
+/// The rows of the lights.
+void LightRows(std::vector<SettingRow>& t)
+{
+  using G = SettingGroup;
+  using K = SettingKind;
   {
     SettingRow r = Row("light-intensity", "LightIntensity", "Light Intensity", G::Lights, K::Real);
     // 1e6 keeps I_L times any reflectance (<= 1/sr x pi) far inside float.
@@ -240,8 +243,13 @@ std::vector<SettingRow> MakeTable()
     r.get = [](const Settings& s) { return Number(s.lightIntensity); };
     t.push_back(r);
   }
+}
 
-  // --- the material (docs/model.md section 1) --------------------------
+/// The rows of the material (docs/model.md section 1).
+void MaterialRows(std::vector<SettingRow>& t)
+{
+  using G = SettingGroup;
+  using K = SettingKind;
   {
     SettingRow r = Row("material", "MaterialPreset", "Material Preset", G::Material, K::Text);
     r.choices.push_back({ "custom", "Custom" });
@@ -454,8 +462,13 @@ std::vector<SettingRow> MakeTable()
     };
     t.push_back(r);
   }
+}
 
-  // --- normals made for a mesh without them ----------------------------
+/// The rows of the normals made for a mesh without them.
+void MeshRows(std::vector<SettingRow>& t)
+{
+  using G = SettingGroup;
+  using K = SettingKind;
   {
     SettingRow r = Row("normal-weighting", "NormalWeighting", "Normal Weighting", G::Mesh, K::Choice);
     r.choices = { { "uniform", "Uniform" }, { "area", "Area" }, { "angle", "Angle" },
@@ -488,6 +501,15 @@ std::vector<SettingRow> MakeTable()
     r.get = [](const Settings& s) { return Number(s.normals.recompute ? 1 : 0); };
     t.push_back(r);
   }
+}
+
+std::vector<SettingRow> MakeTable()
+{
+  std::vector<SettingRow> t;
+  RenderRows(t);
+  LightRows(t);
+  MaterialRows(t);
+  MeshRows(t);
   return t;
 }
 

@@ -38,7 +38,7 @@ struct SpectralIndexSample
  * Each sample's F(cosTheta_i) is averaged into the band it falls in: blue
  * [380, 490) nm, green [490, 590) nm, red [590, 780] nm, a box-filter
  * approximation of the sRGB primaries' dominant ranges (deliberately simple:
- * no colour-matching functions, documented in README). A band with no sample
+ * no colour-matching functions; docs/model.md section 5). A band with no sample
  * takes the nearest sample's value. Samples outside [380, 780] nm are ignored.
  * Returns false (and leaves rgb untouched) when no sample is in range.
  */

@@ -5,7 +5,7 @@
 // or an Inf into a pixel (the GPU's framebuffer cannot hold one: there, a
 // NaN would show as a pixel unlike the CPU's).
 #include "AnalyticMeshes.h"
-#include "GpuRenderer.h"
+#include "shadinglab/gl/GpuRenderer.h"
 #include "PolyDataMesh.h"
 #include "RenderTestUtil.h"
 #include "shadinglab/model/Materials.h"

@@ -3,7 +3,7 @@
 // and mode; images compared over pixels both cover. Needs an X server with
 // OpenGL (label "gl"; scripts/test runs ctest under Xvfb with llvmpipe).
 #include "AnalyticMeshes.h"
-#include "GpuRenderer.h"
+#include "shadinglab/gl/GpuRenderer.h"
 #include "PolyDataMesh.h"
 #include "shadinglab/cpu/SoftwareRenderer.h"
 #include "RenderTestUtil.h"

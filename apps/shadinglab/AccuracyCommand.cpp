@@ -88,24 +88,10 @@ void WriteTable(const std::vector<StudyRow>& rows, const std::string& path)
   }
 }
 
-} // namespace
-
-int RunAccuracy(int argc, char** argv)
+/// The study's options from the command line, and its output directory
+/// (made here).
+StudyOptions StudyOptionsFromArguments(const Arguments& args, std::filesystem::path& dir)
 {
-  Arguments args(argc, argv, { "out", "size", "frames", "threads", "backend" }, { "quick", "help" });
-  if (args.Has("help"))
-  {
-    std::cout << kAccuracyHelp;
-    return 0;
-  }
-  if (!args.Positionals().empty())
-  {
-    throw UsageError("accuracy takes no INPUT (it makes its own meshes)");
-  }
-  if (!args.Has("out") || args.Get("out").empty())
-  {
-    throw UsageError("--out DIR is required");
-  }
   StudyOptions options;
   options.quick = args.Has("quick");
   const std::string size = args.Get("size", "320x240");
@@ -131,42 +117,21 @@ int RunAccuracy(int argc, char** argv)
   {
     throw UsageError("--backend must be cpu or all (got '" + backend + "')");
   }
-  const std::filesystem::path dir(args.Get("out"));
+  dir = args.Get("out");
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec || !std::filesystem::is_directory(dir))
   {
     throw UsageError("cannot create directory " + dir.string());
   }
-  std::string why;
-  options.gpu = backend == "all" && gl::GpuAvailable(why);
-  if (backend == "all" && !options.gpu)
-  {
-    std::cerr << "shadinglab accuracy: notice: CPU only (" << why << ")\n";
-  }
-  std::vector<StudyRow> rows = RunStudy(options, [](const StudyRow& r) {
-    std::cerr << r.shape << " " << r.level << " (" << r.triangles << " tri) " << r.backend << " "
-              << r.mode << "/" << r.model << "/" << r.normals << ": " << Fmt(r.frameMs)
-              << " ms, mean " << Fmt(r.mean255) << "/255\n";
-  });
-  std::ofstream csv(dir / "accuracy.csv");
-  csv << StudyCsvHeader() << "\n";
-  for (const StudyRow& r : rows)
-  {
-    csv << StudyCsvRow(r) << "\n";
-  }
-  if (!csv)
-  {
-    throw UsageError("cannot write " + (dir / "accuracy.csv").string());
-  }
-  WriteTable(rows, (dir / "accuracy.md").string());
-  // The auto mode on held-out meshes: the two figures.
-  const std::vector<AutoCase> cases = ValidateAutoMode(options, [](const AutoCase& c) {
-    std::cerr << "auto: " << c.mesh << ", " << c.material << ", E " << c.maxError << ": "
-              << c.chosen << " (" << Fmt(c.chosenError) << "/255, " << Fmt(c.chosenMs)
-              << " ms); cheapest meeting E: " << (c.cheapest.empty() ? "none" : c.cheapest)
-              << "\n";
-  });
+  return options;
+}
+
+/// Writes auto.csv (one row per held-out case) and returns the summary:
+/// how often the choice met E, and at what cost against the cheapest mode
+/// that did.
+std::string WriteAutoCases(const std::vector<AutoCase>& cases, const std::filesystem::path& dir)
+{
   std::ofstream autoCsv(dir / "auto.csv");
   autoCsv << "mesh,material,max_error,chosen,predicted,chosen_error,chosen_ms,cheapest,"
              "cheapest_ms,met,flat_error,gouraud_error,phong_error,flat_ms,gouraud_ms,phong_ms,"
@@ -220,9 +185,13 @@ int RunAccuracy(int argc, char** argv)
           << Fmt(100.0 * withinCost / std::max(1, feasible)) << "%; cost ratio median "
           << Fmt(ratios.empty() ? 0 : ratios[ratios.size() / 2]) << ", max "
           << Fmt(ratios.empty() ? 0 : ratios.back());
-  std::ofstream(dir / "accuracy.md", std::ios::app) << "\n## Auto mode, held out\n\n"
-                                                    << summary.str() << ".\n";
-  std::cout << summary.str() << "\n";
+  return summary.str();
+}
+
+/// The time-against-error plot of the first view (accuracy.png).
+void WritePlot(const std::vector<StudyRow>& rows, const StudyOptions& options,
+  const std::filesystem::path& dir)
+{
 #ifdef SHADINGLAB_HAVE_QT
   std::vector<std::string> groups;
   std::vector<std::vector<widgets::AccuracyPoint>> points;
@@ -251,8 +220,68 @@ int RunAccuracy(int argc, char** argv)
     throw UsageError(error);
   }
 #else
+  (void)rows;
+  (void)options;
+  (void)dir;
   std::cerr << "shadinglab accuracy: notice: built without Qt Charts; no plot\n";
 #endif
+}
+
+} // namespace
+
+int RunAccuracy(int argc, char** argv)
+{
+  Arguments args(argc, argv, { "out", "size", "frames", "threads", "backend" }, { "quick", "help" });
+  if (args.Has("help"))
+  {
+    std::cout << kAccuracyHelp;
+    return 0;
+  }
+  if (!args.Positionals().empty())
+  {
+    throw UsageError("accuracy takes no INPUT (it makes its own meshes)");
+  }
+  if (!args.Has("out") || args.Get("out").empty())
+  {
+    throw UsageError("--out DIR is required");
+  }
+  std::filesystem::path dir;
+  StudyOptions options = StudyOptionsFromArguments(args, dir);
+  const std::string backend = args.Get("backend", "all");
+  std::string why;
+  options.gpu = backend == "all" && gl::GpuAvailable(why);
+  if (backend == "all" && !options.gpu)
+  {
+    std::cerr << "shadinglab accuracy: notice: CPU only (" << why << ")\n";
+  }
+  std::vector<StudyRow> rows = RunStudy(options, [](const StudyRow& r) {
+    std::cerr << r.shape << " " << r.level << " (" << r.triangles << " tri) " << r.backend << " "
+              << r.mode << "/" << r.model << "/" << r.normals << ": " << Fmt(r.frameMs)
+              << " ms, mean " << Fmt(r.mean255) << "/255\n";
+  });
+  std::ofstream csv(dir / "accuracy.csv");
+  csv << StudyCsvHeader() << "\n";
+  for (const StudyRow& r : rows)
+  {
+    csv << StudyCsvRow(r) << "\n";
+  }
+  if (!csv)
+  {
+    throw UsageError("cannot write " + (dir / "accuracy.csv").string());
+  }
+  WriteTable(rows, (dir / "accuracy.md").string());
+  // The auto mode on held-out meshes: the two figures.
+  const std::vector<AutoCase> cases = ValidateAutoMode(options, [](const AutoCase& c) {
+    std::cerr << "auto: " << c.mesh << ", " << c.material << ", E " << c.maxError << ": "
+              << c.chosen << " (" << Fmt(c.chosenError) << "/255, " << Fmt(c.chosenMs)
+              << " ms); cheapest meeting E: " << (c.cheapest.empty() ? "none" : c.cheapest)
+              << "\n";
+  });
+  const std::string summary = WriteAutoCases(cases, dir);
+  std::ofstream(dir / "accuracy.md", std::ios::app) << "\n## Auto mode, held out\n\n"
+                                                    << summary << ".\n";
+  std::cout << summary << "\n";
+  WritePlot(rows, options, dir);
   std::cout << "wrote " << rows.size() << " configurations to " << dir.string() << "\n";
   return 0;
 }

@@ -61,16 +61,11 @@ std::string Extension(const std::string& path)
 /// header rather than a real mesh.
 constexpr long long kMaxOffElements = 1LL << 31;
 
-vtkSmartPointer<vtkPolyData> ReadOff(const std::string& path)
+/// The OFF file's non-empty lines split into tokens, '#' comments removed.
+/// OFF is line-oriented for faces: tokens after a face's indices are its
+/// colour, which is ignored.
+std::vector<std::vector<std::string>> OffLines(std::istream& in)
 {
-  std::ifstream in(path);
-  if (!in)
-  {
-    throw MeshError("cannot open '" + path + "'");
-  }
-  // Non-empty lines split into tokens, '#' comments removed. OFF is
-  // line-oriented for faces: tokens after a face's indices are its colour,
-  // which is ignored.
   std::vector<std::vector<std::string>> lines;
   std::string line;
   while (std::getline(in, line))
@@ -92,16 +87,49 @@ vtkSmartPointer<vtkPolyData> ReadOff(const std::string& path)
       lines.push_back(std::move(tokens));
     }
   }
+  return lines;
+}
+
+/// A token of an OFF file as a number, or MeshError naming what it was.
+double OffNumber(const std::string& t, const char* what, const std::string& bad)
+{
+  char* end = nullptr;
+  const double v = std::strtod(t.c_str(), &end);
+  if (end == t.c_str() || *end != '\0')
+  {
+    throw MeshError(bad + "'" + t + "' is not a number (" + what + ")");
+  }
+  return v;
+}
+
+/// Vertex colours as 8-bit RGB: 0..255 integers or 0..1 reals, the largest
+/// value tells which.
+vtkSmartPointer<vtkUnsignedCharArray> OffColours(const std::vector<double>& values, vtkIdType n)
+{
+  const double largest = *std::max_element(values.begin(), values.end());
+  const double scale = largest > 1.0 ? 1.0 : 255.0;
+  auto rgb = vtkSmartPointer<vtkUnsignedCharArray>::New();
+  rgb->SetName("Colors");
+  rgb->SetNumberOfComponents(3);
+  rgb->SetNumberOfTuples(n);
+  for (size_t k = 0; k < values.size(); ++k)
+  {
+    const double v = std::clamp(values[k] * scale, 0.0, 255.0);
+    rgb->SetValue(static_cast<vtkIdType>(k), static_cast<unsigned char>(std::lround(v)));
+  }
+  return rgb;
+}
+
+vtkSmartPointer<vtkPolyData> ReadOff(const std::string& path)
+{
+  std::ifstream in(path);
+  if (!in)
+  {
+    throw MeshError("cannot open '" + path + "'");
+  }
+  const std::vector<std::vector<std::string>> lines = OffLines(in);
   const std::string bad = "malformed OFF file '" + path + "': ";
-  auto number = [&](const std::string& t, const char* what) -> double {
-    char* end = nullptr;
-    const double v = std::strtod(t.c_str(), &end);
-    if (end == t.c_str() || *end != '\0')
-    {
-      throw MeshError(bad + "'" + t + "' is not a number (" + what + ")");
-    }
-    return v;
-  };
+  auto number = [&](const std::string& t, const char* what) { return OffNumber(t, what, bad); };
   if (lines.empty())
   {
     throw MeshError("empty file '" + path + "'");
@@ -222,19 +250,7 @@ vtkSmartPointer<vtkPolyData> ReadOff(const std::string& path)
   }
   if (colours && !colourValues.empty()) // no vertices, no colours (UBSan: fuzz finding)
   {
-    // Colours are 0..255 integers or 0..1 reals: the largest value tells.
-    const double largest = *std::max_element(colourValues.begin(), colourValues.end());
-    const double scale = largest > 1.0 ? 1.0 : 255.0;
-    vtkNew<vtkUnsignedCharArray> rgb;
-    rgb->SetName("Colors");
-    rgb->SetNumberOfComponents(3);
-    rgb->SetNumberOfTuples(static_cast<vtkIdType>(nv));
-    for (size_t k = 0; k < colourValues.size(); ++k)
-    {
-      const double v = std::clamp(colourValues[k] * scale, 0.0, 255.0);
-      rgb->SetValue(static_cast<vtkIdType>(k), static_cast<unsigned char>(std::lround(v)));
-    }
-    mesh->GetPointData()->SetScalars(rgb);
+    mesh->GetPointData()->SetScalars(OffColours(colourValues, static_cast<vtkIdType>(nv)));
   }
   return mesh;
 }

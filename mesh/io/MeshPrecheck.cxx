@@ -107,6 +107,37 @@ std::ifstream Open(const std::string& path, std::ios::openmode mode = std::ios::
   return in;
 }
 
+/// The numbers of an OBJ "v" line after its keyword (at least three finite
+/// coordinates; trailing text after the numbers is allowed), or MeshError
+/// at `where`.
+int ObjVertexNumbers(std::istringstream& tokens, const std::string& where)
+{
+  int count = 0;
+  std::string token;
+  while (tokens >> token)
+  {
+    double value = 0;
+    if (!ParseReal(token, value))
+    {
+      if (count < 3)
+      {
+        throw MeshError(where + ": a vertex needs three numbers");
+      }
+      break; // a comment or trailing text after the numbers
+    }
+    if (count < 3 && !std::isfinite(value))
+    {
+      throw MeshError(where + ": non-finite (NaN or Inf) vertex coordinate");
+    }
+    ++count;
+  }
+  if (count < 3)
+  {
+    throw MeshError(where + ": a vertex needs three numbers");
+  }
+  return count;
+}
+
 } // namespace
 
 void PrecheckObj(const std::string& path)
@@ -132,29 +163,7 @@ void PrecheckObj(const std::string& path)
     tokens >> keyword;
     if (keyword == "v")
     {
-      int count = 0;
-      std::string token;
-      while (tokens >> token)
-      {
-        double value = 0;
-        if (!ParseReal(token, value))
-        {
-          if (count < 3)
-          {
-            throw MeshError(Where(path, number) + ": a vertex needs three numbers");
-          }
-          break; // a comment or trailing text after the numbers
-        }
-        if (count < 3 && !std::isfinite(value))
-        {
-          throw MeshError(Where(path, number) + ": non-finite (NaN or Inf) vertex coordinate");
-        }
-        ++count;
-      }
-      if (count < 3)
-      {
-        throw MeshError(Where(path, number) + ": a vertex needs three numbers");
-      }
+      const int count = ObjVertexNumbers(tokens, Where(path, number));
       // x y z, x y z w, or x y z r g b: VTK's reader takes six numbers as a
       // colour and crashes when only some vertices have one (found by
       // fuzz/MeshReaderFuzzer).
@@ -317,17 +326,24 @@ bool PlyType(const std::string& type, int& size, bool& integer, bool& isSigned)
 
 } // namespace
 
-void PrecheckPly(const std::string& path)
+namespace
 {
-  std::ifstream in = Open(path, std::ios::in | std::ios::binary);
-  const std::string bad = "malformed PLY '" + path + "': ";
-  std::string line;
-  if (!std::getline(in, line) || line.rfind("ply", 0) != 0)
-  {
-    throw MeshError(bad + "does not start with 'ply'");
-  }
+
+/// What a PLY header declares.
+struct PlyHeader
+{
   std::string format;
   std::vector<PlyElement> elements;
+};
+
+/// A PLY header's format and elements, read up to end_header (at most
+/// 10,000 lines), every line checked; MeshError (`bad` first) otherwise.
+PlyHeader ReadPlyHeader(std::istream& in, const std::string& bad)
+{
+  std::string line;
+  PlyHeader header;
+  std::string& format = header.format;
+  std::vector<PlyElement>& elements = header.elements;
   bool ended = false;
   for (int lines = 0; lines < 10000 && std::getline(in, line); ++lines)
   {
@@ -410,6 +426,13 @@ void PrecheckPly(const std::string& path)
   {
     throw MeshError(bad + "the header has no 'end_header' (truncated?)");
   }
+  return header;
+}
+
+/// The vertex element's row count, after checking that it has x, y and z
+/// and that a non-empty face element has its index list.
+long long PlyVertexCount(const std::vector<PlyElement>& elements, const std::string& bad)
+{
   long long vertexCount = -1;
   for (const PlyElement& e : elements)
   {
@@ -441,85 +464,99 @@ void PrecheckPly(const std::string& path)
       throw MeshError(bad + "the face element has no 'vertex_indices' list");
     }
   }
-  auto checkIndex = [&](long long index, long long row) {
-    if (index < 0 || index >= vertexCount)
-    {
-      throw MeshError(bad + "face " + std::to_string(row) + " has vertex index " +
-        std::to_string(index) + " outside 0.." + std::to_string(vertexCount - 1));
-    }
-  };
-  auto isFaceList = [](const PlyElement& e, const PlyProperty& p) {
-    return e.name == "face" && p.list && (p.name == "vertex_indices" || p.name == "vertex_index");
-  };
-  if (format == "ascii")
+  return vertexCount;
+}
+
+/// Whether `p` of `e` is the face element's vertex index list.
+bool IsPlyFaceList(const PlyElement& e, const PlyProperty& p)
+{
+  return e.name == "face" && p.list && (p.name == "vertex_indices" || p.name == "vertex_index");
+}
+
+/// A face's vertex index, checked against the vertex count.
+void CheckPlyIndex(long long index, long long row, long long vertexCount, const std::string& bad)
+{
+  if (index < 0 || index >= vertexCount)
   {
-    for (const PlyElement& e : elements)
+    throw MeshError(bad + "face " + std::to_string(row) + " has vertex index " +
+      std::to_string(index) + " outside 0.." + std::to_string(vertexCount - 1));
+  }
+}
+
+/// The rows of an ASCII PLY body: every value a finite number, every list
+/// as long as it says, every face index a vertex.
+void CheckPlyAscii(std::istream& in, const std::vector<PlyElement>& elements,
+  long long vertexCount, const std::string& bad)
+{
+  std::string line;
+  for (const PlyElement& e : elements)
+  {
+    for (long long row = 0; row < e.count; ++row)
     {
-      for (long long row = 0; row < e.count; ++row)
+      // A row without its end of line is cut off (VTK's reader asserts
+      // on it: found by fuzz/MeshReaderFuzzer).
+      if (!std::getline(in, line) || in.eof())
       {
-        // A row without its end of line is cut off (VTK's reader asserts
-        // on it: found by fuzz/MeshReaderFuzzer).
-        if (!std::getline(in, line) || in.eof())
+        throw MeshError(bad + "data ends in element '" + e.name + "' at row " +
+          std::to_string(row) + " of " + std::to_string(e.count) + " (truncated?)");
+      }
+      std::istringstream tokens(line);
+      for (const PlyProperty& p : e.properties)
+      {
+        std::string token;
+        double value = 0;
+        if (!(tokens >> token) || !ParseReal(token, value))
         {
-          throw MeshError(bad + "data ends in element '" + e.name + "' at row " +
-            std::to_string(row) + " of " + std::to_string(e.count) + " (truncated?)");
+          throw MeshError(bad + "element '" + e.name + "' row " + std::to_string(row) +
+            ": missing or non-numeric '" + p.name + "'");
         }
-        std::istringstream tokens(line);
-        for (const PlyProperty& p : e.properties)
+        if (!p.list)
         {
-          std::string token;
-          double value = 0;
-          if (!(tokens >> token) || !ParseReal(token, value))
+          if (!std::isfinite(value))
+          {
+            throw MeshError(bad + "non-finite (NaN or Inf) '" + p.name + "' in element '" +
+              e.name + "' row " + std::to_string(row));
+          }
+          continue;
+        }
+        // Range first: converting NaN or 1e300 to an integer is undefined
+        // (UBSan, fuzz/MeshReaderFuzzer).
+        if (!(value >= 0 && value <= static_cast<double>(kMaxListLength)) ||
+          value != std::floor(value))
+        {
+          throw MeshError(bad + "element '" + e.name + "' row " + std::to_string(row) +
+            ": list length '" + token + "'");
+        }
+        const long long n = static_cast<long long>(value);
+        if (n < 0)
+        {
+          throw MeshError(bad + "element '" + e.name + "' row " + std::to_string(row) +
+            ": list length '" + token + "'");
+        }
+        for (long long k = 0; k < n; ++k)
+        {
+          long long index = 0;
+          if (!(tokens >> token) || !ParseInteger(token, index))
           {
             throw MeshError(bad + "element '" + e.name + "' row " + std::to_string(row) +
-              ": missing or non-numeric '" + p.name + "'");
+              ": the list is shorter than its length " + std::to_string(n));
           }
-          if (!p.list)
+          if (IsPlyFaceList(e, p))
           {
-            if (!std::isfinite(value))
-            {
-              throw MeshError(bad + "non-finite (NaN or Inf) '" + p.name + "' in element '" +
-                e.name + "' row " + std::to_string(row));
-            }
-            continue;
-          }
-          // Range first: converting NaN or 1e300 to an integer is undefined
-          // (UBSan, fuzz/MeshReaderFuzzer).
-          if (!(value >= 0 && value <= static_cast<double>(kMaxListLength)) ||
-            value != std::floor(value))
-          {
-            throw MeshError(bad + "element '" + e.name + "' row " + std::to_string(row) +
-              ": list length '" + token + "'");
-          }
-          const long long n = static_cast<long long>(value);
-          if (n < 0)
-          {
-            throw MeshError(bad + "element '" + e.name + "' row " + std::to_string(row) +
-              ": list length '" + token + "'");
-          }
-          for (long long k = 0; k < n; ++k)
-          {
-            long long index = 0;
-            if (!(tokens >> token) || !ParseInteger(token, index))
-            {
-              throw MeshError(bad + "element '" + e.name + "' row " + std::to_string(row) +
-                ": the list is shorter than its length " + std::to_string(n));
-            }
-            if (isFaceList(e, p))
-            {
-              checkIndex(index, row);
-            }
+            CheckPlyIndex(index, row, vertexCount, bad);
           }
         }
       }
     }
-    return;
   }
-  if (format != "binary_little_endian" && format != "binary_big_endian")
-  {
-    throw MeshError(bad + "unknown format '" + format + "'");
-  }
-  const bool bigEndian = format == "binary_big_endian";
+}
+
+/// The rows of a binary PLY body: the bytes the fixed-size rows need are
+/// present before any is read, every list length in range, every face
+/// index a vertex.
+void CheckPlyBinary(std::istream& in, const std::vector<PlyElement>& elements, bool bigEndian,
+  long long vertexCount, const std::string& bad)
+{
   // Scalar-only rows have a fixed size: check the bytes they need before
   // reading anything (a 244-byte file must not claim 2e9 vertices).
   const std::streamoff start = in.tellg();
@@ -579,21 +616,46 @@ void PrecheckPly(const std::string& path)
           throw MeshError(bad + "element '" + e.name + "' row " + std::to_string(row) +
             ": list length " + std::to_string(n));
         }
-        if (isFaceList(e, p) && !p.integer)
+        if (IsPlyFaceList(e, p) && !p.integer)
         {
           throw MeshError(bad + "face indices are not integers");
         }
         for (long long k = 0; k < n; ++k)
         {
           const unsigned char* item = take(p.size, e, row);
-          if (isFaceList(e, p))
+          if (IsPlyFaceList(e, p))
           {
-            checkIndex(ReadInteger(item, p.size, p.isSigned, bigEndian), row);
+            CheckPlyIndex(ReadInteger(item, p.size, p.isSigned, bigEndian), row, vertexCount, bad);
           }
         }
       }
     }
   }
+}
+
+} // namespace
+
+void PrecheckPly(const std::string& path)
+{
+  std::ifstream in = Open(path, std::ios::in | std::ios::binary);
+  const std::string bad = "malformed PLY '" + path + "': ";
+  std::string line;
+  if (!std::getline(in, line) || line.rfind("ply", 0) != 0)
+  {
+    throw MeshError(bad + "does not start with 'ply'");
+  }
+  const PlyHeader header = ReadPlyHeader(in, bad);
+  const long long vertexCount = PlyVertexCount(header.elements, bad);
+  if (header.format == "ascii")
+  {
+    CheckPlyAscii(in, header.elements, vertexCount, bad);
+    return;
+  }
+  if (header.format != "binary_little_endian" && header.format != "binary_big_endian")
+  {
+    throw MeshError(bad + "unknown format '" + header.format + "'");
+  }
+  CheckPlyBinary(in, header.elements, header.format == "binary_big_endian", vertexCount, bad);
 }
 
 void PrecheckStl(const std::string& path)

@@ -75,6 +75,46 @@ struct Buffer
   Row operator[](int i) const { return Row(this->base + static_cast<size_t>(i) * this->width, this->width); }
 };
 
+/// Marks as creases (of `sharpness`) the edges between two faces whose
+/// normals differ by more than `featureAngle` degrees.
+void AddFeatureCreases(const shadinglab::mesh::FlatPolygons& flat, double featureAngle,
+  float sharpness, std::map<std::pair<int64_t, int64_t>, float>& creases)
+{
+  std::map<std::pair<int64_t, int64_t>, std::vector<int64_t>> edgeFaces;
+  std::vector<std::array<double, 3>> normals(static_cast<size_t>(flat.numberOfPolygons));
+  for (int64_t f = 0; f < flat.numberOfPolygons; ++f)
+  {
+    const int64_t b = flat.offsets[f], e = flat.offsets[f + 1];
+    for (int64_t k = b; k < e; ++k)
+    {
+      const int64_t u = flat.connectivity[k], v = flat.connectivity[k + 1 < e ? k + 1 : b];
+      edgeFaces[{ std::min(u, v), std::max(u, v) }].push_back(f);
+    }
+    const shadinglab::Vec3d area = shadinglab::mesh::NewellAreaVector<double>(
+      e - b, [&](int64_t k) { return shadinglab::mesh::PointOf(flat.points, flat.connectivity[b + k]); });
+    std::array<double, 3> n{ area.x, area.y, area.z };
+    const double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    for (double& x : n)
+    {
+      x = l > 0 ? x / l : 0.0;
+    }
+    normals[f] = n;
+  }
+  const double cosFeature = std::cos(featureAngle * 3.14159265358979323846 / 180.0);
+  for (const auto& [edge, faces] : edgeFaces)
+  {
+    if (faces.size() == 2)
+    {
+      const auto& a = normals[faces[0]];
+      const auto& b = normals[faces[1]];
+      if (a[0] * b[0] + a[1] * b[1] + a[2] * b[2] < cosFeature)
+      {
+        creases[edge] = sharpness;
+      }
+    }
+  }
+}
+
 } // namespace
 
 int vtkOpenSubdivRefine::RequestData(
@@ -121,39 +161,7 @@ int vtkOpenSubdivRefine::RequestData(
   }
   if (this->UseFeatureAngle)
   {
-    std::map<std::pair<int64_t, int64_t>, std::vector<int64_t>> edgeFaces;
-    std::vector<std::array<double, 3>> normals(static_cast<size_t>(flat.numberOfPolygons));
-    for (int64_t f = 0; f < flat.numberOfPolygons; ++f)
-    {
-      const int64_t b = flat.offsets[f], e = flat.offsets[f + 1];
-      for (int64_t k = b; k < e; ++k)
-      {
-        const int64_t u = flat.connectivity[k], v = flat.connectivity[k + 1 < e ? k + 1 : b];
-        edgeFaces[{ std::min(u, v), std::max(u, v) }].push_back(f);
-      }
-      const shadinglab::Vec3d area = shadinglab::mesh::NewellAreaVector<double>(
-        e - b, [&](int64_t k) { return shadinglab::mesh::PointOf(flat.points, flat.connectivity[b + k]); });
-      std::array<double, 3> n{ area.x, area.y, area.z };
-      const double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-      for (double& x : n)
-      {
-        x = l > 0 ? x / l : 0.0;
-      }
-      normals[f] = n;
-    }
-    const double cosFeature = std::cos(this->FeatureAngle * 3.14159265358979323846 / 180.0);
-    for (const auto& [edge, faces] : edgeFaces)
-    {
-      if (faces.size() == 2)
-      {
-        const auto& a = normals[faces[0]];
-        const auto& b = normals[faces[1]];
-        if (a[0] * b[0] + a[1] * b[1] + a[2] * b[2] < cosFeature)
-        {
-          creases[edge] = static_cast<float>(this->CreaseSharpness);
-        }
-      }
-    }
+    AddFeatureCreases(flat, this->FeatureAngle, static_cast<float>(this->CreaseSharpness), creases);
   }
   std::vector<Far::Index> creasePairs;
   std::vector<float> creaseWeights;

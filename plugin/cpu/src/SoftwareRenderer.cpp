@@ -150,6 +150,23 @@ public:
     const render::RenderOptions& options, RenderStats* stats);
 
 private:
+  /// What a frame decided before drawing, for its RenderStats.
+  struct FrameFacts
+  {
+    int64_t polygons = 0;
+    bool hiddenBackFaces = false;
+    bool fastPhongAsPhong = false;
+    double pixelsPerTriangle = 0;
+    bool normalsComputed = false;
+    bool normalsCached = false;
+  };
+  /// Scan-converts the frame with the stage of its mode; returns the
+  /// polygons found degenerate before rows were drawn.
+  int64_t RasterizeFrame(std::vector<ThreadState>& states, bool fastPhongAsPhong);
+  /// The frame's buffers as the Output image (box-filtered for ssaa > 1).
+  void ResolveImage();
+  void FillStats(
+    const std::vector<ThreadState>& states, const FrameFacts& facts, RenderStats& stats) const;
   template<typename StageT>
   int64_t Rasterize(std::vector<ThreadState>& states)
   {
@@ -289,40 +306,62 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh,
   F.Covered = this->Covered.data();
   F.Coverage = this->Coverage.data();
 
-  // The one choice of stage per frame: the rasterizer is compiled once per
-  // stage and never branches on the mode.
   std::vector<ThreadState> states(static_cast<size_t>(F.Threads));
-  int64_t degenerateBeforeRows = 0;
-  if (F.Opt.countCoverage)
-  {
-    degenerateBeforeRows = this->Rasterize<CoverageStage>(states);
-  }
-  else
-  {
-    switch (F.Opt.mode)
-    {
-      case ShadingMode::Auto: // resolved by RunAuto before Run
-      case ShadingMode::Flat:
-        degenerateBeforeRows = this->Rasterize<FlatStage>(states);
-        break;
-      case ShadingMode::Gouraud:
-        degenerateBeforeRows = this->Rasterize<GouraudStage>(states);
-        break;
-      case ShadingMode::Phong:
-        degenerateBeforeRows = this->Rasterize<PhongStage>(states);
-        break;
-      case ShadingMode::FastPhong:
-        degenerateBeforeRows = fastPhongAsPhong ? this->Rasterize<PhongStage>(states)
-                                                : this->Rasterize<FastPhongStage>(states);
-        break;
-    }
-  }
+  const int64_t degenerateBeforeRows = this->RasterizeFrame(states, fastPhongAsPhong);
   states[0].degenerate += degenerateBeforeRows;
 
-  // Resolve supersampling with a box filter.
+  this->ResolveImage();
+
+  if (stats)
+  {
+    FrameFacts facts;
+    facts.polygons = polygons;
+    facts.hiddenBackFaces = hiddenBackFaces;
+    facts.fastPhongAsPhong = fastPhongAsPhong;
+    facts.pixelsPerTriangle = fastPhongMayFallBack ? pixelsPerTriangle : 0.0;
+    facts.normalsComputed = computedNormals;
+    facts.normalsCached = normalsCached;
+    this->FillStats(states, facts, *stats);
+    stats->milliseconds =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  }
+  return image;
+}
+
+int64_t SoftwareRenderer::Internals::RasterizeFrame(
+  std::vector<ThreadState>& states, bool fastPhongAsPhong)
+{
+  // The one choice of stage per frame: the rasterizer is compiled once per
+  // stage and never branches on the mode.
+  if (this->FrameState.Opt.countCoverage)
+  {
+    return this->Rasterize<CoverageStage>(states);
+  }
+  switch (this->FrameState.Opt.mode)
+  {
+    case ShadingMode::Auto: // resolved by RunAuto before Run
+    case ShadingMode::Flat:
+      return this->Rasterize<FlatStage>(states);
+    case ShadingMode::Gouraud:
+      return this->Rasterize<GouraudStage>(states);
+    case ShadingMode::Phong:
+      return this->Rasterize<PhongStage>(states);
+    case ShadingMode::FastPhong:
+      return fastPhongAsPhong ? this->Rasterize<PhongStage>(states)
+                              : this->Rasterize<FastPhongStage>(states);
+  }
+  return 0;
+}
+
+void SoftwareRenderer::Internals::ResolveImage()
+{
+  // Supersampling resolved with a box filter; without it the frame's
+  // buffers become the image's (and the last image's come back next frame).
+  const Frame& F = this->FrameState;
+  Image& image = this->Output;
   image.width = F.Opt.width;
   image.height = F.Opt.height;
-  if (ssaa == 1)
+  if (F.Opt.ssaa == 1)
   {
     image.rgb.swap(this->Rgb);
     image.covered.swap(this->Covered);
@@ -330,51 +369,49 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh,
   }
   else
   {
-    render::DownsampleBox(this->Rgb, this->Covered, F.Width, F.Height, ssaa, image);
+    render::DownsampleBox(this->Rgb, this->Covered, F.Width, F.Height, F.Opt.ssaa, image);
     image.coverage.clear();
   }
+}
 
-  if (stats)
+void SoftwareRenderer::Internals::FillStats(
+  const std::vector<ThreadState>& states, const FrameFacts& facts, RenderStats& stats) const
+{
+  stats = RenderStats();
+  stats.polygons = facts.polygons;
+  for (const auto& st : states)
   {
-    *stats = RenderStats();
-    stats->polygons = polygons;
+    stats.triangles += st.triangles; // counted by binning, which reads every polygon's size
+    stats.rasterized += st.rasterized;
+    stats.clipped += st.clippedPolygons;
+    stats.binned += st.binned;
+    stats.degenerate += st.degenerate;
+    stats.pixelsShaded += st.shaded;
+    stats.fastPhongExact += st.fastPhongExact;
+    stats.culled += st.culled;
+  }
+  stats.hiddenBackFacesCulled = facts.hiddenBackFaces;
+  stats.fastPhongAsPhong = facts.fastPhongAsPhong;
+  stats.pixelsPerTriangle = facts.pixelsPerTriangle;
+  if (this->FrameState.Opt.ssaa == 1)
+  {
     for (const auto& st : states)
     {
-      stats->triangles += st.triangles; // counted by binning, which reads every polygon's size
-      stats->rasterized += st.rasterized;
-      stats->clipped += st.clippedPolygons;
-      stats->binned += st.binned;
-      stats->degenerate += st.degenerate;
-      stats->pixelsShaded += st.shaded;
-      stats->fastPhongExact += st.fastPhongExact;
-      stats->culled += st.culled;
+      stats.pixelsCovered += st.covered; // counted by the threads
     }
-    stats->hiddenBackFacesCulled = hiddenBackFaces;
-    stats->fastPhongAsPhong = fastPhongAsPhong;
-    stats->pixelsPerTriangle = fastPhongMayFallBack ? pixelsPerTriangle : 0.0;
-    if (ssaa == 1)
-    {
-      for (const auto& st : states)
-      {
-        stats->pixelsCovered += st.covered; // counted by the threads
-      }
-    }
-    else
-    {
-      for (uint8_t c : image.covered)
-      {
-        stats->pixelsCovered += c;
-      }
-    }
-    stats->skipped = std::max<int64_t>(0, stats->polygons - stats->rasterized - stats->degenerate);
-    stats->threads = F.Threads;
-    stats->normalsComputed = computedNormals;
-    stats->normalsCached = normalsCached;
-    stats->drawnMode = F.Opt.mode;
-    stats->milliseconds =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   }
-  return image;
+  else
+  {
+    for (uint8_t c : this->Output.covered)
+    {
+      stats.pixelsCovered += c;
+    }
+  }
+  stats.skipped = std::max<int64_t>(0, stats.polygons - stats.rasterized - stats.degenerate);
+  stats.threads = this->FrameState.Threads;
+  stats.normalsComputed = facts.normalsComputed;
+  stats.normalsCached = facts.normalsCached;
+  stats.drawnMode = this->FrameState.Opt.mode;
 }
 
 std::vector<float> AreaWeightedNormals(const Mesh& mesh)

@@ -60,19 +60,18 @@ struct Sampled
   bool back;
 };
 
-} // namespace
-
-ModeDifferences EstimateModeDifferences(const Mesh& mesh, const std::vector<float>& normals,
-  const Camera& camera, const Lighting<double>& sceneLighting, const Material<double>& material,
-  int width, int height)
+/// Each triangle is split into cells of about kMinCellPixels whatever the
+/// image's size, so that the estimate means the same at 320x240 (where it
+/// was fitted) and at 1080p: the split's order for a triangle of `pixels`.
+int QuadratureOrder(double pixels)
 {
-  ModeDifferences out;
-  if (normals.size() != mesh.points.size() || mesh.NumberOfPolygons() == 0)
-  {
-    return out;
-  }
-  const ScreenProjection screen(camera, width, height);
-  const Lighting<double> lighting = LightsOrHeadlight(sceneLighting, camera);
+  return std::clamp(static_cast<int>(std::ceil(std::sqrt(pixels / kMinCellPixels))), 1, kMaxOrder);
+}
+
+/// The sampled triangles in view that the estimate weighs (TriangleSample's
+/// runs), with their screen areas; none when no triangle is in view.
+std::vector<Sampled> TrianglesToWeigh(const Mesh& mesh, const ScreenProjection& screen)
+{
   TriangleSample picked(TriangleCount(mesh), kMaxSampledTriangles);
   // The sampled triangles in view, front and back (by their winding on the
   // screen, as the renderers decide it) kept apart: on a closed mesh the
@@ -117,22 +116,17 @@ ModeDifferences EstimateModeDifferences(const Mesh& mesh, const std::vector<floa
   const bool weighBack = !(area[0] > 0);
   if (!(area[weighBack ? 1 : 0] > 0))
   {
-    return out;
+    return {};
   }
-  // Each triangle is split into cells of about kMinCellPixels whatever the
-  // image's size, so that the estimate means the same at 320x240 (where it
-  // was fitted) and at 1080p; past kMaxPoints in all, fewer triangles are
-  // kept (every m-th), not coarser cells.
-  auto orderOf = [](double pixels) {
-    return std::clamp(static_cast<int>(std::ceil(std::sqrt(pixels / kMinCellPixels))), 1, kMaxOrder);
-  };
+  // Past kMaxPoints quadrature points in all, fewer triangles are kept
+  // (every m-th), not coarser cells.
   double points = 0;
   samples.erase(std::remove_if(samples.begin(), samples.end(),
                   [&](const Sampled& s) { return s.back != weighBack; }),
     samples.end());
   for (const Sampled& s : samples)
   {
-    points += static_cast<double>(orderOf(s.area)) * orderOf(s.area);
+    points += static_cast<double>(QuadratureOrder(s.area)) * QuadratureOrder(s.area);
   }
   if (points > kMaxPoints)
   {
@@ -143,6 +137,27 @@ ModeDifferences EstimateModeDifferences(const Mesh& mesh, const std::vector<floa
       samples[kept++] = samples[i];
     }
     samples.resize(kept);
+  }
+  return samples;
+}
+
+} // namespace
+
+ModeDifferences EstimateModeDifferences(const Mesh& mesh, const std::vector<float>& normals,
+  const Camera& camera, const Lighting<double>& sceneLighting, const Material<double>& material,
+  int width, int height)
+{
+  ModeDifferences out;
+  if (normals.size() != mesh.points.size() || mesh.NumberOfPolygons() == 0)
+  {
+    return out;
+  }
+  const ScreenProjection screen(camera, width, height);
+  const Lighting<double> lighting = LightsOrHeadlight(sceneLighting, camera);
+  std::vector<Sampled> samples = TrianglesToWeigh(mesh, screen);
+  if (samples.empty())
+  {
+    return out;
   }
   double weighed = 0;
   for (const Sampled& s : samples)
@@ -222,7 +237,7 @@ ModeDifferences EstimateModeDifferences(const Mesh& mesh, const std::vector<floa
     // split: their centroids at barycentrics (i + 1/3, j + 1/3, l + 1/3)/k,
     // i + j + l = k - 1 (upright), and (i + 2/3, j + 2/3, l + 2/3)/k,
     // i + j + l = k - 2 (inverted).
-    const int order = orderOf(s.area);
+    const int order = QuadratureOrder(s.area);
     double dFlat = 0, dGouraud = 0, dNormals = 0;
     auto sample = [&](double u, double v, double w) {
       const Vec3<double> p = P[0] * u + P[1] * v + P[2] * w;

@@ -115,6 +115,123 @@ void AddFeatureCreases(const shadinglab::mesh::FlatPolygons& flat, double featur
   }
 }
 
+/// The refined points (the last level's, or their limit when `limit` is
+/// given), their limit normals (du x dv, normalized; +z where the tangents
+/// degenerate) and the refined point-data arrays onto `output`.
+void WriteRefinedPoints(const double* src, int width, int nv, const double* limit,
+  const std::vector<double>& du, const std::vector<double>& dv,
+  const std::vector<vtkDataArray*>& arrays, vtkPolyData* output)
+{
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(nv);
+  vtkNew<vtkFloatArray> normals;
+  normals->SetName("Normals");
+  normals->SetNumberOfComponents(3);
+  normals->SetNumberOfTuples(nv);
+  for (int v = 0; v < nv; ++v)
+  {
+    const double* pos =
+      limit ? limit + 3 * static_cast<size_t>(v) : src + static_cast<size_t>(v) * width;
+    points->SetPoint(v, pos);
+    const double* a = &du[3 * static_cast<size_t>(v)];
+    const double* b = &dv[3 * static_cast<size_t>(v)];
+    double n[3] = { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
+    const double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    if (l > 0 && std::isfinite(l))
+    {
+      n[0] /= l, n[1] /= l, n[2] /= l;
+    }
+    else
+    {
+      n[0] = 0, n[1] = 0, n[2] = 1; // degenerate tangents (e.g. at a cone point)
+    }
+    normals->SetTuple(v, n);
+  }
+  output->SetPoints(points);
+  vtkPointData* outPD = output->GetPointData();
+  int col = 3;
+  for (vtkDataArray* array : arrays)
+  {
+    vtkSmartPointer<vtkDataArray> refined;
+    refined.TakeReference(array->NewInstance());
+    refined->SetName(array->GetName());
+    refined->SetNumberOfComponents(array->GetNumberOfComponents());
+    refined->SetNumberOfTuples(nv);
+    for (int v = 0; v < nv; ++v)
+    {
+      for (int c = 0; c < array->GetNumberOfComponents(); ++c)
+      {
+        refined->SetComponent(v, c, src[static_cast<size_t>(v) * width + col + c]);
+      }
+    }
+    col += array->GetNumberOfComponents();
+    outPD->AddArray(refined);
+  }
+  outPD->SetNormals(normals);
+}
+
+/// Each child face of the last level inherits its ancestor polygon's cell
+/// data (polygons after the source's verts and lines).
+void CopyCellDataToChildren(const Far::TopologyRefiner& refiner,
+  const Far::PrimvarRefiner& primvars, int levels, vtkPolyData* source, int64_t polygons,
+  vtkPolyData* output)
+{
+  vtkCellData* inCD = source->GetCellData();
+  if (inCD->GetNumberOfArrays() > 0)
+  {
+    std::vector<int> parent(static_cast<size_t>(polygons));
+    for (int f = 0; f < static_cast<int>(polygons); ++f)
+    {
+      parent[f] = f;
+    }
+    for (int level = 1; level <= levels; ++level)
+    {
+      const Far::TopologyLevel& l = refiner.GetLevel(level);
+      std::vector<int> next(static_cast<size_t>(l.GetNumFaces()));
+      // Refinement::getChildFaceParentFace is not public; uniform refinement
+      // numbers child faces parent by parent, so map through the face-uniform
+      // interpolation of the parent index.
+      struct IndexRow
+      {
+        int* p;
+        void operator=(const IndexRow& o) { *this->p = *o.p; }
+      };
+      struct IndexBuffer
+      {
+        int* base;
+        IndexRow operator[](int i) const { return IndexRow{ this->base + i }; }
+      };
+      IndexBuffer s{ parent.data() }, d{ next.data() };
+      primvars.InterpolateFaceUniform(level, s, d);
+      parent.swap(next);
+    }
+    const int nf = refiner.GetLevel(levels).GetNumFaces();
+    vtkCellData* outCD = output->GetCellData();
+    outCD->CopyAllocate(inCD, nf);
+    const vtkIdType polyBase = source->GetNumberOfVerts() + source->GetNumberOfLines();
+    for (int f = 0; f < nf; ++f)
+    {
+      outCD->CopyData(inCD, polyBase + parent[f], f);
+    }
+  }
+}
+
+/// The last level's faces (of `corners` corners each) as the output's polygons.
+void WriteRefinedFaces(const Far::TopologyLevel& last, int corners, vtkPolyData* output)
+{
+  vtkNew<vtkCellArray> polys;
+  const int nf = last.GetNumFaces();
+  polys->AllocateExact(nf, static_cast<vtkIdType>(nf) * corners);
+  for (int f = 0; f < nf; ++f)
+  {
+    const Far::ConstIndexArray fv = last.GetFaceVertices(f);
+    std::vector<vtkIdType> ids(fv.begin(), fv.end());
+    polys->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
+  }
+  output->SetPolys(polys);
+}
+
 } // namespace
 
 int vtkOpenSubdivRefine::RequestData(
@@ -257,103 +374,13 @@ int vtkOpenSubdivRefine::RequestData(
   this->UpdateProgress(0.7);
 
   // Output.
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToDouble();
-  points->SetNumberOfPoints(nv);
-  vtkNew<vtkFloatArray> normals;
-  normals->SetName("Normals");
-  normals->SetNumberOfComponents(3);
-  normals->SetNumberOfTuples(nv);
-  for (int v = 0; v < nv; ++v)
-  {
-    const double* pos = this->ProjectToLimit ? &limit[3 * static_cast<size_t>(v)]
-                                             : src + static_cast<size_t>(v) * width;
-    points->SetPoint(v, pos);
-    const double* a = &du[3 * static_cast<size_t>(v)];
-    const double* b = &dv[3 * static_cast<size_t>(v)];
-    double n[3] = { a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0] };
-    const double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
-    if (l > 0 && std::isfinite(l))
-    {
-      n[0] /= l, n[1] /= l, n[2] /= l;
-    }
-    else
-    {
-      n[0] = 0, n[1] = 0, n[2] = 1; // degenerate tangents (e.g. at a cone point)
-    }
-    normals->SetTuple(v, n);
-  }
-  output->SetPoints(points);
-  vtkPointData* outPD = output->GetPointData();
-  int col = 3;
-  for (vtkDataArray* array : arrays)
-  {
-    vtkSmartPointer<vtkDataArray> refined;
-    refined.TakeReference(array->NewInstance());
-    refined->SetName(array->GetName());
-    refined->SetNumberOfComponents(array->GetNumberOfComponents());
-    refined->SetNumberOfTuples(nv);
-    for (int v = 0; v < nv; ++v)
-    {
-      for (int c = 0; c < array->GetNumberOfComponents(); ++c)
-      {
-        refined->SetComponent(v, c, src[static_cast<size_t>(v) * width + col + c]);
-      }
-    }
-    col += array->GetNumberOfComponents();
-    outPD->AddArray(refined);
-  }
-  outPD->SetNormals(normals);
+  WriteRefinedPoints(src, width, nv, this->ProjectToLimit ? limit.data() : nullptr, du, dv, arrays,
+    output);
 
-  vtkNew<vtkCellArray> polys;
-  const int nf = last.GetNumFaces();
-  polys->AllocateExact(nf, static_cast<vtkIdType>(nf) * (scheme == LOOP ? 3 : 4));
-  for (int f = 0; f < nf; ++f)
-  {
-    const Far::ConstIndexArray fv = last.GetFaceVertices(f);
-    std::vector<vtkIdType> ids(fv.begin(), fv.end());
-    polys->InsertNextCell(static_cast<vtkIdType>(ids.size()), ids.data());
-  }
-  output->SetPolys(polys);
+  WriteRefinedFaces(last, scheme == LOOP ? 3 : 4, output);
 
   // Cell data: each child face inherits its ancestor polygon's values.
-  vtkCellData* inCD = source->GetCellData();
-  if (inCD->GetNumberOfArrays() > 0)
-  {
-    std::vector<int> parent(static_cast<size_t>(flat.numberOfPolygons));
-    for (int f = 0; f < static_cast<int>(flat.numberOfPolygons); ++f)
-    {
-      parent[f] = f;
-    }
-    for (int level = 1; level <= this->Levels; ++level)
-    {
-      const Far::TopologyLevel& l = refiner->GetLevel(level);
-      std::vector<int> next(static_cast<size_t>(l.GetNumFaces()));
-      // Refinement::getChildFaceParentFace is not public; uniform refinement
-      // numbers child faces parent by parent, so map through the face-uniform
-      // interpolation of the parent index.
-      struct IndexRow
-      {
-        int* p;
-        void operator=(const IndexRow& o) { *this->p = *o.p; }
-      };
-      struct IndexBuffer
-      {
-        int* base;
-        IndexRow operator[](int i) const { return IndexRow{ this->base + i }; }
-      };
-      IndexBuffer s{ parent.data() }, d{ next.data() };
-      primvars.InterpolateFaceUniform(level, s, d);
-      parent.swap(next);
-    }
-    vtkCellData* outCD = output->GetCellData();
-    outCD->CopyAllocate(inCD, nf);
-    const vtkIdType polyBase = source->GetNumberOfVerts() + source->GetNumberOfLines();
-    for (int f = 0; f < nf; ++f)
-    {
-      outCD->CopyData(inCD, polyBase + parent[f], f);
-    }
-  }
+  CopyCellDataToChildren(*refiner, primvars, this->Levels, source, flat.numberOfPolygons, output);
   this->UpdateProgress(1.0);
   return 1;
 }

@@ -2,6 +2,7 @@
 #include "MaterialEditor.h"
 
 #include "shadinglab/model/Materials.h"
+#include "SettingControls.h"
 #include "shadinglab/render/Settings.h"
 
 #include <QComboBox>
@@ -134,8 +135,7 @@ void MaterialEditor::AddRow(const char* key, const QString& label, double lo, do
   row.slider->setObjectName(label); // found by label (tests, scripting)
   row.box->setRange(row.min, row.max);
   row.box->setDecimals(hi > 100 ? 1 : 3);
-  const QString tip = QString::fromStdString(setting->doc + " (" + render::RangeText(*setting) +
-    "; --" + setting->key + " on the command line)");
+  const QString tip = SettingToolTip(key);
   row.slider->setToolTip(tip);
   row.box->setToolTip(tip);
   row.box->setSingleStep((hi - lo) / 100.0);

@@ -24,13 +24,14 @@ const render::SettingRow& Row(const char* key)
   return *row;
 }
 
-QString ToolTip(const render::SettingRow& row)
+} // namespace
+
+QString SettingToolTip(const char* key)
 {
+  const render::SettingRow& row = Row(key);
   return QString::fromStdString(row.doc + " (" + render::RangeText(row) + "; --" + row.key +
     " on the command line, " + row.property + " in ParaView)");
 }
-
-} // namespace
 
 QDoubleSpinBox* MakeSettingSpinBox(const char* key, QWidget* parent)
 {
@@ -39,7 +40,7 @@ QDoubleSpinBox* MakeSettingSpinBox(const char* key, QWidget* parent)
   box->setRange(row.min, row.max);
   box->setDecimals(2);
   box->setValue(row.get(render::Settings{}).numbers.at(0));
-  box->setToolTip(ToolTip(row));
+  box->setToolTip(SettingToolTip(key));
   box->setObjectName(QString::fromStdString(row.key));
   return box;
 }
@@ -57,7 +58,7 @@ QComboBox* MakeSettingComboBox(const char* key, QWidget* parent)
   {
     combo->setCurrentIndex(static_cast<int>(def.numbers[0]));
   }
-  combo->setToolTip(ToolTip(row));
+  combo->setToolTip(SettingToolTip(key));
   combo->setObjectName(QString::fromStdString(row.key));
   return combo;
 }

@@ -6,10 +6,14 @@
 
 class QComboBox;
 class QDoubleSpinBox;
+class QString;
 class QWidget;
 
 namespace shadinglab::widgets
 {
+
+/// The setting's tooltip: its documentation, range, flag and property.
+QString SettingToolTip(const char* key);
 
 /// A spin box over the setting's range, at its default, documented.
 QDoubleSpinBox* MakeSettingSpinBox(const char* key, QWidget* parent = nullptr);

@@ -85,7 +85,6 @@ void ApplyMaterialArguments(
     implied["model"] = impliedModel;
   }
   const bool modelGiven = args.Has("model") || !impliedModel.empty();
-  const ReflectanceModel before = m.model;
   ApplySettingArguments(args, render::SettingGroup::Material, settings, implied);
   if (modelGiven && !args.Has("kd") && !args.Has("ks") && !args.Has("material"))
   {
@@ -96,7 +95,7 @@ void ApplyMaterialArguments(
       m.ks = 0.3;
     }
   }
-  if (m.model == ReflectanceModel::Lambert && (modelGiven || before != m.model))
+  if (modelGiven && m.model == ReflectanceModel::Lambert)
   {
     // Lambert has no specular term: ks is 0 whatever was given, kd 1 unless given.
     m.kd = args.Has("kd") ? m.kd : 1.0;

@@ -123,7 +123,7 @@ int RunCompare(int argc, char** argv)
   const std::vector<Panel> panels =
     ParsePanels(request->args.Get("modes", "flat,gouraud,phong,fast-phong,cook-torrance"),
       request->scene.material);
-  const int W = request->options.width, H = request->options.height;
+  const int W = request->settings.render.width, H = request->settings.render.height;
   constexpr int kLabelBar = 26; // pixels above each panel for its name
   constexpr int kGap = 4;       // pixels between panels
   const int canvasW = static_cast<int>(panels.size()) * (W + kGap) - kGap;
@@ -134,14 +134,14 @@ int RunCompare(int argc, char** argv)
   const char* backendName = render::BackendName(renderer->GetBackend());
   for (size_t m = 0; m < panels.size(); ++m)
   {
-    render::RenderOptions options = request->options;
+    render::RenderOptions options = request->settings.render;
     options.mode = panels[m].mode;
     options.fastPhongFallback = false; // a comparison shows each mode as such
     render::Scene scene = request->scene;
     scene.material = panels[m].material;
     const render::Image& image = RenderOrExplain(
       *renderer, scene, options, nullptr, " (panel '" + panels[m].name + "'; leave it out with --modes)");
-    const auto rgb8 = image.ToRGB8(request->display);
+    const auto rgb8 = image.ToRGB8(request->settings.display);
     const int x0 = static_cast<int>(m) * (W + kGap);
     for (int y = 0; y < H; ++y)
     {

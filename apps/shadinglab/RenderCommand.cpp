@@ -35,7 +35,7 @@ int RunRender(int argc, char** argv)
     return 0;
   }
   const Arguments& args = request->args;
-  const render::RenderOptions& options = request->options;
+  const render::RenderOptions& options = request->settings.render;
   const std::string& input = request->input;
   std::string autoNotice;
   const auto renderer = MakeRenderer(request->backend, "render", autoNotice);
@@ -43,7 +43,7 @@ int RunRender(int argc, char** argv)
   const render::Image& image = RenderOrExplain(*renderer, request->scene, options, &stats, "");
   const std::string out = args.Get("out", "out.png");
   const Stopwatch writing;
-  WritePng(image.width, image.height, image.ToRGB8(request->display), out);
+  WritePng(image.width, image.height, image.ToRGB8(request->settings.display), out);
   const double writeMs = writing.Milliseconds();
   // Notices come after success, so that an error stays one line.
   if (stats.normalsComputed)

@@ -125,8 +125,6 @@ void SettingsFromArguments(const Arguments& args, SceneArguments& scene)
       ReflectanceModelName(material.model) + ")");
   }
   scene.scene.material = material;
-  scene.options = options;
-  scene.display = settings.display;
 
   const std::string& backend = scene.backend = args.Get("backend", "auto");
   if (backend != "cpu" && backend != "auto" && backend != "gpu")
@@ -194,7 +192,7 @@ void ReadAndPrepare(const Arguments& args, const std::string& input, SceneArgume
 void CameraFromArguments(const Arguments& args, SceneArguments& scene)
 {
   const render::Mesh& mesh = scene.mesh;
-  const render::RenderOptions& options = scene.options;
+  const render::RenderOptions& options = scene.settings.render;
   const double zoom = args.GetDouble("zoom", 1.0); // checked by SettingsFromArguments
   double bounds[6];
   mesh.Bounds(bounds);

@@ -29,9 +29,9 @@ struct SceneArguments
   render::Mesh mesh;    ///< in `frame`'s local coordinates
   render::WorldFrame frame;
   render::Scene scene; ///< scene.mesh points at `mesh`
-  render::Settings settings; ///< everything the settings table's flags set
-  render::RenderOptions options; ///< settings.render with the size
-  render::DisplayTransform display = render::DisplayTransform::Clamp;
+  /// Everything the settings table's flags set; settings.render has the
+  /// image size too, settings.display the display transform.
+  render::Settings settings;
   std::string notices; ///< said after success (errors stay one line)
   double readMs = 0;    ///< reading (and checking) the input file
   double prepareMs = 0; ///< the repair check, repair, conversion

@@ -40,6 +40,7 @@
 #include <iostream>
 #include <map>
 #include <sstream>
+#include <tuple>
 #include <vector>
 
 namespace sl = shadinglab;
@@ -91,14 +92,16 @@ vtkShadingLabPolyDataMapper::~vtkShadingLabPolyDataMapper() = default;
 
 namespace
 {
-/// What the shaders are built from (Variant): a change needs new shaders.
-std::string VariantKey(const sl::render::Settings& s)
+/// What SetSettings must notice: the shaders' variant (mode, model,
+/// specular on/off, lobe count, conductor, interpolation), the budget and
+/// the normals to make. The rest reaches the GPU as uniforms. A tuple, not
+/// a string: composite mappers pass their settings to every block each frame.
+auto ModifyingPart(const sl::render::Settings& s)
 {
   const sl::Material<double>& m = s.material;
-  return std::to_string(static_cast<int>(m.model)) + "/" + std::to_string(m.ks > 0) + "/" +
-    std::to_string(m.lobeCount) + "/" + std::to_string(m.IsConductor()) + "/" +
-    std::to_string(static_cast<int>(s.render.mode)) + "/" +
-    std::to_string(static_cast<int>(s.render.interpolation));
+  return std::make_tuple(m.model, m.ks > 0, m.lobeCount, m.IsConductor(), s.render.mode,
+    s.render.interpolation, s.render.maxError, s.normals.weighting, s.normals.featureAngle,
+    s.normals.recompute);
 }
 } // namespace
 
@@ -108,11 +111,7 @@ void vtkShadingLabPolyDataMapper::SetSettings(const sl::render::Settings& settin
   // budget a new preparation or choice: mark the mapper modified then. The
   // other changes reach the GPU through the uniform comparison.
   sl::render::Settings& current = this->Internal->Settings;
-  const bool modified = VariantKey(current) != VariantKey(settings) ||
-    current.render.maxError != settings.render.maxError ||
-    current.normals.weighting != settings.normals.weighting ||
-    current.normals.featureAngle != settings.normals.featureAngle ||
-    current.normals.recompute != settings.normals.recompute;
+  const bool modified = ModifyingPart(current) != ModifyingPart(settings);
   current = settings;
   if (modified)
   {

@@ -61,6 +61,20 @@ int ParaViewCount(const sr::SettingRow& row)
   return row.paraviewCount > 0 ? row.paraviewCount : row.maxCount;
 }
 
+/// The default as ParaView shows it: a choice's label, else the value.
+std::string DefaultLabel(const sr::SettingRow& row)
+{
+  const std::string key = sr::DefaultText(row);
+  for (const auto& c : row.choices)
+  {
+    if (c.key == key)
+    {
+      return c.label;
+    }
+  }
+  return key;
+}
+
 std::string Documentation(const sr::SettingRow& row)
 {
   std::string doc = row.doc;
@@ -69,15 +83,7 @@ std::string Documentation(const sr::SettingRow& row)
   {
     doc += ". Range " + sr::RangeText(row);
   }
-  std::string def = sr::DefaultText(row);
-  for (const auto& c : row.choices)
-  {
-    if (c.key == def)
-    {
-      def = c.label;
-    }
-  }
-  return Escape(doc + ". Default: " + def + ". (setting '" + row.key + "')");
+  return Escape(doc + ". Default: " + DefaultLabel(row) + ". (setting '" + row.key + "')");
 }
 
 void Property(std::ostream& out, const sr::SettingRow& row)
@@ -134,17 +140,9 @@ void Property(std::ostream& out, const sr::SettingRow& row)
     }
     case sr::SettingKind::Text:
     {
-      std::string label = sr::DefaultText(row);
-      for (const auto& c : row.choices)
-      {
-        if (c.key == label)
-        {
-          label = c.label;
-        }
-      }
       out << "      <StringVectorProperty" << head
           << " command=\"SetTextSetting\" number_of_elements=\"1\" default_values=\""
-          << Escape(label) << "\">\n        <StringListDomain name=\"list\">";
+          << Escape(DefaultLabel(row)) << "\">\n        <StringListDomain name=\"list\">";
       for (const auto& c : row.choices)
       {
         out << "<String value=\"" << Escape(c.label) << "\"/>";

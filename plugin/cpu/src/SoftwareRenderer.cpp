@@ -83,6 +83,13 @@ void SetupTransforms(Frame& frame)
 /// is drawn instead.
 constexpr double kFastPhongMinPixels = 96.0;
 
+/// The worker threads of a frame: as asked, or every hardware thread.
+int ThreadsFor(const render::RenderOptions& options)
+{
+  return options.threads > 0 ? options.threads
+                             : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+}
+
 /// The mesh's bounding box on screen, once per frame: whether all of it is
 /// in front of the near plane (clip z + w > 0 at its eight corners: the
 /// camera is outside the mesh and the near plane cuts nothing away), and
@@ -137,12 +144,15 @@ constexpr double kCullTestMinPixelsPerPolygon = 1.0;
 class SoftwareRenderer::Internals
 {
 public:
+  /// `knownHash`: the mesh's content hash when the caller computed it this
+  /// frame (RunAuto), so it is not computed twice.
   const Image& Run(const Mesh& mesh,
     const render::Camera& camera,
     const Lighting<float>& lighting,
     const Material<float>& material,
     const render::RenderOptions& options,
-    RenderStats* stats);
+    RenderStats* stats,
+    std::optional<uint64_t> knownHash = std::nullopt);
 
   /// Run with ShadingMode::Auto resolved (ChooseMode) from this mesh's
   /// normals, made once per mesh version and shared with the drawing.
@@ -180,8 +190,6 @@ private:
   ClosedMeshCache Closed;
   std::vector<float> ComputedNormals; ///< area-weighted, for a mesh without normals
   std::optional<uint64_t> NormalsFor;  ///< the content hash they were made for
-  /// This frame's content hash when Render already computed it (Auto).
-  std::optional<uint64_t> FrameHash;
 
   /// The area-weighted normals of a mesh without normals, made once per
   /// mesh version (kept while its arrays hash the same); `cached` says
@@ -207,7 +215,8 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh,
   const Lighting<float>& lighting,
   const Material<float>& material,
   const render::RenderOptions& options,
-  RenderStats* stats)
+  RenderStats* stats,
+  std::optional<uint64_t> knownHash)
 {
   const auto start = std::chrono::steady_clock::now();
   Frame& F = this->FrameState; // kept across frames: the power table's storage is reused
@@ -222,9 +231,7 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh,
   const int ssaa = F.Opt.ssaa;
   F.Width = F.Opt.width * ssaa;
   F.Height = F.Opt.height * ssaa;
-  F.Threads = F.Opt.threads > 0
-    ? F.Opt.threads
-    : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  F.Threads = ThreadsFor(F.Opt);
   F.Perspective = F.Opt.interpolation == render::InterpolationSpace::Perspective && !F.Cam.parallel;
   SetupTransforms(F);
   // Back faces: culled when asked, or when none can be seen (HiddenBackFaces.h;
@@ -243,8 +250,8 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh,
   {
     if (!hashed)
     {
-      fingerprint = this->FrameHash ? *this->FrameHash
-                                    : mesh.ContentHash(SpreadOver(this->Buffers.Pool, F.Threads));
+      fingerprint =
+        knownHash ? *knownHash : mesh.ContentHash(SpreadOver(this->Buffers.Pool, F.Threads));
       hashed = true;
     }
     return fingerprint;
@@ -438,22 +445,19 @@ const Image& SoftwareRenderer::Internals::RunAuto(const render::Scene& scene,
   const Mesh& mesh = *scene.mesh;
   const std::vector<float>* normals = &mesh.normals;
   bool cached = false;
+  std::optional<uint64_t> hash;
   const bool computed = static_cast<int64_t>(mesh.normals.size()) != 3 * mesh.NumberOfPoints();
   if (computed)
   {
-    const int threads = options.threads > 0
-      ? options.threads
-      : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-    this->FrameHash = mesh.ContentHash(SpreadOver(this->Buffers.Pool, threads));
-    normals = &this->ComputedNormalsOf(mesh, *this->FrameHash, cached);
+    hash = mesh.ContentHash(SpreadOver(this->Buffers.Pool, ThreadsFor(options)));
+    normals = &this->ComputedNormalsOf(mesh, *hash, cached);
   }
   const render::ModeChoice choice = render::ChooseMode(mesh, *normals, scene.camera, lights,
     scene.material, options.width, options.height, options.maxError);
   render::RenderOptions drawn = options;
   drawn.mode = choice.mode;
-  const Image& image =
-    this->Run(mesh, scene.camera, lights.Cast<float>(), scene.material.Cast<float>(), drawn, stats);
-  this->FrameHash.reset();
+  const Image& image = this->Run(
+    mesh, scene.camera, lights.Cast<float>(), scene.material.Cast<float>(), drawn, stats, hash);
   if (stats)
   {
     stats->autoChoice = choice.why;

@@ -69,13 +69,17 @@ std::string Choices(const render::SettingRow& row)
 int RunSettings(int argc, char** argv)
 {
   const Arguments args(argc, argv, {}, { "help", "markdown" });
-  if (args.Has("help") || !args.Has("markdown"))
+  if (args.Has("help"))
   {
     std::cout << "usage: shadinglab settings --markdown\n"
                  "Prints every setting of the settings table (shadinglab/render/Settings.h) as "
                  "Markdown: key (the CLI flag),\nParaView property, values, default, front "
                  "ends and documentation.\n";
-    return args.Has("help") ? 0 : 2;
+    return 0;
+  }
+  if (!args.Has("markdown"))
+  {
+    throw UsageError("settings needs --markdown (the one output it has)");
   }
   if (!args.Positionals().empty())
   {

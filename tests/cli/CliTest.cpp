@@ -148,6 +148,8 @@ TEST(CliTest, BadArgumentsExitTwoWithOneLineError)
     "brdf --theta-l 10 --bogus 1",                // unknown option
     "brdf --theta-l 0:90:0.000001 --theta-v 0:90:0.001", // absurd row count
     "frobnicate",                                 // unknown command
+    "settings",                                   // settings without --markdown
+    "settings --markdown extra",                  // settings takes no argument
   };
   for (const char* args : bad)
   {

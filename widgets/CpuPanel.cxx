@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "CpuPanel.h"
 
+#include "shadinglab/render/Display.h"
+
 #include "ViewInteraction.h"
 
 #include "PolyDataMesh.h"
@@ -208,9 +210,28 @@ QColor Inferno(double t)
 
 } // namespace
 
-QImage CpuPanel::HeatMap(const render::Image& reference) const
+render::Image CpuPanel::Snapshot()
 {
-  const int width = this->Last.width, height = this->Last.height;
+  render::Image image = this->Last;
+  const size_t n = image.rgb.size() / 3;
+  for (size_t i = 0; i < n; ++i)
+  {
+    const Vec3<float> c = render::ApplyDisplay(this->View->display,
+      Vec3<float>(image.rgb[3 * i], image.rgb[3 * i + 1], image.rgb[3 * i + 2]));
+    image.rgb[3 * i] = c.x;
+    image.rgb[3 * i + 1] = c.y;
+    image.rgb[3 * i + 2] = c.z;
+  }
+  image.displayApplied = true;
+  image.appliedDisplay = this->View->display;
+  return image;
+}
+
+QImage CpuPanel::HeatMap(const render::Image& reference)
+{
+  // Both in display values: what the two panels show.
+  const render::Image mine = this->Snapshot();
+  const int width = mine.width, height = mine.height;
   QImage image(width, height, QImage::Format_RGB888);
   image.fill(QColor(60, 60, 60));
   // Panels of one comparison may differ by a pixel (the grid's rounding):
@@ -225,12 +246,12 @@ QImage CpuPanel::HeatMap(const render::Image& reference) const
       const int rx = std::min(reference.width - 1, x * reference.width / width);
       const size_t o = static_cast<size_t>(y) * width + x;
       const size_t r = static_cast<size_t>(ry) * reference.width + rx;
-      if (!this->Last.covered[o] && !reference.covered[r])
+      if (!mine.covered[o] && !reference.covered[r])
       {
         continue;
       }
       const double error =
-        std::abs(Luminance(&this->Last.rgb[3 * o]) - Luminance(&reference.rgb[3 * r]));
+        std::abs(Luminance(&mine.rgb[3 * o]) - Luminance(&reference.rgb[3 * r]));
       image.setPixelColor(x, y, Inferno(error / scale));
     }
   }

@@ -50,7 +50,9 @@ public:
   CpuPanel(const PanelSpec& spec, ViewState* view, QWidget* parent);
   ~CpuPanel() override;
 
-  render::Image Snapshot() override { return this->Last; }
+  /// The last image in display values (the view's display transform), as
+  /// a GPU panel reads its framebuffer.
+  render::Image Snapshot() override;
   render::Backend Backend() const override { return render::Backend::CPU; }
 
 protected:
@@ -60,7 +62,7 @@ protected:
 
 private:
   /// |I - I_ref| as a heat map (and the colour bar).
-  QImage HeatMap(const render::Image& reference) const;
+  QImage HeatMap(const render::Image& reference);
 
   std::unique_ptr<cpu::SoftwareRenderer> Renderer;
   ImageView* ViewWidget;

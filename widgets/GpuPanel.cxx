@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "GpuPanel.h"
 
+#include "shadinglab/render/Display.h"
+
 #include "ViewInteraction.h"
 
 #include "GpuScene.h"
@@ -87,8 +89,16 @@ void GpuPanel::OnRenderEnd(vtkObject*, unsigned long event, void*)
     // the clipping range fits this panel's mesh.
     const render::Camera camera = render::CameraFromVtk(this->View->camera);
     gl::ApplyLighting(ViewLighting(*this->View, camera), this->Renderer);
-    this->Renderer->SetBackground(
-      this->View->background.x, this->View->background.y, this->View->background.z);
+    // The view's display transform may have changed since Configure.
+    if (this->Mapper->GetSettings().render.display != this->View->display)
+    {
+      render::Settings settings = this->Mapper->GetSettings();
+      settings.render.display = this->View->display;
+      this->Mapper->SetSettings(settings);
+    }
+    // The shader writes display values: the background is given as one.
+    const Vec3<float> background = render::ApplyDisplay(this->View->display, this->View->background);
+    this->Renderer->SetBackground(background.x, background.y, background.z);
     this->Renderer->ResetCameraClippingRange();
     this->StartTime = Now();
     return;
@@ -129,6 +139,8 @@ render::Image GpuPanel::Snapshot()
   }
   image.width = W;
   image.height = H;
+  image.displayApplied = true; // the shader applied the view's transform
+  image.appliedDisplay = this->View->display;
   return image;
 }
 

@@ -53,7 +53,9 @@ struct ViewState
   double lightElevation = 25.0; ///< degrees toward the camera's up
   double lightIntensity = 1.0;  ///< I_L of the one light (eq. 1.1)
   Vec3<float> background{ 0.32f, 0.34f, 0.43f };
-  render::DisplayTransform display = render::DisplayTransform::Clamp;
+  /// Linear intensity to pixel, as the settings table's default (every
+  /// panel, both backends; profiles and error maps read display values).
+  render::DisplayTransform display = render::RenderOptions().display;
   /// Left-drag draws the profile line instead of rotating.
   bool profileTool = false;
 };

@@ -195,6 +195,7 @@ render::RenderOptions PanelOptions(const PanelSpec& spec, const ViewState& view,
   options.width = width;
   options.height = height;
   options.background = view.background;
+  options.display = view.display;
   // The explorer shows fast Phong as Bishop & Weimer drew it, whatever the
   // triangle size (its artifacts are what the panel is for).
   options.fastPhongFallback = false;

@@ -3,8 +3,9 @@
 // Gouraud-style by the lecture's model (per-vertex lighting, interpolated
 // colours), written to a PNG.
 //
-//   shadinglab_mapper_example [OUT.png]
+//   shadinglab_mapper_example [OUT.png | --version]
 #include "vtkShadingLabPolyDataMapper.h"
+#include "shadinglab/Version.h"
 
 #include <vtkActor.h>
 #include <vtkNew.h>
@@ -17,9 +18,15 @@
 
 #include <cstdlib>
 #include <iostream>
+#include <string>
 
 int main(int argc, char* argv[])
 {
+  if (argc > 1 && std::string(argv[1]) == "--version")
+  {
+    std::cout << "shadinglab_mapper_example " << SHADINGLAB_VERSION << "\n";
+    return 0;
+  }
   // This VTK needs an X server for any OpenGL window: check before creating one.
   if (!std::getenv("DISPLAY"))
   {

@@ -207,6 +207,7 @@ bool MainWindow::LoadScene(const std::string& name, std::string& error)
   this->View->View().lightAzimuth = scene.lightAzimuth;
   this->View->View().lightElevation = scene.lightElevation;
   this->View->View().lightIntensity = scene.lightIntensity;
+  this->View->View().display = scene.display;
   this->LightAzimuth->setValue(static_cast<int>(scene.lightAzimuth));
   this->LightElevation->setValue(static_cast<int>(scene.lightElevation));
   this->LightIntensity->setValue(scene.lightIntensity);

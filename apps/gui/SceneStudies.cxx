@@ -47,6 +47,7 @@ widgets::ViewState StudyView(const Scene& scene, const std::vector<widgets::Pane
   view.lightAzimuth = scene.lightAzimuth;
   view.lightElevation = scene.lightElevation;
   view.lightIntensity = scene.lightIntensity;
+  view.display = scene.display;
   return view;
 }
 

@@ -482,6 +482,10 @@ Scene MakeScene(const std::string& name, const SceneOptions& options)
   }
   Scene scene = it->second(options);
   scene.name = name;
+  if (scene.usesInput && options.input)
+  {
+    scene.display = render::RenderOptions().display;
+  }
   return scene;
 }
 

@@ -64,6 +64,10 @@ struct Scene
   PlotKind plot = PlotKind::Profile;
   bool perceived = false;
   bool usesInput = false; ///< the user's mesh replaces the scene's mesh
+  /// The lecture's scenes plot the intensity I itself: Clamp, the identity
+  /// on [0, 1]. A user's mesh gets the settings' default (PBR Neutral, no
+  /// clipping), as in the CLI and ParaView.
+  render::DisplayTransform display = render::DisplayTransform::Clamp;
 };
 
 /// Builds scene `name`; throws std::invalid_argument for an unknown name or

@@ -8,6 +8,7 @@
 #include "ShadingPanel.h"
 
 #include "MeshIO.h"
+#include "shadinglab/Version.h"
 
 #include <QApplication>
 #include <QSurfaceFormat>
@@ -31,7 +32,7 @@ const char* kUsage =
   "usage: shadinglab-gui [--scene NAME] [INPUT] [--backend gpu|cpu] [--size WxH]\n"
   "                      [--variant corrugated|isosurface] [--rotation DEG]\n"
   "                      [--screenshot FILE.png] [--profile FILE.csv]\n"
-  "       shadinglab-gui --list-scenes\n"
+  "       shadinglab-gui --list-scenes | --version\n"
   "\n"
   "The ShadingLab explorer: the lecture's interpolation artifacts side by side.\n"
   "INPUT is any mesh the CLI reads (.vtp .vtk .vtu .ply .obj .stl .off).\n"
@@ -80,6 +81,11 @@ int main(int argc, char** argv)
       if (a == "--help" || a == "-h")
       {
         std::cout << kUsage;
+        return 0;
+      }
+      if (a == "--version")
+      {
+        std::cout << "shadinglab-gui " << SHADINGLAB_VERSION << "\n";
         return 0;
       }
       if (a == "--list-scenes")

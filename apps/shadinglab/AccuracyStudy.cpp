@@ -343,6 +343,9 @@ std::vector<StudyRow> RunStudy(
             ro.threads = options.threads;
             ro.background = background;
             ro.fastPhongFallback = false; // the study measures fast Phong itself
+            // Errors are measured in linear intensity clamped to [0, 1]
+            // (docs/accuracy.md), on both backends.
+            ro.display = render::DisplayTransform::Clamp;
             render::Image image;
             const double frameMs = TimedFrames(*renderer, scene, ro, options.frames, image);
             StudyRow row;
@@ -477,6 +480,7 @@ std::vector<AutoCase> ValidateAutoMode(
           ro.height = options.height;
           ro.threads = options.threads;
           ro.background = Vec3<float>(0, 0, 0);
+          ro.display = render::DisplayTransform::Clamp; // as the study's other rows
           const auto t0 = Clock::now();
           const render::Image& image = renderer.Render(scene, ro);
           const double ms = Milliseconds(t0, Clock::now());

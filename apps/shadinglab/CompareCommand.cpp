@@ -141,7 +141,7 @@ int RunCompare(int argc, char** argv)
     scene.material = panels[m].material;
     const render::Image& image = RenderOrExplain(
       *renderer, scene, options, nullptr, " (panel '" + panels[m].name + "'; leave it out with --modes)");
-    const auto rgb8 = image.ToRGB8(request->settings.display);
+    const auto rgb8 = image.ToRGB8(request->settings.render.display);
     const int x0 = static_cast<int>(m) * (W + kGap);
     for (int y = 0; y < H; ++y)
     {

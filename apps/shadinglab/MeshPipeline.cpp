@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "MeshPipeline.h"
 
+#include "shadinglab/render/Settings.h"
+
 #include <string>
 
 namespace shadinglab::cli
@@ -23,12 +25,16 @@ mesh::PreparationOptions MeshPipelineFromArguments(const Arguments& args, bool a
   mesh::PreparationOptions o;
   o.repair = always || WantsMeshPipeline(args);
   o.computeNormals = o.repair;
-  const std::string weights = args.Has("weights") ? args.Get("weights") : args.Get("normals", "area");
+  // The defaults are the settings table's (render::Settings::normals).
+  const render::NormalSettings defaults;
+  o.weighting = static_cast<mesh::NormalWeighting>(defaults.weighting);
+  const std::string weights = args.Has("weights") ? args.Get("weights")
+                                                  : args.Get("normals", mesh::NormalWeightingName(o.weighting));
   if (!mesh::ParseNormalWeighting(weights, o.weighting))
   {
     throw UsageError("unknown weights '" + weights + "' (expected uniform, area, angle or max)");
   }
-  o.featureAngle = args.GetDouble("feature-angle", 30.0);
+  o.featureAngle = args.GetDouble("feature-angle", defaults.featureAngle);
   if (!(o.featureAngle >= 0 && o.featureAngle <= 180))
   {
     throw UsageError("--feature-angle must be in [0, 180] degrees");

@@ -24,6 +24,18 @@ const char* kRenderHelp =
   "  --out FILE.png      output image (default out.png)\n"
   "  --stats             print one JSON line of timings and counts\n";
 
+/// Covered pixels with a channel at 255: where the display transform
+/// clipped (or the surface is exactly white).
+long long CountClipped(const render::Image& image, const std::vector<uint8_t>& rgb8)
+{
+  long long n = 0;
+  for (size_t i = 0; i < image.covered.size(); ++i)
+  {
+    n += image.covered[i] && (rgb8[3 * i] == 255 || rgb8[3 * i + 1] == 255 || rgb8[3 * i + 2] == 255);
+  }
+  return n;
+}
+
 } // namespace
 
 int RunRender(int argc, char** argv)
@@ -36,21 +48,16 @@ int RunRender(int argc, char** argv)
   }
   const Arguments& args = request->args;
   const render::RenderOptions& options = request->settings.render;
-  const std::string& input = request->input;
   std::string autoNotice;
   const auto renderer = MakeRenderer(request->backend, "render", autoNotice);
   render::RenderStats stats;
   const render::Image& image = RenderOrExplain(*renderer, request->scene, options, &stats, "");
   const std::string out = args.Get("out", "out.png");
   const Stopwatch writing;
-  WritePng(image.width, image.height, image.ToRGB8(request->settings.display), out);
+  const std::vector<uint8_t> rgb8 = image.ToRGB8(options.display);
+  WritePng(image.width, image.height, rgb8, out);
   const double writeMs = writing.Milliseconds();
   // Notices come after success, so that an error stays one line.
-  if (stats.normalsComputed)
-  {
-    std::cerr << "shadinglab render: notice: '" << input
-              << "' has no point normals; using area-weighted vertex normals\n";
-  }
   std::cerr << autoNotice;
   if (!request->notices.empty())
   {
@@ -69,7 +76,7 @@ int RunRender(int argc, char** argv)
                 "\"milliseconds\":%.3f,\"polygons\":%lld,\"triangles\":%lld,\"rasterized\":%lld,"
                 "\"clipped\":%lld,\"binned\":%lld,\"degenerate\":%lld,\"skipped\":%lld,\"culled\":%lld,"
                 "\"hidden_back_faces_culled\":%s,\"pixels_covered\":%lld,"
-                "\"pixels_shaded\":%lld,\"overdraw\":%.3f,\"fast_phong_exact\":%lld,"
+                "\"pixels_at_255\":%lld,\"pixels_shaded\":%lld,\"overdraw\":%.3f,\"fast_phong_exact\":%lld,"
                 "\"fast_phong_as_phong\":%s,\"threads\":%d,"
                 "\"shader_builds\":%d,\"normals_computed\":%s,\"read_ms\":%.3f,"
                 "\"prepare_ms\":%.3f,\"render_ms\":%.3f,\"write_ms\":%.3f,\"total_ms\":%.3f%s}\n",
@@ -81,6 +88,7 @@ int RunRender(int argc, char** argv)
       static_cast<long long>(stats.degenerate),
       static_cast<long long>(stats.skipped), static_cast<long long>(stats.culled),
       stats.hiddenBackFacesCulled ? "true" : "false", static_cast<long long>(stats.pixelsCovered),
+      static_cast<long long>(CountClipped(image, rgb8)),
       static_cast<long long>(stats.pixelsShaded),
       // Shading evaluations per covered pixel (0 when nothing is covered).
       stats.pixelsCovered ? double(stats.pixelsShaded) / stats.pixelsCovered : 0.0,

@@ -11,10 +11,12 @@
 #include "shadinglab/cpu/SoftwareRenderer.h"
 #include "shadinglab/model/Materials.h"
 
+#include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <iostream>
 #include <sstream>
@@ -133,6 +135,12 @@ void SettingsFromArguments(const Arguments& args, SceneArguments& scene)
   }
 }
 
+/// Appends one notice ("; " between notices).
+void AddNotice(SceneArguments& scene, const std::string& notice)
+{
+  scene.notices += (scene.notices.empty() ? "" : "; ") + notice;
+}
+
 /// Reads INPUT, makes its faces' orientation consistent when they are not,
 /// prepares it as asked (the filters of 'shadinglab normals') and converts
 /// it to the renderers' arrays in a local frame.
@@ -155,18 +163,29 @@ void ReadAndPrepare(const Arguments& args, const std::string& input, SceneArgume
   if (!WantsMeshPipeline(args))
   {
     // Faces whose neighbours run their shared edges the same way average
-    // opposite normals into speckles: make the orientation consistent
-    // (only the repair; the renderers make their own normals).
+    // opposite normals into speckles: make the orientation consistent.
     mesh::FlatPolygons flat;
     mesh::FlatPolygonsFromPolyData(polydata, flat);
     if (polydata->GetNumberOfStrips() == 0 && mesh::CheckRepairNeeds(flat).inconsistentEdges > 0)
     {
       preparation.repair = true;
-      preparation.computeNormals = false;
-      scene.notices += "faces oriented inconsistently: made consistent (as 'normals' does)";
+      AddNotice(scene, "faces oriented inconsistently: made consistent (as 'normals' does)");
+    }
+    // No normals and a smooth mode: the default normals, split at creases
+    // as ParaView's Generate Surface Normals does (flat needs none).
+    preparation.computeNormals = !polydata->GetPointData()->GetNormals() &&
+      scene.settings.render.mode != render::ShadingMode::Flat;
+    if (preparation.computeNormals)
+    {
+      char angle[32];
+      std::snprintf(angle, sizeof angle, "%g", preparation.featureAngle);
+      AddNotice(scene, std::string("no point normals: ") +
+          mesh::NormalWeightingName(preparation.weighting) +
+          "-weighted vertex normals made, split where faces meet at more than " + angle +
+          " degrees (--feature-angle 180: not split)");
     }
   }
-  if (preparation.repair)
+  if (preparation.repair || preparation.computeNormals)
   {
     // The same filters as 'shadinglab normals'.
     mesh::PreparationReport report;

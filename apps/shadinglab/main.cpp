@@ -2,6 +2,8 @@
 // shadinglab: the command-line front end. One subcommand per job.
 #include "Commands.h"
 
+#include "shadinglab/Version.h"
+
 #include <cstring>
 #include <exception>
 #include <iostream>
@@ -10,6 +12,7 @@ namespace
 {
 
 const char* kUsage = "usage: shadinglab COMMAND [options]   (shadinglab COMMAND --help)\n"
+                     "       shadinglab --version\n"
                      "commands:\n"
                      "  brdf      tabulate a reflectance model or one of its terms as CSV\n"
                      "  render    render a mesh in one shading mode to PNG\n"
@@ -26,6 +29,11 @@ int main(int argc, char** argv)
   {
     std::cout << kUsage;
     return argc < 2 ? 2 : 0;
+  }
+  if (!std::strcmp(argv[1], "--version"))
+  {
+    std::cout << "shadinglab " << SHADINGLAB_VERSION << "\n";
+    return 0;
   }
   const std::string command = argv[1];
   try

@@ -6,6 +6,7 @@
 // guard value itself, so it cannot drift from the C++.
 #include "shadinglab/model/Constants.h"
 #include "shadinglab/model/Shading.h"
+#include "shadinglab/render/Display.h"
 #include "shadinglab/render/Options.h"
 
 #include <cstdio>
@@ -28,6 +29,10 @@ int main(int argc, char** argv)
   {
     glsl << "#define SL_MODE_" << row.glsl << " " << static_cast<int>(row.value) << "\n";
   }
+  for (const auto& row : sl::render::kDisplayTransforms)
+  {
+    glsl << "#define SL_DISPLAY_" << row.glsl << " " << static_cast<int>(row.value) << "\n";
+  }
   for (const auto& row : sl::kReflectanceModels)
   {
     glsl << "#define SL_MODEL_" << row.glsl << " " << static_cast<int>(row.value) << "\n";
@@ -45,6 +50,9 @@ int main(int argc, char** argv)
   define("SL_MIN_VOH", sl::kMinVoH<double>);
   define("SL_MIN_NORMAL_LENGTH_SQ", sl::kMinNormalLengthSq<double>);
   define("SL_TINY_DENOMINATOR", sl::kTinyDenominator<double>);
+  define("SL_NEUTRAL_F90", sl::render::kNeutralF90);
+  define("SL_NEUTRAL_START_COMPRESSION", sl::render::kNeutralStartCompression);
+  define("SL_NEUTRAL_DESATURATION", sl::render::kNeutralDesaturation);
   glsl << "#define SL_MAX_LOBES " << sl::kMaxLobes << "\n";
   glsl << "#define SL_MAX_LIGHTS " << sl::kMaxLights << "\n";
 

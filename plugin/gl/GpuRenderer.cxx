@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "shadinglab/gl/GpuRenderer.h"
 
+#include "shadinglab/render/Display.h"
+
 #include "GpuScene.h"
 
 #include "vtkShadingLabPolyDataMapper.h"
@@ -123,7 +125,10 @@ const render::Image& GpuRenderer::Render(
     in.Mapper->SetInputData(in.MeshData);
   }
   ConfigureActor(options, material, in.Mapper, in.Actor);
-  in.Renderer->SetBackground(options.background.x, options.background.y, options.background.z);
+  // The shader writes display values (ApplyDisplay; the 8-bit framebuffer
+  // would clip linear ones): the background is given as one too.
+  const Vec3<float> background = render::ApplyDisplay(options.display, options.background);
+  in.Renderer->SetBackground(background.x, background.y, background.z);
   ApplyLighting(scene.lighting, in.Renderer);
   render::ApplyToVtkCamera(scene.camera, in.Renderer->GetActiveCamera());
   const int ssaa = options.ssaa;
@@ -136,6 +141,8 @@ const render::Image& GpuRenderer::Render(
     throw std::runtime_error("GPU shader substitution failed (see log)");
   }
   in.ReadBack(W, H, ssaa);
+  in.Output.displayApplied = true;
+  in.Output.appliedDisplay = options.display;
   if (stats)
   {
     *stats = render::RenderStats();

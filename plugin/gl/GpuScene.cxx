@@ -24,6 +24,10 @@ void ConfigureActor(const render::RenderOptions& options, const Material<double>
   render::Settings settings = mapper->GetSettings();
   settings.render = options;
   settings.material = material;
+  // The Renderer contract: a mesh without normals gets the CPU renderer's
+  // area-weighted normals, not split (front ends split before, as asked).
+  settings.normals = render::NormalSettings();
+  settings.normals.featureAngle = 180.0;
   mapper->SetSettings(settings);
   mapper->ScalarVisibilityOn();
   mapper->SetColorModeToDirectScalars();

@@ -93,14 +93,14 @@ vtkShadingLabPolyDataMapper::~vtkShadingLabPolyDataMapper() = default;
 namespace
 {
 /// What SetSettings must notice: the shaders' variant (mode, model,
-/// specular on/off, lobe count, conductor, interpolation), the budget and
+/// specular on/off, lobe count, conductor, interpolation, display), the budget and
 /// the normals to make. The rest reaches the GPU as uniforms. A tuple, not
 /// a string: composite mappers pass their settings to every block each frame.
 auto ModifyingPart(const sl::render::Settings& s)
 {
   const sl::Material<double>& m = s.material;
   return std::make_tuple(m.model, m.ks > 0, m.lobeCount, m.IsConductor(), s.render.mode,
-    s.render.interpolation, s.render.maxError, s.normals.weighting, s.normals.featureAngle,
+    s.render.interpolation, s.render.display, s.render.maxError, s.normals.weighting, s.normals.featureAngle,
     s.normals.recompute);
 }
 } // namespace
@@ -303,6 +303,7 @@ std::string vtkShadingLabPolyDataMapper::Variant(vtkRenderer* ren) const
     << "#define SL_LOBE_COUNT " << std::max(1, std::min(m.lobeCount, sl::kMaxLobes)) << "\n"
     << "#define SL_CONDUCTOR " << (m.IsConductor() ? 1 : 0) << "\n"
     << "#define SL_HEADLIGHT " << (headlightOnly ? 1 : 0) << "\n"
+    << "#define SL_DISPLAY " << static_cast<int>(this->Internal->Settings.render.display) << "\n"
     << "#define SL_INTERP " << ((this->Internal->Settings.render.interpolation == sl::render::InterpolationSpace::Perspective) ? "smooth" : "noperspective") << "\n";
   return v.str();
 }
@@ -412,7 +413,7 @@ void vtkShadingLabPolyDataMapper::ReplaceShaderValues(
   vtkShader* vs = shaders[vtkShader::Vertex];
   vtkShader* fs = shaders[vtkShader::Fragment];
   const std::string library =
-    std::string(sl_defines_glsl) + sl_brdf_glsl + sl_shading_glsl + sl_fastphong_glsl;
+    std::string(sl_defines_glsl) + sl_brdf_glsl + sl_shading_glsl + sl_fastphong_glsl + sl_display_glsl;
 
   // Vertex shader: Gouraud lights here; flat and fast-phong pass the
   // provoking vertex's data.

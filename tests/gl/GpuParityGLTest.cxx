@@ -52,8 +52,14 @@ struct Difference
   int64_t pixels = 0;
 };
 
+/// Compared as the user sees them: in the display values of the transform
+/// the GPU image went through (its shader applies it), Clamp otherwise.
 Difference Compare(const render::Image& a, const render::Image& b)
 {
+  const render::DisplayTransform display = a.displayApplied ? a.appliedDisplay
+    : b.displayApplied                                      ? b.appliedDisplay
+                                                            : render::DisplayTransform::Clamp;
+  const std::vector<uint8_t> a8 = a.ToRGB8(display), b8 = b.ToRGB8(display);
   std::vector<double> d;
   for (size_t p = 0; p < a.covered.size(); ++p)
   {
@@ -63,9 +69,7 @@ Difference Compare(const render::Image& a, const render::Image& b)
     }
     for (int c = 0; c < 3; ++c)
     {
-      const double x = std::round(std::clamp(a.rgb[3 * p + c], 0.0f, 1.0f) * 255.0);
-      const double y = std::round(std::clamp(b.rgb[3 * p + c], 0.0f, 1.0f) * 255.0);
-      d.push_back(std::abs(x - y));
+      d.push_back(std::abs(double(a8[3 * p + c]) - double(b8[3 * p + c])));
     }
   }
   Difference r;
@@ -311,6 +315,9 @@ render::Image Grab(vtkRenderWindow* window)
       image.covered[dst] = z[src] < 1.0f;
     }
   }
+  // The mapper's shader applied its (default) display transform.
+  image.displayApplied = true;
+  image.appliedDisplay = render::RenderOptions().display;
   return image;
 }
 

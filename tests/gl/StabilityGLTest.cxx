@@ -92,8 +92,12 @@ sl::Material<double> Plastic()
 /// of pixels covered by one image only.
 void Compare(const sl::render::Image& a, const sl::render::Image& b, int& worst, int& coverage)
 {
-  const auto a8 = a.ToRGB8(sl::render::DisplayTransform::Clamp);
-  const auto b8 = b.ToRGB8(sl::render::DisplayTransform::Clamp);
+  // In the display values of the transform the GPU image went through.
+  const auto display = a.displayApplied ? a.appliedDisplay
+    : b.displayApplied                  ? b.appliedDisplay
+                                        : sl::render::DisplayTransform::Clamp;
+  const auto a8 = a.ToRGB8(display);
+  const auto b8 = b.ToRGB8(display);
   worst = 0;
   coverage = 0;
   for (size_t p = 0; p < a.covered.size(); ++p)

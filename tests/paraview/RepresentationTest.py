@@ -294,6 +294,9 @@ check(abs(gold_title - gold_kebab).max() == 0 and difference(gold_title, custom)
       % (abs(gold_title - gold_kebab).max(), difference(gold_title, custom)))
 rep.Ambient = 0.0
 rep.AmbientReflectance = 0.0
+# Linearity is a property of the Clamp display (PBR Neutral, the default,
+# compresses highlights): measured there.
+rep.DisplayTransform = 'Clamp'
 full = shot('light_intensity_1')
 rep.LightIntensity = 0.5
 half = shot('light_intensity_half')
@@ -301,6 +304,16 @@ rep.LightIntensity = 1.0
 mask = covered(full) & (full.max(axis=2) < 250)  # unclipped pixels only
 ratio = half[mask].sum() / max(full[mask].sum(), 1)
 check(abs(ratio - 0.5) < 0.02, 'LightIntensity 0.5 halves the unclipped pixels (ratio %.3f)' % ratio)
+# The default display does not clip: the highlight that saturates under
+# Clamp stays below 255 under PBR Neutral.
+rep.LightIntensity = 3.0
+clamped = shot('display_clamp')
+rep.DisplayTransform = 'PBR Neutral'
+neutral = shot('display_neutral')
+rep.LightIntensity = 1.0
+at255 = lambda img: int((covered(img) & (img.max(axis=2) == 255)).sum())
+check(at255(clamped) > 100 and at255(neutral) == 0,
+      'DisplayTransform: Clamp saturates %d pixels, PBR Neutral %d' % (at255(clamped), at255(neutral)))
 rep.AmbientReflectance = 0.05
 
 print('%d failure(s)' % len(failures))

@@ -161,7 +161,7 @@ int vtkSoftwareShadingRenderer::RequestData(
   }
   output->SetExtent(0, image->width - 1, 0, image->height - 1, 0, 0);
   const vtkIdType n = static_cast<vtkIdType>(image->width) * image->height;
-  const std::vector<uint8_t> rgb8 = image->ToRGB8(sl::render::DisplayTransform::Clamp);
+  const std::vector<uint8_t> rgb8 = image->ToRGB8(options.display);
   vtkNew<vtkUnsignedCharArray> rgb;
   rgb->SetName("RGB");
   rgb->SetNumberOfComponents(3);

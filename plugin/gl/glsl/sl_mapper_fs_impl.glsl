@@ -67,4 +67,4 @@
     slColor = Shade(slRho, slP, normalVCVSOutput, slV);
   }
 #endif
-  gl_FragData[0] = vec4(slColor, opacity);
+  gl_FragData[0] = vec4(ApplyDisplay(slColor), opacity);

@@ -1,22 +1,16 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "shadinglab/render/Image.h"
 
+#include "shadinglab/render/Display.h"
+
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <string>
 
 namespace shadinglab::render
 {
 
-namespace
-{
-
-/// IEC 61966-2-1 sRGB encoding of a linear value in [0, 1].
-float EncodeSRGB(float v)
-{
-  return v <= 0.0031308f ? 12.92f * v : 1.055f * std::pow(v, 1.0f / 2.4f) - 0.055f;
-}
-
-} // namespace
 
 void DownsampleBox(const std::vector<float>& rgb, const std::vector<uint8_t>& covered, int width,
   int height, int factor, Image& out)
@@ -54,18 +48,35 @@ void DownsampleBox(const std::vector<float>& rgb, const std::vector<uint8_t>& co
   }
 }
 
+const char* DisplayTransformName(DisplayTransform transform)
+{
+  for (const auto& row : kDisplayTransforms)
+  {
+    if (row.value == transform)
+    {
+      return row.name;
+    }
+  }
+  return "?";
+}
+
 std::vector<uint8_t> Image::ToRGB8(DisplayTransform transform) const
 {
-  std::vector<uint8_t> out(this->rgb.size());
-  for (size_t i = 0; i < this->rgb.size(); ++i)
+  if (this->displayApplied && transform != this->appliedDisplay)
   {
-    float v = this->rgb[i];
-    v = std::isfinite(v) ? std::clamp(v, 0.0f, 1.0f) : 0.0f;
-    if (transform == DisplayTransform::SRGB)
-    {
-      v = EncodeSRGB(v);
-    }
-    out[i] = static_cast<uint8_t>(std::lround(v * 255.0f));
+    throw std::logic_error(std::string("the image went through display '") +
+      DisplayTransformName(this->appliedDisplay) + "' already, not '" +
+      DisplayTransformName(transform) + "'");
+  }
+  std::vector<uint8_t> out(this->rgb.size());
+  const size_t n = this->rgb.size() / 3;
+  for (size_t i = 0; i < n; ++i)
+  {
+    Vec3<float> c(this->rgb[3 * i], this->rgb[3 * i + 1], this->rgb[3 * i + 2]);
+    c = this->displayApplied ? ApplyDisplay(DisplayTransform::Clamp, c) : ApplyDisplay(transform, c);
+    out[3 * i] = static_cast<uint8_t>(std::lround(c.x * 255.0f));
+    out[3 * i + 1] = static_cast<uint8_t>(std::lround(c.y * 255.0f));
+    out[3 * i + 2] = static_cast<uint8_t>(std::lround(c.z * 255.0f));
   }
   return out;
 }

@@ -214,14 +214,15 @@ void RenderRows(std::vector<SettingRow>& t)
   }
   {
     SettingRow r = Row("display", "DisplayTransform", "Display", G::Render, K::Choice);
-    r.choices = { { "clamp", "Clamp" }, { "srgb", "sRGB" } };
-    r.doc = "linear intensity clamped to [0, 1], or clamped then sRGB-encoded";
-    r.frontEnds = kCli;
+    r.choices = ChoicesOf(kDisplayTransforms);
+    r.doc = "linear intensity to pixel: clamped to [0, 1], clamped then sRGB-encoded, or "
+            "Khronos PBR Neutral (highlights compressed, never clipped)";
+    r.frontEnds = kCli | kParaView | kMapper | kExplorer;
     r.metavar = "D";
     r.set = [](Settings& s, const SettingValue& v) {
-      s.display = v.numbers[0] == 0 ? DisplayTransform::Clamp : DisplayTransform::SRGB;
+      s.render.display = kDisplayTransforms[static_cast<int>(v.numbers[0])].value;
     };
-    r.get = [](const Settings& s) { return Number(s.display == DisplayTransform::Clamp ? 0 : 1); };
+    r.get = [](const Settings& s) { return Number(static_cast<int>(s.render.display)); };
     t.push_back(r);
   }
 }

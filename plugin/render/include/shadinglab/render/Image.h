@@ -17,17 +17,25 @@ T Luminance(const Vec3<T>& rgb)
   return T(0.2126) * rgb.x + T(0.7152) * rgb.y + T(0.0722) * rgb.z;
 }
 
-/// Linear RGB image, row 0 at the top.
+/// RGB image, row 0 at the top: linear (the CPU renderer), or display
+/// values when the backend applied the display transform itself (the GL
+/// renderer, whose 8-bit framebuffer would clip linear values above 1).
 struct Image
 {
   int width = 0;
   int height = 0;
-  std::vector<float> rgb;         ///< 3 per pixel, linear
+  std::vector<float> rgb;         ///< 3 per pixel, linear unless displayApplied
   std::vector<uint8_t> covered;   ///< 1 where a surface was drawn
   std::vector<uint16_t> coverage; ///< per-pixel polygon count (countCoverage only)
 
-  /// 8-bit RGB after the display transform. NaN never occurs (tested) but
-  /// would map to 0.
+  /// `rgb` holds display values already, of `appliedDisplay`.
+  bool displayApplied = false;
+  DisplayTransform appliedDisplay = DisplayTransform::Clamp;
+
+  /// 8-bit RGB after the display transform (ApplyDisplay). NaN never occurs
+  /// (tested) but would map to 0. An image whose backend applied its
+  /// display transform is only quantized; asking it for another transform
+  /// throws std::logic_error (a caller's bug: render with that transform).
   std::vector<uint8_t> ToRGB8(DisplayTransform transform) const;
 };
 

@@ -72,10 +72,20 @@ enum class PolygonHandling
   Direct       ///< scan-converted as polygons: edge walk in y, span in x (eq. 2.3)
 };
 
+/// How linear intensity becomes a display value in [0, 1] (docs/model.md,
+/// section 6). Both backends apply it per pixel, after interpolation: the
+/// CPU renderer in Image::ToRGB8, the GL mapper in its fragment shader.
 enum class DisplayTransform
 {
-  Clamp, ///< linear intensity clamped to [0, 1] (what fixed-function GL shows)
-  SRGB   ///< clamp, then the sRGB encoding curve (IEC 61966-2-1)
+  Clamp,   ///< linear intensity clamped to [0, 1] (what fixed-function GL shows)
+  SRGB,    ///< clamp, then the sRGB encoding curve (IEC 61966-2-1, eq. 6.2)
+  Neutral  ///< Khronos PBR Neutral (eq. 6.1): highlights above 0.76 compressed towards 1, never clipped
+};
+
+inline constexpr EnumName<DisplayTransform> kDisplayTransforms[] = {
+  { DisplayTransform::Clamp, "clamp", "Clamp", "CLAMP" },
+  { DisplayTransform::SRGB, "srgb", "sRGB", "SRGB" },
+  { DisplayTransform::Neutral, "neutral", "PBR Neutral", "NEUTRAL" },
 };
 
 /// Largest image side in pixels (both backends, the CLI and the VTK
@@ -107,6 +117,10 @@ struct RenderOptions
   /// backends by default; Centroid (lower error, docs/model.md eq. 2.7) is
   /// CPU only: a fragment shader cannot see its triangle's centroid.
   ExpansionPoint expansion = ExpansionPoint::Vertex;
+  /// Linear intensity to display value. PBR Neutral by default: the default
+  /// material's highlight peaks near 2.6 and would clip whole faces to
+  /// white under Clamp.
+  DisplayTransform display = DisplayTransform::Neutral;
   int width = 1024;
   int height = 768;
   int ssaa = 1;    ///< supersampling factor per axis (box filter)

@@ -26,7 +26,11 @@ namespace shadinglab::render
 struct NormalSettings
 {
   int weighting = 1;          ///< 0 uniform, 1 area, 2 angle, 3 Max
-  double featureAngle = 180.0; ///< split creases above this (degrees); 180: nowhere
+  /// Split creases where faces meet at more than this (degrees; 180:
+  /// nowhere). 30 as ParaView's Generate Surface Normals: CAD parts keep
+  /// their edges, smooth meshes (dihedral angles of a few degrees) are
+  /// not split.
+  double featureAngle = 30.0;
   bool recompute = false;     ///< replace the data's own normals too
 };
 
@@ -34,9 +38,8 @@ struct NormalSettings
 struct Settings
 {
   /// Mode (Auto with its budget maxError), interpolation, polygons,
-  /// expansion, spread, ssaa, threads, culling.
+  /// expansion, display transform, spread, ssaa, threads, culling.
   RenderOptions render;
-  DisplayTransform display = DisplayTransform::Clamp;
   /// Scales every light's intensity I_L (eq. 1.1): the CLI's lights, the
   /// explorer's light, the vtkLights a mapper draws with.
   double lightIntensity = 1.0;

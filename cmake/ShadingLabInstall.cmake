@@ -1,0 +1,85 @@
+# What `cmake --install` puts where, and the CMake package
+# (find_package(ShadingLab) -> ShadingLab::GL, ShadingLab::CPU, ...).
+# Included last from the top-level CMakeLists.txt.
+include(CMakePackageConfigHelpers)
+
+set(SHADINGLAB_INSTALL_CMAKEDIR "${CMAKE_INSTALL_LIBDIR}/cmake/ShadingLab")
+
+# --- Programs and the explorer's desktop entry ------------------------------
+install(TARGETS shadinglab RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT Runtime)
+if(SHADINGLAB_HAVE_QT)
+  install(TARGETS shadinglab-gui RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR} COMPONENT Runtime)
+  install(FILES ${PROJECT_SOURCE_DIR}/apps/gui/shadinglab-gui.desktop
+    DESTINATION ${CMAKE_INSTALL_DATADIR}/applications COMPONENT Runtime)
+  install(FILES ${PROJECT_SOURCE_DIR}/apps/gui/shadinglab-gui.svg
+    DESTINATION ${CMAKE_INSTALL_DATADIR}/icons/hicolor/scalable/apps COMPONENT Runtime)
+endif()
+install(FILES ${PROJECT_SOURCE_DIR}/README.md ${PROJECT_SOURCE_DIR}/LICENSE
+  DESTINATION ${CMAKE_INSTALL_DOCDIR} COMPONENT Runtime)
+
+# --- Libraries and headers (static; the package carries their dependencies) -
+# Each library's name in the package: ShadingLab::<name>.
+set(_shadinglab_exported
+  shadinglab_warnings Warnings
+  shadinglab_model Model
+  shadinglab_render Render
+  shadinglab_render_vtk RenderVTK
+  shadinglab_cpu CPU
+  shadinglab_cpu_vtk CPUVTK
+  shadinglab_meshcore MeshCore
+  shadinglab_mesh Mesh
+  shadinglab_meshio MeshIO
+  shadinglab_meshprep MeshPrep)
+set(_shadinglab_targets)
+while(_shadinglab_exported)
+  list(POP_FRONT _shadinglab_exported _target _name)
+  set_target_properties(${_target} PROPERTIES EXPORT_NAME ${_name})
+  list(APPEND _shadinglab_targets ${_target})
+endwhile()
+install(TARGETS ${_shadinglab_targets} EXPORT ShadingLabTargets
+  ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT Development
+  INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+install(EXPORT ShadingLabTargets NAMESPACE ShadingLab:: FILE ShadingLabTargets.cmake
+  DESTINATION ${SHADINGLAB_INSTALL_CMAKEDIR} COMPONENT Development)
+# Namespaced headers (shadinglab/model, render, cpu, gl, Version.h) ...
+foreach(_dir plugin/model/include plugin/render/include plugin/cpu/include plugin/gl/include)
+  install(DIRECTORY ${PROJECT_SOURCE_DIR}/${_dir}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
+    COMPONENT Development FILES_MATCHING PATTERN "*.h")
+endforeach()
+install(FILES ${PROJECT_BINARY_DIR}/plugin/model/include/shadinglab/Version.h
+  DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/shadinglab COMPONENT Development)
+# ... and the VTK-side and mesh headers, included by file name as VTK's are.
+file(GLOB _shadinglab_flat_headers
+  ${PROJECT_SOURCE_DIR}/plugin/render/vtk/*.h ${PROJECT_SOURCE_DIR}/plugin/cpu/vtk/*.h
+  ${PROJECT_SOURCE_DIR}/mesh/core/*.h ${PROJECT_SOURCE_DIR}/mesh/vtk/*.h
+  ${PROJECT_SOURCE_DIR}/mesh/io/MeshIO.h ${PROJECT_SOURCE_DIR}/mesh/io/MeshPrecheck.h
+  ${PROJECT_SOURCE_DIR}/mesh/prep/*.h)
+install(FILES ${_shadinglab_flat_headers}
+  DESTINATION ${SHADINGLAB_INSTALL_FLAT_INCLUDEDIR} COMPONENT Development)
+
+# --- The package configuration ----------------------------------------------
+configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/ShadingLabConfig.cmake.in
+  ${PROJECT_BINARY_DIR}/ShadingLabConfig.cmake
+  INSTALL_DESTINATION ${SHADINGLAB_INSTALL_CMAKEDIR})
+write_basic_package_version_file(${PROJECT_BINARY_DIR}/ShadingLabConfigVersion.cmake
+  COMPATIBILITY SameMinorVersion)
+install(FILES ${PROJECT_BINARY_DIR}/ShadingLabConfig.cmake
+  ${PROJECT_BINARY_DIR}/ShadingLabConfigVersion.cmake
+  DESTINATION ${SHADINGLAB_INSTALL_CMAKEDIR} COMPONENT Development)
+
+# --- A Debian package: cpack -G DEB -----------------------------------------
+set(CPACK_PACKAGE_NAME shadinglab)
+set(CPACK_PACKAGE_VENDOR "ShadingLab")
+set(CPACK_PACKAGE_CONTACT "ShadingLab developers <shadinglab@localhost>")
+set(CPACK_PACKAGE_DESCRIPTION_SUMMARY
+  "Flat, Gouraud, Phong and fast Phong shading for VTK and ParaView, with a CPU reference renderer")
+set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
+set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
+set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
+set(CPACK_DEBIAN_PACKAGE_SECTION science)
+# The shared objects' dependencies by dpkg-shlibdeps (the plugin, the
+# programs); the headers' and CMake package's by hand: what find_package needs.
+set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
+set(CPACK_DEBIAN_PACKAGE_DEPENDS "paraview-dev, libopenmesh-dev, libopensubdiv-dev, libxsimd-dev")
+set(CPACK_RESOURCE_FILE_LICENSE ${PROJECT_SOURCE_DIR}/LICENSE)
+include(CPack)

@@ -41,6 +41,9 @@ install(TARGETS ${_shadinglab_targets} EXPORT ShadingLabTargets
   INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
 install(EXPORT ShadingLabTargets NAMESPACE ShadingLab:: FILE ShadingLabTargets.cmake
   DESTINATION ${SHADINGLAB_INSTALL_CMAKEDIR} COMPONENT Development)
+# The build tree's copy (vtk_module_build exports the GL module from there too).
+export(EXPORT ShadingLabTargets NAMESPACE ShadingLab::
+  FILE ${PROJECT_BINARY_DIR}/${SHADINGLAB_INSTALL_CMAKEDIR}/ShadingLabTargets.cmake)
 # Namespaced headers (shadinglab/model, render, cpu, gl, Version.h) ...
 foreach(_dir plugin/model/include plugin/render/include plugin/cpu/include plugin/gl/include)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${_dir}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}
@@ -57,6 +60,19 @@ file(GLOB _shadinglab_flat_headers
 install(FILES ${_shadinglab_flat_headers}
   DESTINATION ${SHADINGLAB_INSTALL_FLAT_INCLUDEDIR} COMPONENT Development)
 
+# --- ParaView's plugin list -------------------------------------------------
+# ParaView (pvpython, pvbatch, the GUI) reads bin/paraview.conf beside its
+# executables: each line a plugin XML, relative to that directory. Installed
+# into ParaView's prefix (the Debian package), LoadDistributedPlugin and the
+# plugin manager list ShadingLab without PV_PLUGIN_PATH.
+if(SHADINGLAB_PARAVIEW_PLUGIN)
+  file(RELATIVE_PATH _shadinglab_xml_from_bin "/prefix/${CMAKE_INSTALL_BINDIR}"
+    "/prefix/${CMAKE_INSTALL_LIBDIR}/${SHADINGLAB_PARAVIEW_PLUGIN_SUBDIR}/ShadingLab.plugins.xml")
+  file(WRITE ${PROJECT_BINARY_DIR}/paraview.conf "${_shadinglab_xml_from_bin}\n")
+  install(FILES ${PROJECT_BINARY_DIR}/paraview.conf DESTINATION ${CMAKE_INSTALL_BINDIR}
+    COMPONENT Runtime)
+endif()
+
 # --- The package configuration ----------------------------------------------
 configure_package_config_file(${PROJECT_SOURCE_DIR}/cmake/ShadingLabConfig.cmake.in
   ${PROJECT_BINARY_DIR}/ShadingLabConfig.cmake
@@ -67,7 +83,10 @@ install(FILES ${PROJECT_BINARY_DIR}/ShadingLabConfig.cmake
   ${PROJECT_BINARY_DIR}/ShadingLabConfigVersion.cmake
   DESTINATION ${SHADINGLAB_INSTALL_CMAKEDIR} COMPONENT Development)
 
-# --- A Debian package: cpack -G DEB -----------------------------------------
+# --- Debian packages: cpack -G DEB -------------------------------------------
+# shadinglab (programs, explorer, ParaView plugin; dependencies from
+# dpkg-shlibdeps) and shadinglab-dev (static libraries, headers, the CMake
+# package; it depends on what ShadingLabConfig.cmake finds).
 set(CPACK_PACKAGE_NAME shadinglab)
 set(CPACK_PACKAGE_VENDOR "ShadingLab")
 set(CPACK_PACKAGE_CONTACT "ShadingLab developers <shadinglab@localhost>")
@@ -75,11 +94,16 @@ set(CPACK_PACKAGE_DESCRIPTION_SUMMARY
   "Flat, Gouraud, Phong and fast Phong shading for VTK and ParaView, with a CPU reference renderer")
 set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
 set(CPACK_PACKAGING_INSTALL_PREFIX /usr)
+set(CPACK_COMPONENTS_ALL Runtime Development)
+set(CPACK_DEB_COMPONENT_INSTALL ON)
 set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
-# The shared objects' dependencies by dpkg-shlibdeps (the plugin, the
-# programs); the headers' and CMake package's by hand: what find_package needs.
-set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
-set(CPACK_DEBIAN_PACKAGE_DEPENDS "paraview-dev, libopenmesh-dev, libopensubdiv-dev, libxsimd-dev")
+set(CPACK_DEBIAN_RUNTIME_PACKAGE_NAME shadinglab)
+set(CPACK_DEBIAN_RUNTIME_PACKAGE_SHLIBDEPS ON)
+set(CPACK_DEBIAN_RUNTIME_PACKAGE_SUGGESTS paraview)
+set(CPACK_DEBIAN_DEVELOPMENT_PACKAGE_NAME shadinglab-dev)
+set(CPACK_DEBIAN_DEVELOPMENT_PACKAGE_SECTION libdevel)
+set(CPACK_DEBIAN_DEVELOPMENT_PACKAGE_DEPENDS
+  "shadinglab (= ${PROJECT_VERSION}), paraview-dev, libopenmesh-dev, libosd-dev, libx11-dev")
 set(CPACK_RESOURCE_FILE_LICENSE ${PROJECT_SOURCE_DIR}/LICENSE)
 include(CPack)

@@ -22,7 +22,8 @@ const char* kRenderHelp =
   "INPUT: .vtp .vtk .vtu .ply .obj .stl .off\n"
   "  --size WxH          image size (default 1024x768)\n"
   "  --out FILE.png      output image (default out.png)\n"
-  "  --stats             print one JSON line of timings and counts\n";
+  "  --stats             print one JSON line of timings and counts\n"
+  "With --color-by the PNG carries a colour legend at its right edge.\n";
 
 /// Covered pixels with a channel at 255: where the display transform
 /// clipped (or the surface is exactly white).
@@ -54,7 +55,12 @@ int RunRender(int argc, char** argv)
   const render::Image& image = RenderOrExplain(*renderer, request->scene, options, &stats, "");
   const std::string out = args.Get("out", "out.png");
   const Stopwatch writing;
-  const std::vector<uint8_t> rgb8 = image.ToRGB8(options.display);
+  std::vector<uint8_t> rgb8 = image.ToRGB8(options.display);
+  const long long clipped = CountClipped(image, rgb8);
+  if (request->scene.colorMap)
+  {
+    DrawColorLegend(rgb8, image.width, image.height, *request->scene.colorMap, request->colorTitle);
+  }
   WritePng(image.width, image.height, rgb8, out);
   const double writeMs = writing.Milliseconds();
   // Notices come after success, so that an error stays one line.
@@ -88,7 +94,7 @@ int RunRender(int argc, char** argv)
       static_cast<long long>(stats.degenerate),
       static_cast<long long>(stats.skipped), static_cast<long long>(stats.culled),
       stats.hiddenBackFacesCulled ? "true" : "false", static_cast<long long>(stats.pixelsCovered),
-      static_cast<long long>(CountClipped(image, rgb8)),
+      clipped,
       static_cast<long long>(stats.pixelsShaded),
       // Shading evaluations per covered pixel (0 when nothing is covered).
       stats.pixelsCovered ? double(stats.pixelsShaded) / stats.pixelsCovered : 0.0,

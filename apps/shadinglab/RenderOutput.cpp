@@ -3,6 +3,8 @@
 
 #include "CliArgs.h"
 
+#include <algorithm>
+#include <cstdio>
 #include <vtkFreeTypeTools.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
@@ -57,10 +59,10 @@ void WritePng(int width, int height, const std::vector<uint8_t>& rgb8, const std
 }
 
 void DrawLabel(std::vector<uint8_t>& canvas, int canvasWidth, int canvasHeight, int x, int y,
-  const std::string& text)
+  const std::string& text, int fontSize)
 {
   vtkNew<vtkTextProperty> property;
-  property->SetFontSize(15);
+  property->SetFontSize(fontSize);
   property->SetColor(1.0, 1.0, 1.0);
   property->SetFontFamilyToArial();
   property->BoldOn();
@@ -92,5 +94,67 @@ void DrawLabel(std::vector<uint8_t>& canvas, int canvasWidth, int canvasHeight, 
   }
 }
 
+
+void DrawColorLegend(std::vector<uint8_t>& canvas, int canvasWidth, int canvasHeight,
+  const render::ColorMap& map, const std::string& title)
+{
+  const int W = canvasWidth, H = canvasHeight;
+  const int font = std::max(9, H / 50);
+  const int barW = std::max(8, H / 40), barH = std::max(20, H / 2);
+  const int labelW = 5 * font; // "-1.23e+04" at ~0.55 em per glyph
+  const int x0 = std::max(0, W - barW - labelW - 12), y0 = std::max(2 * font + 8, (H - barH) / 2);
+  auto pixel = [&](int x, int y) -> uint8_t* {
+    return (x >= 0 && y >= 0 && x < W && y < H) ? &canvas[(static_cast<size_t>(y) * W + x) * 3]
+                                                : nullptr;
+  };
+  // A darkened box behind the legend, so it reads over any surface.
+  const int titleW = static_cast<int>(title.size()) * font * 6 / 10;
+  const int boxX = std::max(0, std::min(x0 - 8, W - titleW - 8));
+  for (int y = y0 - 2 * font - 8; y < y0 + barH + font; ++y)
+  {
+    for (int x = boxX; x < W; ++x)
+    {
+      if (uint8_t* p = pixel(x, y))
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          p[c] = static_cast<uint8_t>(p[c] / 3);
+        }
+      }
+    }
+  }
+  DrawLabel(canvas, W, H, boxX + 4, y0 - 2 * font - 4, title, font);
+  // The bar: the maximum at the top.
+  const int bins = static_cast<int>(map.colors.size());
+  for (int y = 0; y < barH; ++y)
+  {
+    const double t = 1.0 - (y + 0.5) / barH;
+    const Vec3<float>& c = map.colors[static_cast<size_t>(std::min(bins - 1, static_cast<int>(t * bins)))];
+    for (int x = x0; x < x0 + barW; ++x)
+    {
+      if (uint8_t* p = pixel(x, y0 + y))
+      {
+        p[0] = static_cast<uint8_t>(std::lround(255 * c.x));
+        p[1] = static_cast<uint8_t>(std::lround(255 * c.y));
+        p[2] = static_cast<uint8_t>(std::lround(255 * c.z));
+      }
+    }
+  }
+  // Five ticks with their values.
+  for (int k = 0; k <= 4; ++k)
+  {
+    const int y = y0 + (barH - 1) * (4 - k) / 4;
+    for (int x = x0 + barW; x < x0 + barW + 5; ++x)
+    {
+      if (uint8_t* p = pixel(x, y))
+      {
+        p[0] = p[1] = p[2] = 255;
+      }
+    }
+    char value[32];
+    std::snprintf(value, sizeof value, "%.4g", map.rangeMin + k * (map.rangeMax - map.rangeMin) / 4);
+    DrawLabel(canvas, W, H, x0 + barW + 7, y - font / 2 - 2, value, font);
+  }
+}
 
 } // namespace shadinglab::cli

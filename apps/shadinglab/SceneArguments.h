@@ -7,6 +7,7 @@
 #include "CliArgs.h"
 
 #include "shadinglab/render/Renderer.h"
+#include "shadinglab/render/ColorMap.h"
 #include "shadinglab/render/Settings.h"
 
 #include <memory>
@@ -32,6 +33,10 @@ struct SceneArguments
   /// Everything the settings table's flags set; settings.render has the
   /// image size too, settings.display the display transform.
   render::Settings settings;
+  /// --color-by: the map (its range resolved) scene.colorMap points at, and
+  /// the legend's title ("Elevation", "Velocity Magnitude").
+  render::ColorMap colorMap;
+  std::string colorTitle;
   std::string notices; ///< said after success (errors stay one line)
   double readMs = 0;    ///< reading (and checking) the input file
   double prepareMs = 0; ///< the repair check, repair, conversion

@@ -11,6 +11,7 @@
 #include <vtkUnsignedCharArray.h>
 #include <vtkWindowToImageFilter.h>
 #include <vtkLight.h>
+#include <vtkLookupTable.h>
 #include <vtkNew.h>
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
@@ -37,6 +38,41 @@ void ConfigureActor(const render::RenderOptions& options, const Material<double>
   prop->SetAmbient(0.0);
   prop->SetSpecular(0.0);
   prop->SetBackfaceCulling(options.cullBackFaces);
+}
+
+void ConfigureColoring(const render::ColorMap* map, bool pointScalars, bool cellScalars,
+  vtkShadingLabPolyDataMapper* mapper)
+{
+  if (!map || !(pointScalars || cellScalars))
+  {
+    mapper->SetColorModeToDirectScalars();
+    mapper->SetScalarModeToDefault();
+    mapper->InterpolateScalarsBeforeMappingOff();
+    return;
+  }
+  vtkNew<vtkLookupTable> table;
+  table->SetNumberOfTableValues(static_cast<vtkIdType>(map->colors.size()));
+  for (size_t b = 0; b < map->colors.size(); ++b)
+  {
+    const Vec3<float>& c = map->colors[b];
+    table->SetTableValue(static_cast<vtkIdType>(b), c.x, c.y, c.z, 1.0);
+  }
+  table->SetNanColor(map->nanColor.x, map->nanColor.y, map->nanColor.z, 1.0);
+  table->SetTableRange(map->rangeMin, map->rangeMax);
+  table->BuildSpecialColors();
+  mapper->SetLookupTable(table);
+  mapper->UseLookupTableScalarRangeOn();
+  mapper->SetColorModeToMapScalars();
+  if (pointScalars)
+  {
+    mapper->SetScalarModeToUsePointFieldData();
+  }
+  else
+  {
+    mapper->SetScalarModeToUseCellFieldData();
+  }
+  mapper->SelectColorArray("Scalars");
+  mapper->InterpolateScalarsBeforeMappingOn();
 }
 
 void ApplyLighting(const Lighting<double>& lighting, vtkRenderer* renderer)

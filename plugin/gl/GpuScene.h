@@ -4,6 +4,7 @@
 // explorer's QVTKOpenGLNativeWidget panels) set up mapper, actor and lights.
 #pragma once
 
+#include "shadinglab/render/ColorMap.h"
 #include "shadinglab/render/Options.h"
 #include "shadinglab/model/Shading.h"
 
@@ -26,6 +27,16 @@ namespace shadinglab::gl
  */
 void ConfigureActor(const render::RenderOptions& options, const Material<double>& material,
   vtkShadingLabPolyDataMapper* mapper, vtkActor* actor);
+
+/**
+ * Colour by data: with a colour map and a mesh with scalars (point or cell
+ * array "Scalars", as PolyDataFromMesh writes them) the mapper maps them
+ * through a lookup table of the map's bins over its range, interpolating
+ * the scalar before mapping (ParaView's default); else the direct colours
+ * ConfigureActor set up.
+ */
+void ConfigureColoring(const render::ColorMap* map, bool pointScalars, bool cellScalars,
+  vtkShadingLabPolyDataMapper* mapper);
 
 /**
  * The lights (world coordinates) as scene vtkLights and the ambient

@@ -750,3 +750,60 @@ TEST(GpuParityGLTest, TranslucentActorsAreDrawn)
     EXPECT_LT(means[1], 0.9 * means[0]) << (composite ? "composite" : "plain") << " not blended";
   }
 }
+
+TEST(GpuParityGLTest, ColourByPointAndCellDataBothBackends)
+{
+  if (!HaveGpu())
+  {
+    GTEST_SKIP() << "no X display with OpenGL";
+  }
+  // The Renderer interface on both backends with a colour map: point
+  // scalars interpolated then mapped (every mode), cell scalars per polygon.
+  const auto sphere = WithExactNormals(sl::datasets::MakeUVSphere(32, 16));
+  render::Mesh mesh = render::MeshFromPolyData(sphere);
+  for (int64_t v = 0; v < mesh.NumberOfPoints(); ++v)
+  {
+    mesh.scalars.push_back(mesh.points[3 * v + 1] + 0.5f * mesh.points[3 * v]);
+  }
+  render::Mesh cells = mesh;
+  cells.scalars.clear();
+  for (int64_t p = 0; p < cells.NumberOfPolygons(); ++p)
+  {
+    cells.cellScalars.push_back(static_cast<float>(p % 7));
+  }
+  render::ColorMap map;
+  ASSERT_TRUE(render::FindColorMap("Cool to Warm", map));
+  map.rangeMin = -1.2;
+  map.rangeMax = 1.2;
+  render::ColorMap cellMap;
+  ASSERT_TRUE(render::FindColorMap("viridis", cellMap));
+  cellMap.rangeMin = 0;
+  cellMap.rangeMax = 6;
+  sl::cpu::SoftwareRenderer cpuRenderer;
+  sl::gl::GpuRenderer gpuRenderer;
+  render::RenderOptions opt;
+  opt.width = 240;
+  opt.height = 180;
+  opt.fastPhongFallback = false; // fast Phong itself on both backends
+  for (const auto& [colored, colorMap] : { std::pair{ &mesh, &map }, std::pair{ &cells, &cellMap } })
+  {
+    for (auto mode : { render::ShadingMode::Flat, render::ShadingMode::Gouraud,
+           render::ShadingMode::Phong, render::ShadingMode::FastPhong })
+    {
+      opt.mode = mode;
+      render::Scene scene{ colored, Camera(), Lights(false), BlinnPhong(), colorMap };
+      const render::Image ref = cpuRenderer.Render(scene, opt);
+      const render::Image gpu = gpuRenderer.Render(scene, opt);
+      const auto d = Compare(ref, gpu);
+      const std::string what = std::string(render::ShadingModeName(mode)) +
+        (colored == &mesh ? " by point data" : " by cell data");
+      EXPECT_GT(d.pixels, 10000) << what;
+      EXPECT_LE(d.mean, kMeanThreshold) << what;
+      EXPECT_LE(d.p99, kP99Threshold) << what;
+      // The colours are there: red and blue ends of Cool to Warm differ.
+      scene.colorMap = nullptr;
+      const auto plain = Compare(ref, cpuRenderer.Render(scene, opt));
+      EXPECT_GT(plain.mean, 10.0) << what << ": colour by data changes the picture";
+    }
+  }
+}

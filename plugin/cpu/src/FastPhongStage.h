@@ -17,7 +17,12 @@ struct FastPhongStage : StageBase
 {
   static void Layout(Frame& f)
   {
-    if (!f.MeshData->colors.empty())
+    if (f.PointScalars())
+    {
+      f.ScalarSlot = 0; // mapped per pixel, as the Phong stage
+      f.NumAttributes = 1;
+    }
+    else if (!f.MeshData->colors.empty() && !f.Map)
     {
       f.ColorSlot = 0;
       f.NumAttributes = 3;
@@ -144,6 +149,8 @@ struct FastPhongStage : StageBase
     };
     FastPhongScanline<float> diffuseLine[kMaxLights], specularLine[kMaxLights], viewLine;
     const Vec3f ambient = F.Mat.ambient * F.Lights.ambientIntensity;
+    // rho without per-pixel colours: the polygon's (cell data) or the material's.
+    const Vec3f cellRho = F.CellScalars() ? F.CellColorOf(poly.id) : F.Mat.diffuseColor;
     // The cosine power by table, as Bishop & Weimer (their section 4).
     const auto tablePower = [this](float x, float) { return F.PowerTable.Lookup(x); };
     // The model is the template parameter: BrdfFromCosines<Model> has no switch.
@@ -218,12 +225,16 @@ struct FastPhongStage : StageBase
           return;
         }
         d = z;
-        Vec3f color = F.Mat.diffuseColor;
+        Vec3f color = cellRho;
+        const float w = F.Perspective ? 1.0f / a[kAttrInvW] : 1.0f;
         if (F.ColorSlot >= 0)
         {
           const float* c = a + kAttrFirst + F.ColorSlot;
-          const float w = F.Perspective ? 1.0f / a[kAttrInvW] : 1.0f;
           color = Vec3f(c[0] * w, c[1] * w, c[2] * w);
+        }
+        else if (F.ScalarSlot >= 0)
+        {
+          color = F.ScalarColor(a[kAttrFirst + F.ScalarSlot] * w);
         }
         Vec3f I = ambient;
         for (int l = 0; l < nl; ++l)

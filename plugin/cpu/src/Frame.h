@@ -24,6 +24,9 @@ struct Frame
   Lighting<float> Lights;
   Material<float> Mat;
   render::RenderOptions Opt;
+  /// Colour by data: maps the mesh's scalars (per vertex) or cellScalars
+  /// (per polygon) to rho; nullptr when the scene colours by none.
+  const render::ColorMap* Map = nullptr;
 
   // Derived once per frame.
   int Width = 0, Height = 0, Threads = 1; ///< full (supersampled) resolution
@@ -32,6 +35,7 @@ struct Frame
   const float* NormalData = nullptr; ///< the mesh's normals or computed ones
   int NumAttributes = 0;             ///< interpolated values beyond z and 1/w
   int NormalSlot = -1, PositionSlot = -1, ColorSlot = -1;
+  int ScalarSlot = -1; ///< the interpolated scalar (colour by point data)
   bool Perspective = true;       ///< perspective-correct interpolation
   SpecularPowerTable PowerTable; ///< fast-phong's x^n, as Bishop & Weimer
   float FastPhongMinCos = 0.0f;  ///< cos of RenderOptions::fastPhongMaxSpread
@@ -53,8 +57,20 @@ struct Frame
     const float* p = &this->MeshData->points[3 * v];
     return { p[0], p[1], p[2] };
   }
+  bool PointScalars() const { return this->Map && !this->MeshData->scalars.empty(); }
+  bool CellScalars() const { return this->Map && !this->MeshData->cellScalars.empty(); }
+  /// rho varies per pixel or per polygon (scalars), or per vertex (colors).
+  bool HasColor() const { return this->ColorSlot >= 0 || this->ScalarSlot >= 0 || this->CellScalars(); }
+  /// Polygon p's rho under colour by cell data.
+  Vec3f CellColorOf(int64_t p) const { return this->Map->Map(this->MeshData->cellScalars[p]); }
+  /// rho of an interpolated scalar (Interpolate Scalars Before Mapping).
+  Vec3f ScalarColor(float s) const { return this->Map->Map(s); }
   Vec3f ColorOf(int64_t v) const
   {
+    if (this->PointScalars())
+    {
+      return this->Map->Map(this->MeshData->scalars[v]);
+    }
     if (this->MeshData->colors.empty())
     {
       return this->Mat.diffuseColor;

@@ -105,11 +105,27 @@ struct FlatStage : StageBase
     int64_t id;
     bool back;
     bool valid = false;
-    Vec3f color;
+    Vec3f color;  ///< the polygon's intensity; with point scalars I(0)
+    Vec3f perRho; ///< with point scalars: I(1) - I(0), which rho multiplies
   };
 
-  static void Layout(Frame&) {}
-  void Vertex(int64_t, float*) const {}
+  /// Colour by point data: the scalar is interpolated and mapped per pixel
+  /// (as the GPU's texture lookup), the lighting stays the polygon's.
+  static void Layout(Frame& f)
+  {
+    if (f.PointScalars())
+    {
+      f.ScalarSlot = 0;
+      f.NumAttributes = 1;
+    }
+  }
+  void Vertex(int64_t v, float* raw) const
+  {
+    if (F.ScalarSlot >= 0)
+    {
+      raw[0] = F.MeshData->scalars[v];
+    }
+  }
   Polygon BeginPolygon(int64_t p,
     bool back,
     const ScreenVertex**,
@@ -117,11 +133,15 @@ struct FlatStage : StageBase
     int,
     ScreenVertex*) const
   {
-    return { p, back, false, Vec3f() };
+    return { p, back, false, Vec3f(), Vec3f() };
   }
 
-  Vec3f PolygonColor(int64_t p, bool back) const
+  /// Fills poly.color (and poly.perRho with point scalars: eq. 1.1 is
+  /// affine in rho, I(rho) = I(0) + rho (I(1) - I(0))).
+  void PolygonColor(Polygon& poly) const
   {
+    const int64_t p = poly.id;
+    const bool back = poly.back;
     // Face normal: given cell normal, else Newell's method (exact for planar
     // polygons, a least-squares normal otherwise). Lit at the polygon's last
     // vertex, OpenGL's provoking vertex, with its colour: the GPU mapper does
@@ -143,7 +163,14 @@ struct FlatStage : StageBase
       N = -N;
     }
     const int64_t provoking = conn[first + n - 1];
-    return F.ShadeAt(F.PointOf(provoking), N, F.ColorOf(provoking));
+    const Vec3f P = F.PointOf(provoking);
+    if (F.PointScalars())
+    {
+      poly.color = F.ShadeAt(P, N, Vec3f(0, 0, 0));
+      poly.perRho = F.ShadeAt(P, N, Vec3f(1, 1, 1)) - poly.color;
+      return;
+    }
+    poly.color = F.ShadeAt(P, N, F.CellScalars() ? F.CellColorOf(p) : F.ColorOf(provoking));
   }
 
   void DrawPart(const ScreenVertex* const* verts,
@@ -161,12 +188,17 @@ struct FlatStage : StageBase
         {
           if (!poly.valid)
           {
-            poly.color = this->PolygonColor(poly.id, poly.back);
+            this->PolygonColor(poly);
             poly.valid = true;
           }
-          out[0] = poly.color.x;
-          out[1] = poly.color.y;
-          out[2] = poly.color.z;
+          Vec3f c = poly.color;
+          if (F.ScalarSlot >= 0)
+          {
+            c += F.ScalarColor(a[kAttrFirst] * F.AttributeScale(a)) * poly.perRho;
+          }
+          out[0] = c.x;
+          out[1] = c.y;
+          out[2] = c.z;
         }
       });
   }
@@ -175,14 +207,44 @@ struct FlatStage : StageBase
 /// Gouraud (eq. 2.3-2.4): the model at the vertices, the colour interpolated.
 struct GouraudStage : StageBase
 {
-  static void Layout(Frame& f) { f.NumAttributes = 3; }
+  /// Colour by data (point or cell scalars): the vertex carries I(0) and
+  /// I(1) - I(0) (eq. 1.1 is affine in rho) and rho is applied per pixel,
+  /// mapped from the interpolated scalar or the polygon's, as the GPU does.
+  static void Layout(Frame& f)
+  {
+    f.NumAttributes = f.Map ? 6 : 3;
+    if (f.PointScalars())
+    {
+      f.ScalarSlot = 6;
+      f.NumAttributes = 7;
+    }
+  }
+
+  /// The vertex's lit colour, or with colour by data I(0) and I(1) - I(0).
+  void Light(int64_t v, const Vec3f& N, float* raw) const
+  {
+    const Vec3f P = F.PointOf(v);
+    if (!F.Map)
+    {
+      const Vec3f c = F.ShadeAt(P, N, F.ColorOf(v));
+      raw[0] = c.x;
+      raw[1] = c.y;
+      raw[2] = c.z;
+      return;
+    }
+    const Vec3f i0 = F.ShadeAt(P, N, Vec3f(0, 0, 0));
+    const Vec3f i1 = F.ShadeAt(P, N, Vec3f(1, 1, 1)) - i0;
+    const float v6[6] = { i0.x, i0.y, i0.z, i1.x, i1.y, i1.z };
+    std::copy(v6, v6 + 6, raw);
+  }
 
   void Vertex(int64_t v, float* raw) const
   {
-    const Vec3f c = F.ShadeAt(F.PointOf(v), F.NormalOf(v), F.ColorOf(v));
-    raw[0] = c.x;
-    raw[1] = c.y;
-    raw[2] = c.z;
+    this->Light(v, F.NormalOf(v), raw);
+    if (F.ScalarSlot >= 0)
+    {
+      raw[F.ScalarSlot] = F.MeshData->scalars[v];
+    }
   }
 
   /// Back faces (two-sided lighting): their vertices relit with flipped
@@ -200,11 +262,13 @@ struct GouraudStage : StageBase
       {
         relit[k] = *verts[k];
         const int64_t v = ids[k];
-        const Vec3f c = F.ShadeAt(F.PointOf(v), -F.NormalOf(v), F.ColorOf(v));
+        float lit[6];
+        this->Light(v, -F.NormalOf(v), lit);
         const float scale = relit[k].a[kAttrInvW];
-        relit[k].a[kAttrFirst] = c.x * scale;
-        relit[k].a[kAttrFirst + 1] = c.y * scale;
-        relit[k].a[kAttrFirst + 2] = c.z * scale;
+        for (int c = 0; c < (F.Map ? 6 : 3); ++c)
+        {
+          relit[k].a[kAttrFirst + c] = lit[c] * scale;
+        }
         verts[k] = &relit[k];
       }
     }
@@ -214,20 +278,28 @@ struct GouraudStage : StageBase
   void DrawPart(const ScreenVertex* const* verts,
     const int64_t*,
     int n,
-    Polygon&,
+    Polygon& poly,
     int rowBegin,
     int rowEnd,
     ThreadState& state) const
   {
+    const Vec3f cellRho = F.CellScalars() ? F.CellColorOf(poly.id) : Vec3f();
     this->Scan(verts, n, rowBegin, rowEnd,
       [&](int j, int i, const float* a)
       {
         if (float* out = F.DepthTest(j, i, a, state))
         {
           const float w = F.AttributeScale(a);
-          out[0] = a[kAttrFirst] * w;
-          out[1] = a[kAttrFirst + 1] * w;
-          out[2] = a[kAttrFirst + 2] * w;
+          const float* c = a + kAttrFirst;
+          Vec3f I(c[0] * w, c[1] * w, c[2] * w);
+          if (F.Map)
+          {
+            const Vec3f rho = F.ScalarSlot >= 0 ? F.ScalarColor(c[F.ScalarSlot] * w) : cellRho;
+            I += rho * Vec3f(c[3] * w, c[4] * w, c[5] * w);
+          }
+          out[0] = I.x;
+          out[1] = I.y;
+          out[2] = I.z;
         }
       });
   }
@@ -258,6 +330,10 @@ inline void WriteVertexSlots(const Frame& F, int64_t v, float* raw)
     raw[F.ColorSlot + 1] = c.y;
     raw[F.ColorSlot + 2] = c.z;
   }
+  if (F.ScalarSlot >= 0)
+  {
+    raw[F.ScalarSlot] = F.MeshData->scalars[v];
+  }
 }
 
 /// Phong (eq. 2.5): normals (and positions, colours) interpolated, the
@@ -280,14 +356,20 @@ struct PhongStage : StageBase
       f.PositionSlot = slot;
       slot += 3;
     }
-    if (!f.MeshData->colors.empty())
+    if (f.PointScalars())
+    {
+      // Interpolate Scalars Before Mapping: the scalar, mapped per pixel.
+      f.ScalarSlot = slot;
+      slot += 1;
+    }
+    else if (!f.MeshData->colors.empty() && !f.Map)
     {
       f.ColorSlot = slot;
       slot += 3;
     }
     f.NumAttributes = slot;
     f.Pixels = { &f.Mat, &f.Lights, f.Eye, f.ToEye, f.Cam.parallel, f.PositionSlot >= 0,
-      f.ColorSlot >= 0 };
+      f.HasColor() };
   }
 
   void Vertex(int64_t v, float* raw) const { WriteVertexSlots(F, v, raw); }
@@ -303,6 +385,7 @@ struct PhongStage : StageBase
     ThreadState& state) const
   {
     const float flip = (poly.back && F.Opt.twoSidedLighting) ? -1.0f : 1.0f;
+    const Vec3f cellRho = F.CellScalars() ? F.CellColorOf(poly.id) : Vec3f();
     int64_t shaded = 0;
     PixelQueue& q = state.queue;
     this->Scan(verts, n, rowBegin, rowEnd,
@@ -333,6 +416,14 @@ struct PhongStage : StageBase
           q.cr[k] = c[0] * w;
           q.cg[k] = c[1] * w;
           q.cb[k] = c[2] * w;
+        }
+        else if (F.Map)
+        {
+          const Vec3f rho =
+            F.ScalarSlot >= 0 ? F.ScalarColor(a[kAttrFirst + F.ScalarSlot] * w) : cellRho;
+          q.cr[k] = rho.x;
+          q.cg[k] = rho.y;
+          q.cb[k] = rho.z;
         }
         q.out[k] = out;
         if (++q.count == PixelQueue::kCapacity)

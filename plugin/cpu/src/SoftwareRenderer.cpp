@@ -154,6 +154,8 @@ public:
     RenderStats* stats,
     std::optional<uint64_t> knownHash = std::nullopt);
 
+  void SetColorMap(const render::ColorMap* map) { this->FrameState.Map = map; }
+
   /// Run with ShadingMode::Auto resolved (ChooseMode) from this mesh's
   /// normals, made once per mesh version and shared with the drawing.
   const Image& RunAuto(const render::Scene& scene, const Lighting<double>& lights,
@@ -222,7 +224,7 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh,
   Frame& F = this->FrameState; // kept across frames: the power table's storage is reused
   F.NormalData = nullptr;
   F.NumAttributes = 0;
-  F.NormalSlot = F.PositionSlot = F.ColorSlot = -1;
+  F.NormalSlot = F.PositionSlot = F.ColorSlot = F.ScalarSlot = -1;
   F.MeshData = &mesh;
   F.Cam = camera;
   F.Lights = lighting;
@@ -485,6 +487,9 @@ const render::Image& SoftwareRenderer::Render(const render::Scene& scene,
   // No lights: a headlight, as VTK's automatic light (and the GL backend).
   const Lighting<double> lights = render::LightsOrHeadlight(scene.lighting, scene.camera);
   const Lighting<float> lighting = lights.Cast<float>();
+  const render::Mesh& mesh = *scene.mesh;
+  this->Impl->SetColorMap(
+    (mesh.scalars.empty() && mesh.cellScalars.empty()) ? nullptr : scene.colorMap);
   if (options.mode != render::ShadingMode::Auto)
   {
     return this->Impl->Run(

@@ -39,6 +39,18 @@ std::string ValidateRequest(const Scene& scene, const RenderOptions& options)
   {
     return "between 0 and " + std::to_string(kMaxLights) + " lights";
   }
+  const Mesh& mesh = *scene.mesh;
+  if ((!mesh.scalars.empty() && static_cast<int64_t>(mesh.scalars.size()) != mesh.NumberOfPoints()) ||
+    (!mesh.cellScalars.empty() &&
+      static_cast<int64_t>(mesh.cellScalars.size()) != mesh.NumberOfPolygons()) ||
+    (!mesh.scalars.empty() && !mesh.cellScalars.empty()))
+  {
+    return "scalars: one per vertex or one per polygon, not both";
+  }
+  if (scene.colorMap && scene.colorMap->colors.empty())
+  {
+    return "an empty colour map";
+  }
   const Camera& camera = scene.camera;
   if (!IsFinite(camera.position) || !IsFinite(camera.focalPoint) || !IsFinite(camera.viewUp) ||
     !(camera.viewAngle > 0 && camera.viewAngle < 180) || !(camera.nearClip > 0) ||

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "shadinglab/render/Scene.h"
 
+#include <iterator>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -99,13 +100,14 @@ uint64_t Mesh::ContentHash(const TaskRunner& run) const
       v.size() * sizeof(v[0]), 0, 0 };
   };
   HashedArray arrays[] = { arrayOf(this->points), arrayOf(this->normals), arrayOf(this->colors),
-    arrayOf(this->offsets), arrayOf(this->connectivity), arrayOf(this->faceNormals) };
+    arrayOf(this->offsets), arrayOf(this->connectivity), arrayOf(this->faceNormals),
+    arrayOf(this->scalars), arrayOf(this->cellScalars) };
   // Every array's slices in one batch, so all the runner's threads share
   // the whole mesh (one batch per array left a 600 KB array to one thread).
   int parts = 0;
   size_t total = 0;
   std::vector<std::pair<int, int>> sliceOf; // part -> (array, slice)
-  for (int a = 0; a < 6; ++a)
+  for (int a = 0; a < static_cast<int>(std::size(arrays)); ++a)
   {
     HashedArray& arr = arrays[a];
     arr.slices = static_cast<int>(

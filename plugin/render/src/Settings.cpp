@@ -2,6 +2,8 @@
 // The settings table: one row a setting (Settings.h says what reads it).
 #include "shadinglab/render/Settings.h"
 
+#include "shadinglab/render/ColorMap.h"
+
 #include "shadinglab/model/Materials.h"
 
 #include <algorithm>
@@ -18,6 +20,11 @@ namespace
 SettingValue Number(double v)
 {
   return { { v }, {} };
+}
+
+SettingValue Text(const std::string& text)
+{
+  return { {}, text };
 }
 
 SettingValue Triple(const Vec3<double>& v)
@@ -223,6 +230,45 @@ void RenderRows(std::vector<SettingRow>& t)
       s.render.display = kDisplayTransforms[static_cast<int>(v.numbers[0])].value;
     };
     r.get = [](const Settings& s) { return Number(static_cast<int>(s.render.display)); };
+    t.push_back(r);
+  }
+}
+
+/// The rows of colour by data.
+void ColorRows(std::vector<SettingRow>& t)
+{
+  using G = SettingGroup;
+  using K = SettingKind;
+  {
+    SettingRow r = Row("color-by", "ColorBy", "Color By", G::Render, K::Text);
+    r.doc = "colour by a point or cell array (a component, or the magnitude of a vector): it "
+            "gives the diffuse colour, mapped per pixel after interpolation";
+    r.frontEnds = kCli;
+    r.metavar = "[POINTS:|CELLS:]NAME[:C|Magnitude]";
+    r.set = [](Settings& s, const SettingValue& v) { s.color.array = v.text; };
+    r.get = [](const Settings& s) { return Text(s.color.array); };
+    t.push_back(r);
+  }
+  {
+    SettingRow r = Row("colormap", "Colormap", "Color Map", G::Render, K::Text);
+    for (const ColorMapName& name : ColorMapNames())
+    {
+      r.choices.push_back({ name.key, name.label });
+    }
+    r.doc = "the colour map of --color-by: ParaView's preset of that name";
+    r.frontEnds = kCli;
+    r.metavar = "NAME";
+    r.set = [](Settings& s, const SettingValue& v) { s.color.colormap = v.text; };
+    r.get = [](const Settings& s) { return Text(s.color.colormap); };
+    t.push_back(r);
+  }
+  {
+    SettingRow r = Row("range", "ColorRange", "Color Range", G::Render, K::Text);
+    r.doc = "the data range the colour map spans: auto (the array's finite values) or MIN,MAX";
+    r.frontEnds = kCli;
+    r.metavar = "MIN,MAX";
+    r.set = [](Settings& s, const SettingValue& v) { s.color.range = v.text; };
+    r.get = [](const Settings& s) { return Text(s.color.range); };
     t.push_back(r);
   }
 }
@@ -508,6 +554,7 @@ std::vector<SettingRow> MakeTable()
 {
   std::vector<SettingRow> t;
   RenderRows(t);
+  ColorRows(t);
   LightRows(t);
   MaterialRows(t);
   MeshRows(t);

@@ -5,7 +5,11 @@
 
 #include <vtkCellArray.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <limits>
+#include <stdexcept>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkFloatArray.h>
@@ -26,7 +30,8 @@ namespace shadinglab::render
 namespace
 {
 
-Mesh Convert(vtkPolyData* input, WorldFrame& frame, bool normalize);
+Mesh Convert(vtkPolyData* input, WorldFrame& frame, bool normalize,
+  const ScalarField* field = nullptr, double* range = nullptr);
 
 /// Largest polygon handed to the renderers whole: the CPU renderer clips a
 /// polygon at the near plane into at most one more vertex than it has, in a
@@ -68,10 +73,115 @@ Mesh MeshFromPolyData(vtkPolyData* input, WorldFrame& frame)
   return Convert(input, frame, true);
 }
 
+Mesh MeshFromPolyData(vtkPolyData* input, WorldFrame& frame, const ScalarField& field,
+  double range[2])
+{
+  return Convert(input, frame, true, &field, range);
+}
+
+std::string ParseScalarField(const std::string& spec, ScalarField& field)
+{
+  field = ScalarField();
+  std::string rest = spec;
+  auto strip = [&](const char* prefix, ScalarField::Association a) {
+    const std::string p(prefix);
+    if (rest.size() >= p.size() && rest.compare(0, p.size(), p) == 0)
+    {
+      rest = rest.substr(p.size());
+      field.association = a;
+    }
+  };
+  strip("POINTS:", ScalarField::Association::Points);
+  strip("CELLS:", ScalarField::Association::Cells);
+  const size_t colon = rest.rfind(':');
+  if (colon != std::string::npos)
+  {
+    const std::string c = rest.substr(colon + 1);
+    if (c == "Magnitude" || c == "magnitude")
+    {
+      rest = rest.substr(0, colon);
+    }
+    else if (!c.empty() && c.size() <= 2 && std::all_of(c.begin(), c.end(), ::isdigit))
+    {
+      field.component = std::stoi(c);
+      rest = rest.substr(0, colon);
+    }
+  }
+  if (rest.empty())
+  {
+    return "--color-by '" + spec + "': no array name ([POINTS:|CELLS:]NAME[:COMPONENT|Magnitude])";
+  }
+  field.name = rest;
+  return {};
+}
+
 namespace
 {
 
-Mesh Convert(vtkPolyData* input, WorldFrame& frame, bool normalize)
+/// The names of an attribute's arrays, for error messages.
+std::string ArrayNames(vtkDataSetAttributes* data)
+{
+  std::string names;
+  for (int a = 0; a < data->GetNumberOfArrays(); ++a)
+  {
+    if (vtkDataArray* array = data->GetArray(a); array && array->GetName())
+    {
+      names += (names.empty() ? "" : ", ") + std::string(array->GetName());
+    }
+  }
+  return names.empty() ? "none" : names;
+}
+
+/// Component `component` of tuple i, or the tuple's magnitude (-1).
+double ValueOf(vtkDataArray* array, vtkIdType i, int component)
+{
+  if (component >= 0)
+  {
+    return array->GetComponent(i, component);
+  }
+  double sum = 0;
+  for (int c = 0; c < array->GetNumberOfComponents(); ++c)
+  {
+    const double v = array->GetComponent(i, c);
+    sum += v * v;
+  }
+  return std::sqrt(sum);
+}
+
+/// The field's array in `pd` (throws one line when missing); `cells` says
+/// where it was found.
+vtkDataArray* FindField(vtkPolyData* pd, const ScalarField& field, bool& cells)
+{
+  using A = ScalarField::Association;
+  vtkDataArray* array = nullptr;
+  cells = false;
+  if (field.association != A::Cells)
+  {
+    array = pd->GetPointData()->GetArray(field.name.c_str());
+  }
+  if (!array && field.association != A::Points)
+  {
+    array = pd->GetCellData()->GetArray(field.name.c_str());
+    cells = array != nullptr;
+  }
+  if (!array)
+  {
+    throw std::invalid_argument("no " +
+      std::string(field.association == A::Points ? "point" : field.association == A::Cells ? "cell" : "point or cell") +
+      " array '" + field.name + "' (point arrays: " + ArrayNames(pd->GetPointData()) +
+      "; cell arrays: " + ArrayNames(pd->GetCellData()) + ")");
+  }
+  if (field.component >= array->GetNumberOfComponents())
+  {
+    throw std::invalid_argument("'" + field.name + "' has " +
+      std::to_string(array->GetNumberOfComponents()) + " component(s): use 0.." +
+      std::to_string(array->GetNumberOfComponents() - 1) + " or Magnitude");
+  }
+  return array;
+}
+
+Mesh Convert(vtkPolyData* input, WorldFrame& frame, bool normalize, const ScalarField* field,
+  double* range)
 {
   vtkSmartPointer<vtkPolyData> pd = input;
   if (input->GetNumberOfStrips() > 0)
@@ -176,6 +286,31 @@ Mesh Convert(vtkPolyData* input, WorldFrame& frame, bool normalize)
     mesh.offsets.push_back(static_cast<int64_t>(mesh.connectivity.size()));
     polygonOf.push_back(c);
   }
+  if (field)
+  {
+    bool cells = false;
+    vtkDataArray* array = FindField(pd, *field, cells);
+    std::vector<float>& out = cells ? mesh.cellScalars : mesh.scalars;
+    // Cell data counts verts and lines before the polygons.
+    const vtkIdType firstPolygon = pd->GetNumberOfVerts() + pd->GetNumberOfLines();
+    const size_t n = cells ? polygonOf.size() : static_cast<size_t>(np);
+    out.resize(n);
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (size_t i = 0; i < n; ++i)
+    {
+      const vtkIdType tuple =
+        cells ? firstPolygon + polygonOf[i] : static_cast<vtkIdType>(i);
+      const double v = ValueOf(array, tuple, field->component);
+      out[i] = static_cast<float>(v);
+      if (std::isfinite(v))
+      {
+        lo = std::min(lo, v);
+        hi = std::max(hi, v);
+      }
+    }
+    range[0] = lo <= hi ? lo : 0.0;
+    range[1] = lo <= hi ? hi : 1.0;
+  }
   // Cell normals apply to polygons only when the polydata has no verts or
   // lines before them in cell order.
   vtkDataArray* cn = pd->GetCellData()->GetNormals();
@@ -241,6 +376,19 @@ vtkPolyData* PolyDataFromMesh(const Mesh& mesh)
   if (!mesh.faceNormals.empty())
   {
     pd->GetCellData()->SetNormals(FloatArray(mesh.faceNormals, "Normals"));
+  }
+  for (const std::vector<float>* values : { &mesh.scalars, &mesh.cellScalars })
+  {
+    if (!values->empty())
+    {
+      vtkNew<vtkFloatArray> array;
+      array->SetName("Scalars");
+      array->SetNumberOfTuples(static_cast<vtkIdType>(values->size()));
+      std::copy(values->begin(), values->end(), array->GetPointer(0));
+      (values == &mesh.scalars ? static_cast<vtkDataSetAttributes*>(pd->GetPointData())
+                               : pd->GetCellData())
+        ->AddArray(array);
+    }
   }
   return pd;
 }

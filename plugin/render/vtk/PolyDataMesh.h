@@ -4,6 +4,8 @@
 
 #include "shadinglab/render/Scene.h"
 
+#include <string>
+
 class vtkPolyData;
 
 namespace shadinglab::render
@@ -24,10 +26,40 @@ Mesh MeshFromPolyData(vtkPolyData* polydata);
  */
 Mesh MeshFromPolyData(vtkPolyData* polydata, WorldFrame& frame);
 
+/// The data array to colour by, as `--color-by` spells it:
+/// "[POINTS:|CELLS:]NAME[:COMPONENT|Magnitude]".
+struct ScalarField
+{
+  enum class Association
+  {
+    Any,    ///< point data first, then cell data (as ParaView looks a name up)
+    Points,
+    Cells
+  };
+  std::string name;
+  Association association = Association::Any;
+  int component = -1; ///< -1: the magnitude (ParaView's default for vectors)
+};
+
+/// Parses a --color-by spelling; "" or a one-line error.
+std::string ParseScalarField(const std::string& spec, ScalarField& field);
+
+/**
+ * MeshFromPolyData(polydata, frame) that also copies `field` into
+ * mesh.scalars (point data) or mesh.cellScalars (cell data, following
+ * the polygons the conversion makes). Throws std::invalid_argument with one
+ * line naming the arrays there are when the field is not found or its
+ * component does not exist. `range` gets the finite values' [min, max]
+ * ([0, 1] when there are none).
+ */
+Mesh MeshFromPolyData(vtkPolyData* polydata, WorldFrame& frame, const ScalarField& field,
+  double range[2]);
+
 /**
  * The inverse: points, point normals (active), colours as a float RGB
  * array in [0, 1] (active scalars, to be mapped as direct scalars), polygons
- * and cell normals (active). The caller owns the result (refcount 1).
+ * and cell normals (active), and the scalars or cellScalars as a point or
+ * cell array "Scalars". The caller owns the result (refcount 1).
  */
 vtkPolyData* PolyDataFromMesh(const Mesh& mesh);
 

@@ -3,6 +3,8 @@
 // Plain data, no VTK, no GL; both backends take exactly this.
 #pragma once
 
+#include "shadinglab/render/ColorMap.h"
+
 #include "shadinglab/model/Shading.h"
 
 #include <cstdint>
@@ -28,6 +30,12 @@ struct Mesh
   std::vector<int64_t> offsets;   ///< polygon p uses connectivity[offsets[p] .. offsets[p+1])
   std::vector<int64_t> connectivity;
   std::vector<float> faceNormals; ///< 3 per polygon, or empty (then Newell normals)
+  /// Colour by data (with Scene::colorMap): one value per vertex, mapped
+  /// per pixel after interpolation (ParaView's Interpolate Scalars Before
+  /// Mapping), or one per polygon; at most one of the two. Replaces
+  /// `colors` and the material's diffuse colour.
+  std::vector<float> scalars;
+  std::vector<float> cellScalars;
 
   int64_t NumberOfPoints() const { return static_cast<int64_t>(points.size() / 3); }
   int64_t NumberOfPolygons() const
@@ -142,6 +150,9 @@ struct Scene
   Camera camera;
   Lighting<double> lighting;
   Material<double> material;
+  /// Maps the mesh's scalars or cellScalars to the diffuse colour rho;
+  /// nullptr: no colouring by data.
+  const ColorMap* colorMap = nullptr;
 };
 
 } // namespace shadinglab::render

@@ -34,6 +34,16 @@ struct NormalSettings
   bool recompute = false;     ///< replace the data's own normals too
 };
 
+/// Colour by data in the front ends that read files (the CLI): which array,
+/// through which of ParaView's colour maps, over which range. ParaView's
+/// own colouring controls do this for the representation.
+struct ColorBySettings
+{
+  std::string array;                    ///< "[POINTS:|CELLS:]NAME[:COMPONENT|Magnitude]"; "": none
+  std::string colormap = "cool-to-warm"; ///< ParaView's default preset
+  std::string range = "auto";           ///< "auto" (the data's) or "MIN,MAX"
+};
+
 /// Every setting of a surface's shading: one struct, passed whole.
 struct Settings
 {
@@ -46,6 +56,7 @@ struct Settings
   Material<double> material;
   std::string preset; ///< the preset `material` was started from ("" custom)
   NormalSettings normals;
+  ColorBySettings color;
 };
 
 enum class SettingGroup

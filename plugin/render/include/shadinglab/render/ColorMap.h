@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// Colour by data: a scalar per vertex or per polygon (render::Mesh) mapped
+// through one of ParaView's colour-map presets, as the ShadingLab Surface
+// representation maps it in ParaView. The tables are ParaView's own lookup
+// tables (256 discrete bins, 8-bit), extracted at build time by
+// plugin/render/tools/ExtractColorMaps.py.
+#pragma once
+
+#include "shadinglab/model/Vec3.h"
+
+#include <string>
+#include <vector>
+
+namespace shadinglab::render
+{
+
+/// A preset's 256 colours over [rangeMin, rangeMax]; below and above the
+/// range the end colours (ParaView's default), NaN the preset's NaN colour.
+/// The colour is the diffuse colour rho of the shading equation (eq. 1.1).
+struct ColorMap
+{
+  std::string label; ///< ParaView's name: "Cool to Warm"
+  std::vector<Vec3<float>> colors;
+  Vec3<float> nanColor{ 1, 1, 0 };
+  double rangeMin = 0, rangeMax = 1;
+
+  /// The bin of `s` (vtkLookupTable's indexing: floor((s - min) / (max -
+  /// min) * bins), clamped), or the NaN colour. A range of zero width maps
+  /// everything to the first bin.
+  Vec3<float> Map(double s) const;
+};
+
+/// The presets: ParaView's name and the command line's (kebab-case, e.g.
+/// "Viridis (matplotlib)" and "viridis"), in the order listed.
+struct ColorMapName
+{
+  std::string label;
+  std::string key;
+};
+const std::vector<ColorMapName>& ColorMapNames();
+
+/// The preset named `name` (label or key, any case) with range [0, 1];
+/// false when there is none.
+bool FindColorMap(const std::string& name, ColorMap& map);
+
+} // namespace shadinglab::render

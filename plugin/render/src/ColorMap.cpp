@@ -1,0 +1,73 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "shadinglab/render/ColorMap.h"
+
+#include "shadinglab_colormaps.h" // generated: generated::kColorMapTables
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+
+namespace shadinglab::render
+{
+
+namespace
+{
+std::string Lower(std::string s)
+{
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
+  return s;
+}
+} // namespace
+
+Vec3<float> ColorMap::Map(double s) const
+{
+  if (std::isnan(s) || this->colors.empty())
+  {
+    return this->nanColor;
+  }
+  const int bins = static_cast<int>(this->colors.size());
+  const double width = this->rangeMax - this->rangeMin;
+  const double t = width > 0 ? (s - this->rangeMin) / width : 0.0;
+  // Clamp in double first: a huge or infinite t does not fit an int.
+  const double bin = std::floor(std::clamp(t, 0.0, 1.0) * bins);
+  return this->colors[static_cast<size_t>(std::min(bins - 1, static_cast<int>(bin)))];
+}
+
+const std::vector<ColorMapName>& ColorMapNames()
+{
+  static const std::vector<ColorMapName> names = [] {
+    std::vector<ColorMapName> n;
+    for (const auto& table : generated::kColorMapTables)
+    {
+      n.push_back({ table.label, table.key });
+    }
+    return n;
+  }();
+  return names;
+}
+
+bool FindColorMap(const std::string& name, ColorMap& map)
+{
+  const std::string lower = Lower(name);
+  for (const auto& table : generated::kColorMapTables)
+  {
+    if (lower != Lower(table.label) && lower != table.key)
+    {
+      continue;
+    }
+    map = ColorMap();
+    map.label = table.label;
+    map.colors.resize(generated::kColorMapBins);
+    for (int b = 0; b < generated::kColorMapBins; ++b)
+    {
+      map.colors[b] = Vec3<float>(table.rgb[3 * b] / 255.0f, table.rgb[3 * b + 1] / 255.0f,
+        table.rgb[3 * b + 2] / 255.0f);
+    }
+    map.nanColor =
+      Vec3<float>(table.nan[0] / 255.0f, table.nan[1] / 255.0f, table.nan[2] / 255.0f);
+    return true;
+  }
+  return false;
+}
+
+} // namespace shadinglab::render

@@ -1,0 +1,167 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// shadinglab render --color-by / --colormap / --range: the picture shows the
+// map, the PNG carries a legend, and every misspelling is one line, exit 2.
+#include "CliTestUtil.h"
+
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPNGReader.h>
+#include <vtkPointData.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <string>
+
+using shadinglab::testing::CountLines;
+using shadinglab::testing::RunCli;
+
+namespace
+{
+/// A 20 x 20 height field z = x y as legacy VTK: point array "height"
+/// (one component), point vectors "flow" (three), cell array "patch".
+std::string WriteField()
+{
+  const std::string path = ::testing::TempDir() + "/shadinglab_field.vtk";
+  std::ofstream f(path);
+  const int n = 20;
+  f << "# vtk DataFile Version 3.0\nfield\nASCII\nDATASET POLYDATA\nPOINTS " << n * n << " float\n";
+  for (int j = 0; j < n; ++j)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      const double x = -1 + 2.0 * i / (n - 1), y = -1 + 2.0 * j / (n - 1);
+      f << x << " " << y << " " << 0.3 * x * y << "\n";
+    }
+  }
+  const int cells = (n - 1) * (n - 1);
+  f << "POLYGONS " << cells << " " << 5 * cells << "\n";
+  for (int j = 0; j + 1 < n; ++j)
+  {
+    for (int i = 0; i + 1 < n; ++i)
+    {
+      const int a = j * n + i;
+      f << "4 " << a << " " << a + 1 << " " << a + n + 1 << " " << a + n << "\n";
+    }
+  }
+  f << "POINT_DATA " << n * n << "\nSCALARS height float 1\nLOOKUP_TABLE default\n";
+  for (int j = 0; j < n; ++j)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      f << j << "\n";
+    }
+  }
+  f << "VECTORS flow float\n";
+  for (int k = 0; k < n * n; ++k)
+  {
+    f << "3 4 0\n";
+  }
+  f << "CELL_DATA " << cells << "\nSCALARS patch int 1\nLOOKUP_TABLE default\n";
+  for (int c = 0; c < cells; ++c)
+  {
+    f << (c % 2) << "\n";
+  }
+  return path;
+}
+
+struct Png
+{
+  int width = 0, height = 0;
+  vtkSmartPointer<vtkUnsignedCharArray> rgb;
+  const unsigned char* At(int x, int y) const // y from the top
+  {
+    return rgb->GetPointer(static_cast<vtkIdType>((height - 1 - y) * width + x) * rgb->GetNumberOfComponents());
+  }
+};
+
+Png ReadPng(const std::string& path)
+{
+  vtkNew<vtkPNGReader> reader;
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  Png png;
+  int dims[3];
+  reader->GetOutput()->GetDimensions(dims);
+  png.width = dims[0];
+  png.height = dims[1];
+  png.rgb = vtkUnsignedCharArray::SafeDownCast(reader->GetOutput()->GetPointData()->GetScalars());
+  return png;
+}
+} // namespace
+
+TEST(ColorByTest, ThePictureShowsTheMapAndTheLegendItsRange)
+{
+  const std::string field = WriteField();
+  const std::string out = ::testing::TempDir() + "/shadinglab_colored.png";
+  const auto r = RunCli("render " + field + " --backend cpu --size 400x300 --color-by height --out " + out);
+  ASSERT_EQ(r.status, 0) << r.err;
+  const Png png = ReadPng(out);
+  ASSERT_EQ(png.width, 400);
+  ASSERT_TRUE(png.rgb);
+  // Cool to Warm over rows 0..19 of the field: bluish and reddish pixels
+  // on the surface (the centre column, away from the legend).
+  int blue = 0, red = 0;
+  for (int y = 0; y < png.height; ++y)
+  {
+    const unsigned char* p = png.At(200, y);
+    blue += p[2] > p[0] + 40;
+    red += p[0] > p[2] + 40;
+  }
+  EXPECT_GT(blue, 10);
+  EXPECT_GT(red, 10);
+  // The legend's bar at the right edge: the map's ends, red above blue.
+  int top = -1, bottom = -1;
+  for (int y = 0; y < png.height; ++y)
+  {
+    for (int x = png.width - 100; x < png.width; ++x)
+    {
+      const unsigned char* p = png.At(x, y);
+      if (p[0] > 150 && p[2] < 60 && top < 0)
+      {
+        top = y;
+      }
+      if (p[2] > 150 && p[0] < 80)
+      {
+        bottom = y;
+      }
+    }
+  }
+  EXPECT_GE(top, 0);
+  EXPECT_GT(bottom, top + 50) << "the legend runs from the maximum (top) to the minimum";
+  // Cell data, a vector's magnitude and a component, another map and a
+  // fixed range render too.
+  for (const std::string extra : { "--color-by CELLS:patch", "--color-by flow", "--color-by flow:1",
+         "--color-by POINTS:height --colormap Viridis --range 0,5", "--color-by height --mode flat" })
+  {
+    const auto c = RunCli("render " + field + " --backend cpu --size 160x120 " + extra + " --out " + out);
+    EXPECT_EQ(c.status, 0) << extra << ": " << c.err;
+  }
+}
+
+TEST(ColorByTest, MisspellingsAreOneLineAndExitTwo)
+{
+  const std::string field = WriteField();
+  const std::string out = ::testing::TempDir() + "/shadinglab_colored_bad.png";
+  const struct
+  {
+    const char* flags;
+    const char* says;
+  } cases[] = {
+    { "--color-by pressure", "point arrays: height" },
+    { "--color-by CELLS:height", "no cell array 'height'" },
+    { "--color-by flow:3", "3 component(s)" },
+    { "--color-by height --range 5,1", "MIN < MAX" },
+    { "--color-by height --range nan,1", "--range" },
+    { "--color-by height --colormap nope", "colormap" },
+    { "--color-by POINTS:", "array name" },
+  };
+  for (const auto& c : cases)
+  {
+    const auto r = RunCli("render " + field + " --backend cpu --size 64x48 " + c.flags + " --out " + out);
+    EXPECT_EQ(r.status, 2) << c.flags;
+    EXPECT_EQ(CountLines(r.err), 1) << c.flags << ": " << r.err;
+    EXPECT_NE(r.err.find(c.says), std::string::npos) << c.flags << ": " << r.err;
+  }
+}

@@ -11,6 +11,8 @@
 #include <QGridLayout>
 #include <QTimer>
 
+#include <algorithm>
+#include <limits>
 #include <stdexcept>
 
 namespace shadinglab::widgets
@@ -125,7 +127,11 @@ bool ComparisonWidget::FitCamera()
   const double azimuth = this->Fit.azimuth, elevation = this->Fit.elevation;
   const double zoom = this->Fit.zoom;
   const bool parallel = this->Fit.parallel;
-  double bounds[6] = { 1, -1, 1, -1, 1, -1 };
+  // Empty bounds to start from (a start of [1, -1] would stretch the box of
+  // a mesh far from the origin back to it, and the mesh would sit small in
+  // a corner of the view).
+  constexpr double kHuge = std::numeric_limits<double>::max();
+  double bounds[6] = { kHuge, -kHuge, kHuge, -kHuge, kHuge, -kHuge };
   for (ShadingPanel* panel : this->Panels)
   {
     if (!panel->Spec().mesh)

@@ -2,6 +2,7 @@
 // The explorer under Xvfb (label gl): the shared camera, re-rendering only
 // what changed, every scene drawn, and the numbers its plots show against
 // the lecture's formulas.
+#include "AnalyticMeshes.h"
 #include "BrdfPlot.h"
 #include "ComparisonWidget.h"
 #include "MainWindow.h"
@@ -11,6 +12,8 @@
 #include "VtkCamera.h"
 
 #include <vtkCamera.h>
+#include <vtkTransform.h>
+#include <vtkTransformPolyDataFilter.h>
 #include <vtkMatrix4x4.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -124,6 +127,7 @@ private slots:
   void AutoPanelFollowsItsBudget();
   void OrientationDependsOnRotation();
   void LommelSeeligerOnGpuMatchesCpu();
+  void UserMeshIsFramedWhateverItsPlaceAndSize();
 };
 
 void ExplorerGLTest::CameraLinkMovesAllPanels()
@@ -644,6 +648,77 @@ int main(int argc, char** argv)
   QApplication app(argc, argv);
   ExplorerGLTest test;
   return QTest::qExec(&test, argc, argv);
+}
+
+
+void ExplorerGLTest::UserMeshIsFramedWhateverItsPlaceAndSize()
+{
+  // The user's mesh far from the origin, tiny and huge: each scene that
+  // shows it centres it, fills the panel as its own mesh does, and its
+  // profile line crosses it (the plots show data).
+  struct Placement
+  {
+    const char* what;
+    double scale, offset[3];
+  };
+  const Placement placements[] = { { "far from the origin", 1.0, { 1000, -500, 2000 } },
+    { "tiny", 1e-4, { 0.003, 0, 0 } }, { "huge", 1e4, { -3e4, 2e4, 0 } } };
+  for (const Placement& placement : placements)
+  {
+    vtkSmartPointer<vtkPolyData> torus;
+    torus.TakeReference(datasets::MakeTorus(1.0, 0.45, 48, 24));
+    vtkNew<vtkTransform> transform;
+    transform->Translate(placement.offset);
+    transform->Scale(placement.scale, placement.scale, placement.scale);
+    vtkNew<vtkTransformPolyDataFilter> move;
+    move->SetInputData(torus);
+    move->SetTransform(transform);
+    move->Update();
+    gui::SceneOptions options;
+    options.backend = render::Backend::CPU;
+    options.input = move->GetOutput();
+    for (const char* scene : { "modes", "moon" })
+    {
+      auto window = std::make_unique<gui::MainWindow>(options);
+      window->resize(1500, 950);
+      window->show();
+      Settle();
+      std::string error;
+      QVERIFY2(window->LoadScene(scene, error), error.c_str());
+      Settle();
+      window->RefreshNow();
+      widgets::ComparisonWidget* view = window->Comparison();
+      const render::Image image = view->Panel(0)->Snapshot();
+      int x0 = image.width, x1 = -1, y0 = image.height, y1 = -1;
+      for (int y = 0; y < image.height; ++y)
+      {
+        for (int x = 0; x < image.width; ++x)
+        {
+          if (image.covered[static_cast<size_t>(y) * image.width + x])
+          {
+            x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+          }
+        }
+      }
+      const QString where = QString("%1 in %2: covered x %3..%4, y %5..%6 of %7 x %8")
+                              .arg(placement.what).arg(scene).arg(x0).arg(x1).arg(y0).arg(y1)
+                              .arg(image.width).arg(image.height);
+      QVERIFY2(x1 > x0 && y1 > y0, qPrintable(where));
+      // Centred within a tenth of the panel, and filling at least half of
+      // its smaller side.
+      QVERIFY2(std::abs((x0 + x1) / 2.0 - image.width / 2.0) < 0.1 * image.width, qPrintable(where));
+      QVERIFY2(std::abs((y0 + y1) / 2.0 - image.height / 2.0) < 0.1 * image.height, qPrintable(where));
+      QVERIFY2(std::max(x1 - x0, y1 - y0) > 0.5 * std::min(image.width, image.height), qPrintable(where));
+      const widgets::Profile profile = view->Profiles()[0];
+      int covered = 0;
+      for (uint8_t c : profile.covered)
+      {
+        covered += c;
+      }
+      QVERIFY2(covered > static_cast<int>(profile.covered.size()) / 5,
+        qPrintable(where + QString(": the profile crosses %1 of %2 samples").arg(covered).arg(profile.covered.size())));
+    }
+  }
 }
 
 #include "ExplorerGLTest.moc"

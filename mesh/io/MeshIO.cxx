@@ -2,6 +2,7 @@
 #include "MeshIO.h"
 
 #include "MeshPrecheck.h"
+#include "CompositeIO.h"
 
 #include "Geometry.h"
 
@@ -29,6 +30,9 @@
 #include <vtkXMLPolyDataReader.h>
 #include <vtkXMLPolyDataWriter.h>
 #include <vtkXMLUnstructuredGridReader.h>
+#include <vtkXMLImageDataReader.h>
+#include <vtkXMLRectilinearGridReader.h>
+#include <vtkXMLStructuredGridReader.h>
 
 #include <algorithm>
 #include <cctype>
@@ -380,7 +384,73 @@ void ValidateMesh(vtkPolyData* mesh, const std::string& what)
   }
 }
 
+namespace
+{
+
+/// The outer surface of a data set (polydata as is), as ParaView's Surface
+/// representation shows it: higher-order cells (quadratic triangles and
+/// tetrahedra) tessellated once, ParaView's default Nonlinear Subdivision
+/// Level of 1.
+vtkSmartPointer<vtkPolyData> SurfaceOf(vtkDataSet* data)
+{
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  if (auto* poly = vtkPolyData::SafeDownCast(data))
+  {
+    mesh->ShallowCopy(poly);
+    return mesh;
+  }
+  vtkNew<vtkDataSetSurfaceFilter> surface;
+  surface->SetInputData(data);
+  surface->SetNonlinearSubdivisionLevel(1);
+  surface->Update();
+  mesh->ShallowCopy(surface->GetOutput());
+  return mesh;
+}
+
+/// A structured VTK XML file (.vts, .vtr, .vti), pre-checked like .vtp.
+vtkSmartPointer<vtkDataSet> ReadStructured(const std::string& path, const std::string& ext)
+{
+  vtkSmartPointer<vtkXMLReader> reader;
+  std::string type;
+  if (ext == "vts")
+  {
+    reader = vtkSmartPointer<vtkXMLStructuredGridReader>::New();
+    type = "StructuredGrid";
+  }
+  else if (ext == "vtr")
+  {
+    reader = vtkSmartPointer<vtkXMLRectilinearGridReader>::New();
+    type = "RectilinearGrid";
+  }
+  else
+  {
+    reader = vtkSmartPointer<vtkXMLImageDataReader>::New();
+    type = "ImageData";
+  }
+  if (!reader->CanReadFile(path.c_str()))
+  {
+    throw MeshError("cannot read '" + path + "': not a VTK XML " + type +
+      " file (malformed, truncated or another type)");
+  }
+  PrecheckXmlVtk(path, type);
+  reader->SetFileName(path.c_str());
+  reader->Update();
+  auto* data = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0));
+  if (reader->GetErrorCode() != 0 || !data)
+  {
+    throw MeshError("cannot read '" + path + "': malformed ." + ext + " file");
+  }
+  return data;
+}
+
+} // namespace
+
 vtkPolyData* ReadMesh(const std::string& path)
+{
+  return ReadMeshAt(path, 0);
+}
+
+vtkPolyData* ReadMeshAt(const std::string& path, int depth)
 {
   struct stat st;
   if (stat(path.c_str(), &st) != 0)
@@ -443,6 +513,14 @@ vtkPolyData* ReadMesh(const std::string& path)
   {
     mesh = ReadOff(path);
   }
+  else if (ext == "vtm" || ext == "pvd")
+  {
+    mesh = ReadListing(path, ext == "pvd", depth);
+  }
+  else if (ext == "vts" || ext == "vtr" || ext == "vti")
+  {
+    mesh = SurfaceOf(ReadStructured(path, ext));
+  }
   else if (ext == "vtk" || ext == "vtu")
   {
     vtkSmartPointer<vtkDataSet> data;
@@ -475,24 +553,12 @@ vtkPolyData* ReadMesh(const std::string& path)
       }
       data = reader->GetOutput();
     }
-    if (auto* poly = vtkPolyData::SafeDownCast(data))
-    {
-      mesh = vtkSmartPointer<vtkPolyData>::New();
-      mesh->ShallowCopy(poly);
-    }
-    else
-    {
-      auto surface = vtkSmartPointer<vtkDataSetSurfaceFilter>::New();
-      surface->SetInputData(data);
-      surface->Update();
-      mesh = vtkSmartPointer<vtkPolyData>::New();
-      mesh->ShallowCopy(surface->GetOutput());
-    }
+    mesh = SurfaceOf(data);
   }
   else
   {
     throw MeshError("cannot read '" + path +
-      "': unknown extension (expected .vtp .vtk .vtu .ply .obj .stl .off)");
+      "': unknown extension (expected .vtp .vtk .vtu .vts .vtr .vti .vtm .pvd .ply .obj .stl .off)");
   }
   if (!mesh)
   {

@@ -17,8 +17,10 @@ struct MeshError : std::runtime_error
 };
 
 /**
- * Reads INPUT by extension: .vtp, .vtk (legacy polydata or unstructured grid,
- * surface extracted), .vtu, .ply, .obj, .stl, .off. Triangle strips are
+ * Reads INPUT by extension: .vtp, .vtk (any legacy data set), .vtu, .vts,
+ * .vtr, .vti (the outer surface; higher-order cells tessellated as ParaView
+ * does), .vtm (every block) and .pvd (the first time step's parts),
+ * appended into one mesh, .ply, .obj, .stl, .off. Triangle strips are
  * converted to triangles; lines and vertices are dropped.
  * Throws MeshError when the file is missing, unreadable, malformed, empty (no
  * polygon), or has non-finite coordinates. The caller owns the result.

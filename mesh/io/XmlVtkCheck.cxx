@@ -29,6 +29,7 @@
 #include <cctype>
 #include <cerrno>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
@@ -199,10 +200,66 @@ private:
     }
   }
 
+  /// A structured piece's Extent="x0 x1 y0 y1 z0 z1": its point and cell
+  /// counts, each at most kMaxElementCount.
+  void ExtentCounts(const char* extent, long long& points, long long& cells) const
+  {
+    long long e[6];
+    const char* p = extent;
+    for (long long& v : e)
+    {
+      char* end = nullptr;
+      errno = 0;
+      v = std::strtoll(p, &end, 10);
+      if (end == p || errno != 0 || v < -kMaxElementCount || v > kMaxElementCount)
+      {
+        this->Fail(std::string("Piece Extent=\"") + extent + "\"");
+      }
+      p = end;
+    }
+    points = 1;
+    cells = 1;
+    for (int a = 0; a < 3; ++a)
+    {
+      const long long d = e[2 * a + 1] - e[2 * a];
+      if (d < 0 || points > kMaxElementCount / (d + 1))
+      {
+        this->Fail(std::string("Piece Extent=\"") + extent + "\"");
+      }
+      points *= d + 1;
+      cells *= std::max(d, 1LL);
+    }
+  }
+
   void Piece(vtkXMLDataElement* piece)
   {
-    const long long points = this->Attribute(piece, "NumberOfPoints", 0);
+    long long points = this->Attribute(piece, "NumberOfPoints", 0);
     long long cells = 0;
+    // Structured pieces (ImageData, RectilinearGrid, StructuredGrid) give
+    // an Extent instead of counts and cell sections.
+    if (const char* extent = piece->GetAttribute("Extent"))
+    {
+      long long structuredCells = 0;
+      this->ExtentCounts(extent, points, structuredCells);
+      cells = structuredCells;
+      if (vtkXMLDataElement* e = piece->FindNestedElementWithName("Coordinates"))
+      {
+        // RectilinearGrid: one array per axis, as long as the extent says.
+        long long e6[6] = {};
+        std::sscanf(extent, "%lld %lld %lld %lld %lld %lld", &e6[0], &e6[1], &e6[2], &e6[3],
+          &e6[4], &e6[5]);
+        int axis = 0;
+        for (int i = 0; i < e->GetNumberOfNestedElements() && axis < 3; ++i)
+        {
+          vtkXMLDataElement* array = e->GetNestedElement(i);
+          if (std::strcmp(array->GetName(), "DataArray") == 0)
+          {
+            this->Values(array, e6[2 * axis + 1] - e6[2 * axis] + 1, false, [](long long, long long) {});
+            ++axis;
+          }
+        }
+      }
+    }
     for (const char* section : { "Verts", "Lines", "Strips", "Polys", "Cells" })
     {
       const std::string count =
@@ -223,8 +280,9 @@ private:
     {
       this->Arrays(e, points, 3);
     }
-    else if (points > 0)
+    else if (points > 0 && (!piece->GetAttribute("Extent") || this->Type == "StructuredGrid"))
     {
+      // ImageData and RectilinearGrid pieces have implicit points.
       this->Fail("a piece with points but no <Points>");
     }
     if (vtkXMLDataElement* e = piece->FindNestedElementWithName("PointData"))

@@ -156,8 +156,40 @@ write('vtp_compression_blocks_huge.vtp', vtp_appended(struct.pack('<4I', 0x7ffff
                                                        b'x' * 30, ' compressor="vtkZLibDataCompressor"'))
 write('vtp_compressed_garbage.vtp', vtp_appended(struct.pack('<4I', 1, 32768, 36, 30), b'x' * 30,
                                                   ' compressor="vtkZLibDataCompressor"'))
+# Listing files (.vtm, .pvd): naming themselves, a missing block, nothing,
+# a bad block among good ones, a non-numeric time step, truncated XML.
+VTM = '<VTKFile type="vtkMultiBlockDataSet" version="1.0"><vtkMultiBlockDataSet>%s</vtkMultiBlockDataSet></VTKFile>\n'
+PVD = '<VTKFile type="Collection" version="0.1"><Collection>%s</Collection></VTKFile>\n'
+write('vtm_names_itself.vtm', VTM % '<DataSet index="0" file="vtm_names_itself.vtm"/>')
+write('vtm_missing_block.vtm', VTM % '<DataSet index="0" file="no_such_block.vtp"/>')
+write('vtm_no_blocks.vtm', VTM % '')
+write('vtm_bad_block.vtm', VTM % '<DataSet index="0" file="vtp_index_out_of_range.vtp"/>')
+write('vtm_truncated.vtm', (VTM % '<DataSet index="0" file="x.vtp"/>')[:60])
+write('vtm_block_is_directory.vtm', VTM % '<DataSet index="0" file="."/>')
+write('pvd_no_datasets.pvd', PVD % '')
+write('pvd_bad_timestep.pvd', PVD % '<DataSet timestep="later" file="x.vtp"/>')
+write('pvd_first_step_missing.pvd', PVD % '<DataSet timestep="0" file="gone.vtp"/>')
+write('pvd_wrong_type.pvd', VTM % '<DataSet index="0" file="x.vtp"/>')
+# Structured XML: a negative or overflowing extent, arrays shorter than it.
+IMG = ('<VTKFile type="ImageData" version="1.0"><ImageData WholeExtent="%s" Origin="0 0 0" '
+       'Spacing="1 1 1"><Piece Extent="%s"><PointData>%s</PointData></Piece></ImageData></VTKFile>\n')
+write('vti_negative_extent.vti', IMG % ('0 4 0 4 0 4', '0 4 4 0 0 4', ''))
+write('vti_huge_extent.vti', IMG % ('0 2000000000 0 2000000000 0 2000000000',
+                                    '0 2000000000 0 2000000000 0 2000000000', ''))
+write('vti_short_array.vti', IMG % ('0 2 0 2 0 2', '0 2 0 2 0 2',
+                                    '<DataArray type="Float32" Name="s" format="ascii">1 2 3</DataArray>'))
+write('vti_garbage_extent.vti', IMG % ('a b c', 'a b c d e f', ''))
+write('vts_no_points.vts', '<VTKFile type="StructuredGrid" version="1.0"><StructuredGrid WholeExtent="0 1 0 1 0 0">'
+      '<Piece Extent="0 1 0 1 0 0"></Piece></StructuredGrid></VTKFile>\n')
+write('vts_short_points.vts', '<VTKFile type="StructuredGrid" version="1.0"><StructuredGrid WholeExtent="0 1 0 1 0 0">'
+      '<Piece Extent="0 1 0 1 0 0"><Points><DataArray type="Float32" NumberOfComponents="3" format="ascii">'
+      '0 0 0 1 0 0</DataArray></Points></Piece></StructuredGrid></VTKFile>\n')
+write('vtr_short_coordinates.vtr', '<VTKFile type="RectilinearGrid" version="1.0"><RectilinearGrid WholeExtent="0 3 0 1 0 1">'
+      '<Piece Extent="0 3 0 1 0 1"><Coordinates><DataArray type="Float32" format="ascii">0 1</DataArray>'
+      '<DataArray type="Float32" format="ascii">0 1</DataArray><DataArray type="Float32" format="ascii">0 1</DataArray>'
+      '</Coordinates></Piece></RectilinearGrid></VTKFile>\n')
 # Random bytes with every extension.
 noise = bytes((i * 131 + 7) % 256 for i in range(512))
-for ext in ['obj', 'off', 'ply', 'vtk', 'stl', 'vtp', 'vtu']:
+for ext in ['obj', 'off', 'ply', 'vtk', 'stl', 'vtp', 'vtu', 'vtm', 'pvd', 'vts', 'vtr', 'vti']:
     write('random.' + ext, noise)
 print(len(os.listdir(out)), 'files in', out)

@@ -1,0 +1,194 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// ReadMesh on scientists' files: multiblock (.vtm, every block) and
+// collections (.pvd, the first time step), structured grids and images
+// (their outer surface), higher-order cells (tessellated as ParaView does),
+// and the listing files' own failure modes, each one line.
+#include "AnalyticMeshes.h"
+#include "MeshIO.h"
+
+#include <vtkCellArray.h>
+#include <vtkImageData.h>
+#include <vtkMultiBlockDataSet.h>
+#include <vtkNew.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkRectilinearGrid.h>
+#include <vtkSmartPointer.h>
+#include <vtkStructuredGrid.h>
+#include <vtkDoubleArray.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkXMLImageDataWriter.h>
+#include <vtkXMLMultiBlockDataWriter.h>
+#include <vtkXMLPolyDataWriter.h>
+#include <vtkXMLRectilinearGridWriter.h>
+#include <vtkXMLStructuredGridWriter.h>
+#include <vtkXMLUnstructuredGridWriter.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <string>
+
+namespace
+{
+std::string Temp(const std::string& name)
+{
+  return ::testing::TempDir() + "/shadinglab_formats_" + name;
+}
+
+vtkSmartPointer<vtkPolyData> Read(const std::string& path)
+{
+  vtkSmartPointer<vtkPolyData> mesh;
+  mesh.TakeReference(shadinglab::ReadMesh(path));
+  return mesh;
+}
+
+std::string ErrorOf(const std::string& path)
+{
+  try
+  {
+    Read(path);
+  }
+  catch (const shadinglab::MeshError& e)
+  {
+    return e.what();
+  }
+  return {};
+}
+
+template <typename Writer>
+void Write(vtkDataObject* data, const std::string& path)
+{
+  vtkNew<Writer> writer;
+  writer->SetInputData(data);
+  writer->SetFileName(path.c_str());
+  ASSERT_EQ(writer->Write(), 1) << path;
+}
+} // namespace
+
+TEST(ScientificFormatsTest, MultiblockReadsEveryBlock)
+{
+  vtkSmartPointer<vtkPolyData> sphere, torus;
+  sphere.TakeReference(shadinglab::datasets::MakeUVSphere(16, 8));
+  torus.TakeReference(shadinglab::datasets::MakeTorus(1.0, 0.3, 12, 6));
+  vtkNew<vtkMultiBlockDataSet> inner;
+  inner->SetBlock(0, torus);
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  blocks->SetBlock(0, sphere);
+  blocks->SetBlock(1, inner); // nested blocks too
+  const std::string path = Temp("blocks.vtm");
+  Write<vtkXMLMultiBlockDataWriter>(blocks, path);
+  const auto mesh = Read(path);
+  EXPECT_EQ(mesh->GetNumberOfPolys(), sphere->GetNumberOfPolys() + torus->GetNumberOfPolys());
+}
+
+TEST(ScientificFormatsTest, CollectionReadsItsFirstTimeStep)
+{
+  vtkSmartPointer<vtkPolyData> sphere, torus;
+  sphere.TakeReference(shadinglab::datasets::MakeUVSphere(16, 8));
+  torus.TakeReference(shadinglab::datasets::MakeTorus(1.0, 0.3, 12, 6));
+  Write<vtkXMLPolyDataWriter>(sphere, Temp("t1.vtp"));
+  Write<vtkXMLPolyDataWriter>(torus, Temp("t0.vtp"));
+  const std::string path = Temp("series.pvd");
+  std::ofstream(path) << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n"
+                         "<Collection>\n"
+                         "<DataSet timestep=\"2.5\" part=\"0\" file=\"shadinglab_formats_t1.vtp\"/>\n"
+                         "<DataSet timestep=\"0.5\" part=\"0\" file=\"shadinglab_formats_t0.vtp\"/>\n"
+                         "</Collection>\n</VTKFile>\n";
+  EXPECT_EQ(Read(path)->GetNumberOfPolys(), torus->GetNumberOfPolys());
+}
+
+TEST(ScientificFormatsTest, StructuredGridsAndImagesGiveTheirOuterSurface)
+{
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(3, 4, 5);
+  Write<vtkXMLImageDataWriter>(image, Temp("box.vti"));
+  // A 3 x 4 x 5 point box: 2x3 + 2x4 + 3x4 quads on opposite faces.
+  EXPECT_EQ(Read(Temp("box.vti"))->GetNumberOfPolys(), 2 * (2 * 3 + 2 * 4 + 3 * 4));
+  vtkNew<vtkRectilinearGrid> rect;
+  rect->SetDimensions(3, 4, 5);
+  vtkNew<vtkDoubleArray> x, y, z;
+  for (int i = 0; i < 5; ++i)
+  {
+    (i < 3 ? x->InsertNextValue(i * i) : 0);
+    (i < 4 ? y->InsertNextValue(0.5 * i) : 0);
+    z->InsertNextValue(std::sqrt(i));
+  }
+  rect->SetXCoordinates(x);
+  rect->SetYCoordinates(y);
+  rect->SetZCoordinates(z);
+  Write<vtkXMLRectilinearGridWriter>(rect, Temp("rect.vtr"));
+  EXPECT_EQ(Read(Temp("rect.vtr"))->GetNumberOfPolys(), 2 * (2 * 3 + 2 * 4 + 3 * 4));
+  vtkNew<vtkStructuredGrid> grid;
+  grid->SetDimensions(4, 4, 1); // a curved sheet
+  vtkNew<vtkPoints> points;
+  for (int j = 0; j < 4; ++j)
+  {
+    for (int i = 0; i < 4; ++i)
+    {
+      points->InsertNextPoint(i, j, 0.1 * i * j);
+    }
+  }
+  grid->SetPoints(points);
+  Write<vtkXMLStructuredGridWriter>(grid, Temp("sheet.vts"));
+  EXPECT_EQ(Read(Temp("sheet.vts"))->GetNumberOfPolys(), 9);
+}
+
+TEST(ScientificFormatsTest, QuadraticCellsAreTessellatedAsParaViewDoes)
+{
+  // One quadratic triangle (corner points, then edge midpoints lifted out of
+  // the plane): ParaView's level-1 subdivision draws it as 4 triangles.
+  vtkNew<vtkPoints> points;
+  const double p[6][3] = { { 0, 0, 0 }, { 2, 0, 0 }, { 0, 2, 0 }, { 1, 0, 0.3 }, { 1, 1, 0.3 },
+    { 0, 1, 0.3 } };
+  for (const auto& q : p)
+  {
+    points->InsertNextPoint(q);
+  }
+  vtkNew<vtkUnstructuredGrid> grid;
+  grid->SetPoints(points);
+  const vtkIdType ids[6] = { 0, 1, 2, 3, 4, 5 };
+  grid->InsertNextCell(VTK_QUADRATIC_TRIANGLE, 6, ids);
+  Write<vtkXMLUnstructuredGridWriter>(grid, Temp("quadratic.vtu"));
+  const auto mesh = Read(Temp("quadratic.vtu"));
+  EXPECT_GE(mesh->GetNumberOfPolys(), 4);
+  double bounds[6];
+  mesh->GetBounds(bounds);
+  EXPECT_NEAR(bounds[5], 0.3, 1e-6) << "the curved edges are kept"; // float points
+}
+
+TEST(ScientificFormatsTest, ListingFilesFailInOneLine)
+{
+  const std::string self = Temp("self.vtm");
+  std::ofstream(self) << "<VTKFile type=\"vtkMultiBlockDataSet\" version=\"1.0\"><vtkMultiBlockDataSet>"
+                         "<DataSet index=\"0\" file=\"shadinglab_formats_self.vtm\"/>"
+                         "</vtkMultiBlockDataSet></VTKFile>\n";
+  const std::string missing = Temp("missing.vtm");
+  std::ofstream(missing) << "<VTKFile type=\"vtkMultiBlockDataSet\" version=\"1.0\"><vtkMultiBlockDataSet>"
+                            "<DataSet index=\"0\" file=\"nowhere.vtp\"/>"
+                            "</vtkMultiBlockDataSet></VTKFile>\n";
+  const std::string none = Temp("none.pvd");
+  std::ofstream(none) << "<VTKFile type=\"Collection\"><Collection></Collection></VTKFile>\n";
+  const std::string truncated = Temp("truncated.vtm");
+  std::ofstream(truncated) << "<VTKFile type=\"vtkMultiBlockDataSet\" version=\"1.0\"><vtkMulti";
+  const std::string badStep = Temp("badstep.pvd");
+  std::ofstream(badStep) << "<VTKFile type=\"Collection\"><Collection>"
+                            "<DataSet timestep=\"soon\" file=\"x.vtp\"/></Collection></VTKFile>\n";
+  const std::string badExtent = Temp("extent.vti");
+  std::ofstream(badExtent) << "<VTKFile type=\"ImageData\" version=\"1.0\"><ImageData WholeExtent=\"0 9 0 9 0 9\">"
+                              "<Piece Extent=\"0 9 0 -9 0 9\"></Piece></ImageData></VTKFile>\n";
+  const struct
+  {
+    std::string path;
+    const char* says;
+  } cases[] = { { self, "nested more than" }, { missing, "block 'nowhere.vtp'" },
+    { none, "lists no data set" }, { truncated, "not a VTKFile" }, { badStep, "timestep" },
+    { badExtent, "Extent" } };
+  for (const auto& c : cases)
+  {
+    const std::string err = ErrorOf(c.path);
+    EXPECT_NE(err.find(c.says), std::string::npos) << c.path << ": " << err;
+    EXPECT_EQ(err.find('\n'), std::string::npos) << err;
+  }
+}

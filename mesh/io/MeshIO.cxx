@@ -7,7 +7,12 @@
 #include "Geometry.h"
 
 #include <vtkCellArray.h>
+#include <vtkCellTypes.h>
+#include <vtkCellData.h>
+#include <vtkGenericCell.h>
+#include <vtkIdList.h>
 #include <vtkDataSetSurfaceFilter.h>
+#include <vtkStaticCleanPolyData.h>
 #include <vtkIdList.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkPointData.h>
@@ -38,6 +43,7 @@
 #include <cctype>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <sys/stat.h>
 #include <vector>
@@ -387,6 +393,87 @@ void ValidateMesh(vtkPolyData* mesh, const std::string& what)
 namespace
 {
 
+/// The corner point ids of a face, sorted: a key that a linear and a
+/// quadratic face over the same corners share (VTK lists corners first).
+std::vector<vtkIdType> CornerKey(vtkCell* face)
+{
+  const int corners = face->GetNumberOfEdges(); // a polygon has as many corners as edges
+  std::vector<vtkIdType> key;
+  for (int k = 0; k < corners && k < face->GetNumberOfPoints(); ++k)
+  {
+    key.push_back(face->GetPointId(k));
+  }
+  std::sort(key.begin(), key.end());
+  return key;
+}
+
+/// A volume mesh as FE codes and gmsh write it also lists its boundary as
+/// 2D cells: dropped here where they cover a boundary face of the 3D cells
+/// (both would be drawn, coincident, as z-fighting facets); 2D cells
+/// elsewhere (shells) are kept, 1D and 0D cells are not drawn anyway.
+vtkSmartPointer<vtkDataSet> WithoutBoundaryCopies(vtkDataSet* data)
+{
+  auto* grid = vtkUnstructuredGrid::SafeDownCast(data);
+  if (!grid)
+  {
+    return data;
+  }
+  std::map<std::vector<vtkIdType>, int> faces; // corner key -> 3D cells sharing it
+  bool anyVolume = false, anySurface = false;
+  vtkNew<vtkGenericCell> cell;
+  for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
+  {
+    const int dimension = vtkCellTypes::GetDimension(static_cast<unsigned char>(grid->GetCellType(c)));
+    anySurface |= dimension == 2;
+    if (dimension != 3)
+    {
+      continue;
+    }
+    anyVolume = true;
+    grid->GetCell(c, cell);
+    for (int f = 0; f < cell->GetNumberOfFaces(); ++f)
+    {
+      ++faces[CornerKey(cell->GetFace(f))];
+    }
+  }
+  if (!anyVolume || !anySurface)
+  {
+    return data;
+  }
+  vtkNew<vtkIdList> kept;
+  for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
+  {
+    const int dimension = vtkCellTypes::GetDimension(static_cast<unsigned char>(grid->GetCellType(c)));
+    if (dimension == 2)
+    {
+      grid->GetCell(c, cell);
+      const auto it = faces.find(CornerKey(cell));
+      if (it != faces.end() && it->second == 1)
+      {
+        continue; // a copy of a boundary face
+      }
+    }
+    if (dimension >= 2)
+    {
+      kept->InsertNextId(c);
+    }
+  }
+  auto out = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  out->SetPoints(grid->GetPoints());
+  out->GetPointData()->PassData(grid->GetPointData());
+  out->GetCellData()->CopyAllocate(grid->GetCellData(), kept->GetNumberOfIds());
+  out->Allocate(kept->GetNumberOfIds());
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType k = 0; k < kept->GetNumberOfIds(); ++k)
+  {
+    const vtkIdType c = kept->GetId(k);
+    grid->GetCellPoints(c, ids);
+    const vtkIdType n = out->InsertNextCell(grid->GetCellType(c), ids);
+    out->GetCellData()->CopyData(grid->GetCellData(), c, n);
+  }
+  return out;
+}
+
 /// The outer surface of a data set (polydata as is), as ParaView's Surface
 /// representation shows it: higher-order cells (quadratic triangles and
 /// tetrahedra) tessellated once, ParaView's default Nonlinear Subdivision
@@ -400,10 +487,29 @@ vtkSmartPointer<vtkPolyData> SurfaceOf(vtkDataSet* data)
     return mesh;
   }
   vtkNew<vtkDataSetSurfaceFilter> surface;
-  surface->SetInputData(data);
+  surface->SetInputData(WithoutBoundaryCopies(data));
   surface->SetNonlinearSubdivisionLevel(1);
   surface->Update();
   mesh->ShallowCopy(surface->GetOutput());
+  // The subdivision gives each higher-order face its own points: merge the
+  // coincident ones, so vertex normals and orientation see the surface
+  // whole (and smooth shading does not show every original face).
+  bool nonlinear = false;
+  for (vtkIdType c = 0; c < data->GetNumberOfCells() && !nonlinear; ++c)
+  {
+    nonlinear = !vtkCellTypes::IsLinear(data->GetCellType(c));
+  }
+  if (nonlinear)
+  {
+    vtkNew<vtkStaticCleanPolyData> merge;
+    merge->SetInputData(mesh);
+    merge->SetTolerance(0.0);
+    merge->ConvertLinesToPointsOff();
+    merge->ConvertPolysToLinesOff();
+    merge->ConvertStripsToPolysOff();
+    merge->Update();
+    mesh->ShallowCopy(merge->GetOutput());
+  }
   return mesh;
 }
 

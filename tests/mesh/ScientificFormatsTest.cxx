@@ -26,6 +26,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <string>
@@ -191,4 +192,39 @@ TEST(ScientificFormatsTest, ListingFilesFailInOneLine)
     EXPECT_NE(err.find(c.says), std::string::npos) << c.path << ": " << err;
     EXPECT_EQ(err.find('\n'), std::string::npos) << err;
   }
+}
+
+TEST(ScientificFormatsTest, BoundaryCopiesOfAVolumeMeshAreDrawnOnce)
+{
+  // One quadratic tetrahedron (corners, then edge midpoints in VTK's order),
+  // its face 0-1-3 also listed as a quadratic triangle (as gmsh and FE codes
+  // write boundaries), and a shell triangle away from it, which stays.
+  vtkNew<vtkPoints> points;
+  const double c[4][3] = { { 0, 0, 0 }, { 1, 0, 0 }, { 0, 1, 0 }, { 0, 0, 1 } };
+  for (const auto& p : c)
+  {
+    points->InsertNextPoint(p);
+  }
+  const int edges[6][2] = { { 0, 1 }, { 1, 2 }, { 2, 0 }, { 0, 3 }, { 1, 3 }, { 2, 3 } };
+  for (const auto& e : edges)
+  {
+    points->InsertNextPoint(0.5 * (c[e[0]][0] + c[e[1]][0]), 0.5 * (c[e[0]][1] + c[e[1]][1]),
+      0.5 * (c[e[0]][2] + c[e[1]][2]));
+  }
+  for (const auto& p : { std::array<double, 3>{ 3, 0, 0 }, { 4, 0, 0 }, { 3, 1, 0 }, { 3.5, 0, 0 },
+         { 3.5, 0.5, 0 }, { 3, 0.5, 0 } })
+  {
+    points->InsertNextPoint(p.data());
+  }
+  vtkNew<vtkUnstructuredGrid> grid;
+  grid->SetPoints(points);
+  const vtkIdType tet[10] = { 0, 1, 2, 3, 4, 5, 6, 7, 8, 9 };
+  grid->InsertNextCell(VTK_QUADRATIC_TETRA, 10, tet);
+  const vtkIdType face[6] = { 0, 1, 3, 4, 8, 7 }; // corners 0 1 3, mids 01 13 30
+  grid->InsertNextCell(VTK_QUADRATIC_TRIANGLE, 6, face);
+  const vtkIdType shell[6] = { 10, 11, 12, 13, 14, 15 };
+  grid->InsertNextCell(VTK_QUADRATIC_TRIANGLE, 6, shell);
+  Write<vtkXMLUnstructuredGridWriter>(grid, Temp("volume_with_boundary.vtu"));
+  // 4 tetrahedron faces + the shell, each tessellated into 4 triangles.
+  EXPECT_EQ(Read(Temp("volume_with_boundary.vtu"))->GetNumberOfPolys(), 5 * 4);
 }

@@ -3,6 +3,7 @@
 
 #include "ShadingPanel.h"
 
+#include "PolyDataMesh.h"
 #include "VtkCamera.h"
 
 #include <vtkCamera.h>
@@ -180,6 +181,44 @@ void ComparisonWidget::SetLightIntensity(double intensity)
 {
   this->State.lightIntensity = intensity;
   this->RenderAll();
+}
+
+std::string ComparisonWidget::SetColorBy(const std::string& colorBy, const std::string& mapName)
+{
+  render::ColorMap map;
+  if (!render::FindColorMap(mapName, map))
+  {
+    return "unknown colour map '" + mapName + "'";
+  }
+  if (!colorBy.empty())
+  {
+    render::ScalarField field;
+    std::string error = render::ParseScalarField(colorBy, field);
+    if (error.empty() && (this->Panels.empty() || !this->Panels[0]->Spec().mesh))
+    {
+      error = "no mesh to colour";
+    }
+    if (!error.empty())
+    {
+      return error;
+    }
+    double range[2];
+    render::WorldFrame frame;
+    try
+    {
+      render::MeshFromPolyData(this->Panels[0]->Spec().mesh, frame, field, range);
+    }
+    catch (const std::invalid_argument& e)
+    {
+      return e.what();
+    }
+    map.rangeMin = range[0];
+    map.rangeMax = range[1];
+  }
+  this->State.colorBy = colorBy;
+  this->State.colorMap = map;
+  this->RenderAll();
+  return {};
 }
 
 void ComparisonWidget::RenderAll()

@@ -51,6 +51,13 @@ public:
   void SetLight(double azimuth, double elevation);
   /// The light's intensity I_L (the light-intensity setting); redraws all.
   void SetLightIntensity(double intensity);
+  /**
+   * Colours every panel by the array `colorBy` ([POINTS:|CELLS:]NAME[:C],
+   * "" for none) through the colour map `map`, over the array's range on
+   * the first panel's mesh. Returns "" or a one-line error (and changes
+   * nothing).
+   */
+  std::string SetColorBy(const std::string& colorBy, const std::string& map);
   void SetProfileTool(bool on) { this->State.profileTool = on; }
 
   void RenderAll();

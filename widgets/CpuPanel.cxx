@@ -98,13 +98,32 @@ private:
   QPoint LastPos;
 };
 
-const render::Mesh& CpuMeshCache::Get(vtkPolyData* polydata)
+const render::Mesh& CpuMeshCache::Get(vtkPolyData* polydata, const std::string& colorBy)
 {
-  if (this->Source != polydata || this->Time != polydata->GetMTime())
+  if (this->Source != polydata || this->Time != polydata->GetMTime() || this->ColorBy != colorBy)
   {
-    this->Mesh = render::MeshFromPolyData(polydata, this->Frame);
+    render::ScalarField field;
+    double range[2];
+    bool colored = false;
+    if (!colorBy.empty() && render::ParseScalarField(colorBy, field).empty())
+    {
+      try
+      {
+        this->Mesh = render::MeshFromPolyData(polydata, this->Frame, field, range);
+        colored = true;
+      }
+      catch (const std::invalid_argument&)
+      {
+        // This panel's mesh lacks the array: drawn in its material's colour.
+      }
+    }
+    if (!colored)
+    {
+      this->Mesh = render::MeshFromPolyData(polydata, this->Frame);
+    }
     this->Source = polydata;
     this->Time = polydata->GetMTime();
+    this->ColorBy = colorBy;
   }
   return this->Mesh;
 }
@@ -113,7 +132,9 @@ const render::Image& RenderOnCpu(cpu::SoftwareRenderer& renderer, CpuMeshCache& 
   const PanelSpec& spec, const ViewState& view, int width, int height, render::RenderStats* stats)
 {
   render::Scene scene;
-  scene.mesh = &cache.Get(spec.mesh);
+  scene.mesh = &cache.Get(spec.mesh, view.colorBy);
+  const bool scalars = !scene.mesh->scalars.empty() || !scene.mesh->cellScalars.empty();
+  scene.colorMap = scalars ? &view.colorMap : nullptr;
   scene.material = spec.material;
   scene.camera = render::CameraFromVtk(view.camera);
   scene.lighting = ViewLighting(view, scene.camera);

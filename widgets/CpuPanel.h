@@ -29,7 +29,9 @@ struct CpuMeshCache
   render::WorldFrame Frame;
   const void* Source = nullptr; ///< the vtkPolyData Mesh was made from
   unsigned long Time = 0;       ///< and its modification time then
-  const render::Mesh& Get(vtkPolyData* polydata);
+  std::string ColorBy;          ///< and the array its scalars were taken from
+  /// The mesh with the scalars of `colorBy` when it has that array.
+  const render::Mesh& Get(vtkPolyData* polydata, const std::string& colorBy = {});
 };
 
 /**

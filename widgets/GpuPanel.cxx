@@ -2,6 +2,7 @@
 #include "GpuPanel.h"
 
 #include "shadinglab/render/Display.h"
+#include "PolyDataMesh.h"
 
 #include "ViewInteraction.h"
 
@@ -10,6 +11,9 @@
 #include "vtkShadingLabPolyDataMapper.h"
 
 #include <QVTKOpenGLNativeWidget.h>
+#include <vtkCellData.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
 #include <vtkActor.h>
 #include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
@@ -69,6 +73,34 @@ void GpuPanel::Configure()
 void GpuPanel::OnSpecChanged()
 {
   this->Configure();
+  this->Coloring.clear(); // Configure set direct colours again
+  this->ConfigureColors();
+}
+
+void GpuPanel::ConfigureColors()
+{
+  const ViewState& view = *this->View;
+  const std::string key = view.colorBy + "|" + view.colorMap.label + "|" +
+    std::to_string(view.colorMap.rangeMin) + "|" + std::to_string(view.colorMap.rangeMax);
+  if (key == this->Coloring)
+  {
+    return;
+  }
+  this->Coloring = key;
+  render::ScalarField field;
+  vtkPolyData* mesh = this->SpecValue.mesh;
+  if (view.colorBy.empty() || !mesh || !render::ParseScalarField(view.colorBy, field).empty())
+  {
+    gl::ConfigureColoring(nullptr, {}, false, -1, this->Mapper);
+    return;
+  }
+  // Point data first, as the CPU panels (and ParaView) look a name up.
+  using A = render::ScalarField::Association;
+  const bool points = field.association != A::Cells && mesh->GetPointData()->GetArray(field.name.c_str());
+  const bool cells = !points && field.association != A::Points &&
+    mesh->GetCellData()->GetArray(field.name.c_str());
+  gl::ConfigureColoring(points || cells ? &view.colorMap : nullptr, field.name, cells,
+    field.component, this->Mapper);
 }
 
 void GpuPanel::OnProfileLineChanged()
@@ -96,6 +128,7 @@ void GpuPanel::OnRenderEnd(vtkObject*, unsigned long event, void*)
       settings.render.display = this->View->display;
       this->Mapper->SetSettings(settings);
     }
+    this->ConfigureColors();
     // The shader writes display values: the background is given as one.
     const Vec3<float> background = render::ApplyDisplay(this->View->display, this->View->background);
     this->Renderer->SetBackground(background.x, background.y, background.z);

@@ -38,6 +38,8 @@ protected:
   void OnProfileLineChanged() override;
 
 private:
+  /// The view's colour by data on the mapper, when it changed.
+  void ConfigureColors();
   void Configure();
   void OnInteraction(vtkObject*, unsigned long, void*);
   void OnRenderEnd(vtkObject*, unsigned long, void*);
@@ -49,6 +51,8 @@ private:
   vtkNew<vtkActor> Actor;
   vtkNew<vtkShadingLabPolyDataMapper> Mapper;
   double StartTime = 0;
+  /// The colouring the mapper was set up for (colour by, map, range).
+  std::string Coloring;
 };
 
 } // namespace shadinglab::widgets

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "shadinglab/model/Shading.h"
+#include "shadinglab/render/ColorMap.h"
 #include "shadinglab/render/Options.h"
 #include "shadinglab/render/Renderer.h"
 
@@ -56,6 +57,10 @@ struct ViewState
   /// Linear intensity to pixel, as the settings table's default (every
   /// panel, both backends; profiles and error maps read display values).
   render::DisplayTransform display = render::RenderOptions().display;
+  /// Colour by data, every panel: the array as --color-by spells it ("":
+  /// the material's colour) and the map over the array's range.
+  std::string colorBy;
+  render::ColorMap colorMap;
   /// Left-drag draws the profile line instead of rotating.
   bool profileTool = false;
 };

@@ -58,6 +58,13 @@ QComboBox* MakeSettingComboBox(const char* key, QWidget* parent)
   {
     combo->setCurrentIndex(static_cast<int>(def.numbers[0]));
   }
+  for (size_t i = 0; def.numbers.empty() && i < row.choices.size(); ++i)
+  {
+    if (row.choices[i].key == def.text) // a Text row's default
+    {
+      combo->setCurrentIndex(static_cast<int>(i));
+    }
+  }
   combo->setToolTip(SettingToolTip(key));
   combo->setObjectName(QString::fromStdString(row.key));
   return combo;

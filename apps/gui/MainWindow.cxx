@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "MainWindow.h"
 
+#include "ColorLegend.h"
+
 #include "BrdfPlot.h"
 #include "ComparisonWidget.h"
 #include "MaterialEditor.h"
@@ -11,6 +13,9 @@
 #include "MeshIO.h"
 #include "shadinglab/model/Materials.h"
 
+#include <cstring>
+#include <vtkCellData.h>
+#include <vtkPointData.h>
 #include <vtkPolyData.h>
 
 #include <QAction>
@@ -208,6 +213,7 @@ bool MainWindow::LoadScene(const std::string& name, std::string& error)
   this->View->View().lightElevation = scene.lightElevation;
   this->View->View().lightIntensity = scene.lightIntensity;
   this->View->View().display = scene.display;
+  this->ListArrays();
   this->LightAzimuth->setValue(static_cast<int>(scene.lightAzimuth));
   this->LightElevation->setValue(static_cast<int>(scene.lightElevation));
   this->LightIntensity->setValue(scene.lightIntensity);
@@ -504,6 +510,64 @@ void MainWindow::dropEvent(QDropEvent* event)
   {
     QMessageBox::warning(this, "ShadingLab", QString::fromStdString(error));
   }
+}
+
+void MainWindow::ListArrays()
+{
+  const QString kept = this->ColorBy->currentData().toString();
+  this->ColorBy->clear();
+  this->ColorBy->addItem("None (the material's colour)", QString());
+  vtkPolyData* mesh =
+    this->View->PanelCount() > 0 ? this->View->Panel(0)->Spec().mesh.GetPointer() : nullptr;
+  // The arrays a scientist colours by: not the normals or ids the
+  // preparation added.
+  auto listed = [](const char* name) {
+    return name && std::strcmp(name, "Normals") != 0 && std::strcmp(name, "ExactNormal") != 0 &&
+      std::strcmp(name, "OriginalPointIds") != 0 && std::strcmp(name, "vtkOriginalPointIds") != 0;
+  };
+  for (int a = 0; mesh && a < mesh->GetPointData()->GetNumberOfArrays(); ++a)
+  {
+    if (const char* name = mesh->GetPointData()->GetArrayName(a); listed(name))
+    {
+      this->ColorBy->addItem(name, QString("POINTS:") + name);
+    }
+  }
+  for (int a = 0; mesh && a < mesh->GetCellData()->GetNumberOfArrays(); ++a)
+  {
+    if (const char* name = mesh->GetCellData()->GetArrayName(a); listed(name))
+    {
+      this->ColorBy->addItem(QString("%1 (cells)").arg(name), QString("CELLS:") + name);
+    }
+  }
+  const int again = this->ColorBy->findData(kept);
+  this->ColorBy->setCurrentIndex(std::max(0, again));
+  this->ApplyColorBy();
+}
+
+std::string MainWindow::ApplyColorBy(const std::string& colorBy)
+{
+  if (!colorBy.empty())
+  {
+    const int index = this->ColorBy->findData(QString::fromStdString(colorBy));
+    if (index < 0)
+    {
+      const std::string error = "no array '" + colorBy + "' in this scene's mesh";
+      this->statusBar()->showMessage(QString::fromStdString(error));
+      return error;
+    }
+    this->ColorBy->setCurrentIndex(index);
+  }
+  const std::string spec = this->ColorBy->currentData().toString().toStdString();
+  const std::string map = this->ColorMapChoice->currentText().toStdString();
+  const std::string error = this->View->SetColorBy(spec, map);
+  if (!error.empty())
+  {
+    this->statusBar()->showMessage(QString::fromStdString(error));
+    return error;
+  }
+  const widgets::ViewState& view = this->View->View();
+  this->Legend->SetMap(spec.empty() ? nullptr : &view.colorMap, this->ColorBy->currentText().toStdString());
+  return {};
 }
 
 } // namespace shadinglab::gui

@@ -23,6 +23,7 @@ class vtkPolyData;
 
 namespace shadinglab::widgets
 {
+class ColorLegend;
 class BrdfPlot;
 class ComparisonWidget;
 class MaterialEditor;
@@ -47,6 +48,10 @@ public:
   bool OpenMesh(const std::string& path, std::string& error);
   /// Renders every panel and recomputes the plot now (not deferred).
   void RefreshNow();
+  /// Colours every panel by the Array box's array through the Colour map
+  /// box's map (or by `colorBy` when given, as the box spells it); "" or a
+  /// one-line error (also shown in the status bar).
+  std::string ApplyColorBy(const std::string& colorBy = {});
 
   widgets::ComparisonWidget* Comparison() const { return this->View; }
   widgets::ProfilePlot* Profile() const { return this->ProfileChart; }
@@ -64,6 +69,8 @@ private:
   QWidget* BuildControls();
   void BuildMenus();
   void OnPanelSelected(int index);
+  /// The arrays of the scene's first mesh into the Array box.
+  void ListArrays();
   void OnPanelEdited();
   void UpdatePlot();
   void UpdateBrdfPlot();
@@ -101,6 +108,9 @@ private:
   QCheckBox* Perceived;
   QSlider* Rotation;
   QComboBox* Variant;
+  QComboBox* ColorBy;        ///< "None", the point arrays, then CELLS:name
+  QComboBox* ColorMapChoice; ///< the colormap setting's choices
+  widgets::ColorLegend* Legend;
   QSlider* ThetaL;
   QSlider* Shininess;
   QSlider* Roughness;

@@ -7,6 +7,7 @@
 #include "BrdfPlot.h"
 #include "ComparisonWidget.h"
 #include "MaterialEditor.h"
+#include "ColorLegend.h"
 #include "ProfilePlot.h"
 #include "SettingControls.h"
 
@@ -62,6 +63,22 @@ QWidget* MainWindow::BuildControls()
   this->Interpolation = widgets::MakeSettingComboBox("interp");
   panelForm->addRow("Interpolation", this->Interpolation);
   layout->addWidget(panelBox);
+
+  // Colour by data (every panel): the mesh's arrays, ParaView's colour maps.
+  auto* colorBox = new QGroupBox("Colour by data (all panels)");
+  auto* colorForm = new QFormLayout(colorBox);
+  this->ColorBy = new QComboBox;
+  this->ColorBy->setToolTip(widgets::SettingToolTip("color-by"));
+  colorForm->addRow("Array", this->ColorBy);
+  this->ColorMapChoice = widgets::MakeSettingComboBox("colormap");
+  colorForm->addRow("Colour map", this->ColorMapChoice);
+  this->Legend = new widgets::ColorLegend;
+  colorForm->addRow(this->Legend);
+  for (QComboBox* box : { this->ColorBy, this->ColorMapChoice })
+  {
+    connect(box, QOverload<int>::of(&QComboBox::activated), this, [this] { this->ApplyColorBy(); });
+  }
+  layout->addWidget(colorBox);
   for (QComboBox* box : { this->Mode, this->Backend, this->Interpolation })
   {
     connect(box, QOverload<int>::of(&QComboBox::activated), this, &MainWindow::OnPanelEdited);
@@ -91,6 +108,7 @@ QWidget* MainWindow::BuildControls()
       }
     });
   layout->addWidget(lightBox);
+
   for (QSlider* slider : { this->LightAzimuth, this->LightElevation })
   {
     connect(slider, &QSlider::valueChanged, this, [this] {

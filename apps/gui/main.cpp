@@ -31,7 +31,7 @@ namespace
 const char* kUsage =
   "usage: shadinglab-gui [--scene NAME] [INPUT] [--backend gpu|cpu] [--size WxH]\n"
   "                      [--variant corrugated|isosurface] [--rotation DEG]\n"
-  "                      [--screenshot FILE.png] [--profile FILE.csv]\n"
+  "                      [--screenshot FILE.png] [--profile FILE.csv] [--color-by ARRAY]\n"
   "       shadinglab-gui --list-scenes | --version\n"
   "\n"
   "The ShadingLab explorer: the lecture's interpolation artifacts side by side.\n"
@@ -63,7 +63,7 @@ bool ParseSize(const std::string& text, int& w, int& h)
 int main(int argc, char** argv)
 {
   using namespace shadinglab;
-  std::string scene = "modes", input, screenshot, profile, sizeText = "1600x1000";
+  std::string scene = "modes", input, screenshot, profile, colorBy, sizeText = "1600x1000";
   gui::SceneOptions options;
   std::vector<std::string> args(argv + 1, argv + argc);
   for (size_t i = 0; i < args.size(); ++i)
@@ -104,6 +104,8 @@ int main(int argc, char** argv)
         profile = value("--profile");
       else if (a == "--size")
         sizeText = value("--size");
+      else if (a == "--color-by")
+        colorBy = value("--color-by");
       else if (a == "--variant")
         options.variant = value("--variant");
       else if (a == "--rotation")
@@ -181,6 +183,18 @@ int main(int argc, char** argv)
   if (!window.LoadScene(scene, error))
   {
     return Fail(error);
+  }
+  if (!colorBy.empty())
+  {
+    // As the Array box spells it: a point array, or CELLS:name.
+    const std::string spelled = colorBy.rfind("CELLS:", 0) == 0 || colorBy.rfind("POINTS:", 0) == 0
+      ? colorBy
+      : "POINTS:" + colorBy;
+    error = window.ApplyColorBy(spelled);
+    if (!error.empty())
+    {
+      return Fail("--color-by: " + error);
+    }
   }
   if (screenshot.empty() && profile.empty())
   {

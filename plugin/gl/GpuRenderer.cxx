@@ -125,8 +125,9 @@ const render::Image& GpuRenderer::Render(
     in.Mapper->SetInputData(in.MeshData);
   }
   ConfigureActor(options, material, in.Mapper, in.Actor);
-  ConfigureColoring(scene.colorMap, !scene.mesh->scalars.empty(), !scene.mesh->cellScalars.empty(),
-    in.Mapper);
+  const bool scalars = !scene.mesh->scalars.empty() || !scene.mesh->cellScalars.empty();
+  ConfigureColoring(scalars ? scene.colorMap : nullptr, "Scalars", !scene.mesh->cellScalars.empty(),
+    -1, in.Mapper);
   // The shader writes display values (ApplyDisplay; the 8-bit framebuffer
   // would clip linear ones): the background is given as one too.
   const Vec3<float> background = render::ApplyDisplay(options.display, options.background);

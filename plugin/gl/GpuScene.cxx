@@ -40,10 +40,10 @@ void ConfigureActor(const render::RenderOptions& options, const Material<double>
   prop->SetBackfaceCulling(options.cullBackFaces);
 }
 
-void ConfigureColoring(const render::ColorMap* map, bool pointScalars, bool cellScalars,
-  vtkShadingLabPolyDataMapper* mapper)
+void ConfigureColoring(const render::ColorMap* map, const std::string& array, bool cells,
+  int component, vtkShadingLabPolyDataMapper* mapper)
 {
-  if (!map || !(pointScalars || cellScalars))
+  if (!map)
   {
     mapper->SetColorModeToDirectScalars();
     mapper->SetScalarModeToDefault();
@@ -60,18 +60,27 @@ void ConfigureColoring(const render::ColorMap* map, bool pointScalars, bool cell
   table->SetNanColor(map->nanColor.x, map->nanColor.y, map->nanColor.z, 1.0);
   table->SetTableRange(map->rangeMin, map->rangeMax);
   table->BuildSpecialColors();
-  mapper->SetLookupTable(table);
-  mapper->UseLookupTableScalarRangeOn();
-  mapper->SetColorModeToMapScalars();
-  if (pointScalars)
+  if (component >= 0)
   {
-    mapper->SetScalarModeToUsePointFieldData();
+    table->SetVectorModeToComponent();
+    table->SetVectorComponent(component);
   }
   else
   {
+    table->SetVectorModeToMagnitude();
+  }
+  mapper->SetLookupTable(table);
+  mapper->UseLookupTableScalarRangeOn();
+  mapper->SetColorModeToMapScalars();
+  if (cells)
+  {
     mapper->SetScalarModeToUseCellFieldData();
   }
-  mapper->SelectColorArray("Scalars");
+  else
+  {
+    mapper->SetScalarModeToUsePointFieldData();
+  }
+  mapper->SelectColorArray(array.c_str());
   mapper->InterpolateScalarsBeforeMappingOn();
 }
 

@@ -9,6 +9,7 @@
 #include "shadinglab/model/Shading.h"
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 class vtkActor;
@@ -29,14 +30,14 @@ void ConfigureActor(const render::RenderOptions& options, const Material<double>
   vtkShadingLabPolyDataMapper* mapper, vtkActor* actor);
 
 /**
- * Colour by data: with a colour map and a mesh with scalars (point or cell
- * array "Scalars", as PolyDataFromMesh writes them) the mapper maps them
- * through a lookup table of the map's bins over its range, interpolating
- * the scalar before mapping (ParaView's default); else the direct colours
- * ConfigureActor set up.
+ * Colour by data: with a colour map, the mapper maps the point (or, with
+ * `cells`, cell) array `array` (component `component`, or -1: a vector's
+ * magnitude) through a lookup table of the map's bins over its range,
+ * interpolating the scalar before mapping (ParaView's default). Without a
+ * map: the direct colours ConfigureActor set up.
  */
-void ConfigureColoring(const render::ColorMap* map, bool pointScalars, bool cellScalars,
-  vtkShadingLabPolyDataMapper* mapper);
+void ConfigureColoring(const render::ColorMap* map, const std::string& array, bool cells,
+  int component, vtkShadingLabPolyDataMapper* mapper);
 
 /**
  * The lights (world coordinates) as scene vtkLights and the ambient

@@ -4,6 +4,7 @@
 // the lecture's formulas.
 #include "AnalyticMeshes.h"
 #include "BrdfPlot.h"
+#include "ColorLegend.h"
 #include "ComparisonWidget.h"
 #include "MainWindow.h"
 #include "MaterialEditor.h"
@@ -12,6 +13,7 @@
 #include "VtkCamera.h"
 
 #include <vtkCamera.h>
+#include <vtkFloatArray.h>
 #include <vtkTransform.h>
 #include <vtkTransformPolyDataFilter.h>
 #include <vtkMatrix4x4.h>
@@ -128,6 +130,7 @@ private slots:
   void OrientationDependsOnRotation();
   void LommelSeeligerOnGpuMatchesCpu();
   void UserMeshIsFramedWhateverItsPlaceAndSize();
+  void ColourByDataOnBothBackends();
 };
 
 void ExplorerGLTest::CameraLinkMovesAllPanels()
@@ -722,3 +725,76 @@ void ExplorerGLTest::UserMeshIsFramedWhateverItsPlaceAndSize()
 }
 
 #include "ExplorerGLTest.moc"
+void ExplorerGLTest::ColourByDataOnBothBackends()
+{
+  // A user's torus with a point array (its height): coloured through
+  // Cool to Warm on every panel, the GPU panel as the CPU panel, the legend
+  // shown; an array the mesh lacks is one line and changes nothing.
+  vtkSmartPointer<vtkPolyData> torus;
+  torus.TakeReference(datasets::MakeTorus(1.0, 0.45, 48, 24));
+  vtkNew<vtkFloatArray> height;
+  height->SetName("Height");
+  for (vtkIdType i = 0; i < torus->GetNumberOfPoints(); ++i)
+  {
+    height->InsertNextValue(static_cast<float>(torus->GetPoint(i)[1]));
+  }
+  torus->GetPointData()->AddArray(height);
+  render::Image phong[2];
+  for (const render::Backend backend : { render::Backend::CPU, render::Backend::GPU })
+  {
+    gui::SceneOptions options;
+    options.backend = backend;
+    options.input = torus;
+    auto window = std::make_unique<gui::MainWindow>(options);
+    window->resize(1500, 950);
+    window->show();
+    Settle();
+    std::string error;
+    QVERIFY2(window->LoadScene("modes", error), error.c_str());
+    Settle();
+    QVERIFY(!window->ApplyColorBy("POINTS:Pressure").empty());
+    QVERIFY(window->Comparison()->View().colorBy.empty());
+    QVERIFY2(window->ApplyColorBy("POINTS:Height").empty(), "colour by Height");
+    window->RefreshNow();
+    widgets::ComparisonWidget* view = window->Comparison();
+    QCOMPARE(view->View().colorMap.label, std::string("Cool to Warm"));
+    QVERIFY(std::abs(view->View().colorMap.rangeMax - 1.45) < 1e-3);
+    const render::Image image = view->Panel(2)->Snapshot(); // Phong
+    double spread = 0;
+    int covered = 0;
+    for (size_t p = 0; p < image.covered.size(); ++p)
+    {
+      if (image.covered[p])
+      {
+        spread += std::abs(image.rgb[3 * p] - image.rgb[3 * p + 2]);
+        ++covered;
+      }
+    }
+    QVERIFY2(covered > 1000 && spread / covered > 0.08,
+      qPrintable(QString("mean |R - B| %1 over %2 pixels").arg(spread / std::max(covered, 1)).arg(covered)));
+    phong[backend == render::Backend::GPU] = image;
+    auto* legend = window->findChild<widgets::ColorLegend*>();
+    QVERIFY(legend && legend->isVisible());
+  }
+  // The two backends' Phong panels: the same colours (display values).
+  const render::Image& a = phong[0];
+  const render::Image& b = phong[1];
+  QCOMPARE(a.width, b.width);
+  double sum = 0;
+  int both = 0;
+  for (size_t p = 0; p < a.covered.size(); ++p)
+  {
+    if (a.covered[p] && b.covered[p])
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        sum += std::abs(a.rgb[3 * p + c] - b.rgb[3 * p + c]);
+      }
+      ++both;
+    }
+  }
+  const double mean255 = 255.0 * sum / (3.0 * std::max(both, 1));
+  QVERIFY2(both > 1000 && mean255 < 1.5, qPrintable(QString("GPU vs CPU mean %1/255 over %2 pixels").arg(mean255).arg(both)));
+}
+
+

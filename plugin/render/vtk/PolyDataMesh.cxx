@@ -132,12 +132,13 @@ std::string ArrayNames(vtkDataSetAttributes* data)
   return names.empty() ? "none" : names;
 }
 
-/// Component `component` of tuple i, or the tuple's magnitude (-1).
+/// Component `component` of tuple i, or the tuple's magnitude (-1; a
+/// one-component array's value itself, sign kept, as VTK maps it).
 double ValueOf(vtkDataArray* array, vtkIdType i, int component)
 {
-  if (component >= 0)
+  if (component >= 0 || array->GetNumberOfComponents() == 1)
   {
-    return array->GetComponent(i, component);
+    return array->GetComponent(i, std::max(component, 0));
   }
   double sum = 0;
   for (int c = 0; c < array->GetNumberOfComponents(); ++c)

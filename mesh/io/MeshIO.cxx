@@ -8,11 +8,11 @@
 
 #include <vtkCellArray.h>
 #include <vtkCellTypes.h>
+#include <vtkCleanPolyData.h>
 #include <vtkCellData.h>
 #include <vtkGenericCell.h>
 #include <vtkIdList.h>
 #include <vtkDataSetSurfaceFilter.h>
-#include <vtkStaticCleanPolyData.h>
 #include <vtkIdList.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkPointData.h>
@@ -501,8 +501,9 @@ vtkSmartPointer<vtkPolyData> SurfaceOf(vtkDataSet* data)
   }
   if (nonlinear)
   {
-    vtkNew<vtkStaticCleanPolyData> merge;
+    vtkNew<vtkCleanPolyData> merge; // (vtkStaticCleanPolyData leaks a byte per instance in VTK 9.2)
     merge->SetInputData(mesh);
+    merge->PointMergingOn();
     merge->SetTolerance(0.0);
     merge->ConvertLinesToPointsOff();
     merge->ConvertPolysToLinesOff();

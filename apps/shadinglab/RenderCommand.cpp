@@ -56,7 +56,7 @@ int RunRender(int argc, char** argv)
   const std::string out = args.Get("out", "out.png");
   const Stopwatch writing;
   std::vector<uint8_t> rgb8 = image.ToRGB8(options.display);
-  const long long clipped = CountClipped(image, rgb8);
+  const long long clipped = args.Has("stats") ? CountClipped(image, rgb8) : 0; // --stats only
   if (request->scene.colorMap)
   {
     DrawColorLegend(rgb8, image.width, image.height, *request->scene.colorMap, request->colorTitle);

@@ -50,11 +50,14 @@ void Settle(int passes = 5)
   }
 }
 
-/// A window on scene `name` with all panels on `backend`, drawn.
-std::unique_ptr<gui::MainWindow> Open(const std::string& name, render::Backend backend)
+/// A window on scene `name` with all panels on `backend` (and the user's
+/// mesh `input`, when given), drawn.
+std::unique_ptr<gui::MainWindow> Open(
+  const std::string& name, render::Backend backend, vtkPolyData* input = nullptr)
 {
   gui::SceneOptions options;
   options.backend = backend;
+  options.input = input;
   auto window = std::make_unique<gui::MainWindow>(options);
   window->resize(1500, 950);
   window->show();
@@ -677,19 +680,9 @@ void ExplorerGLTest::UserMeshIsFramedWhateverItsPlaceAndSize()
     move->SetInputData(torus);
     move->SetTransform(transform);
     move->Update();
-    gui::SceneOptions options;
-    options.backend = render::Backend::CPU;
-    options.input = move->GetOutput();
     for (const char* scene : { "modes", "moon" })
     {
-      auto window = std::make_unique<gui::MainWindow>(options);
-      window->resize(1500, 950);
-      window->show();
-      Settle();
-      std::string error;
-      QVERIFY2(window->LoadScene(scene, error), error.c_str());
-      Settle();
-      window->RefreshNow();
+      auto window = Open(scene, render::Backend::CPU, move->GetOutput());
       widgets::ComparisonWidget* view = window->Comparison();
       const render::Image image = view->Panel(0)->Snapshot();
       int x0 = image.width, x1 = -1, y0 = image.height, y1 = -1;
@@ -742,16 +735,7 @@ void ExplorerGLTest::ColourByDataOnBothBackends()
   render::Image phong[2];
   for (const render::Backend backend : { render::Backend::CPU, render::Backend::GPU })
   {
-    gui::SceneOptions options;
-    options.backend = backend;
-    options.input = torus;
-    auto window = std::make_unique<gui::MainWindow>(options);
-    window->resize(1500, 950);
-    window->show();
-    Settle();
-    std::string error;
-    QVERIFY2(window->LoadScene("modes", error), error.c_str());
-    Settle();
+    auto window = Open("modes", backend, torus);
     QVERIFY(!window->ApplyColorBy("POINTS:Pressure").empty());
     QVERIFY(window->Comparison()->View().colorBy.empty());
     QVERIFY2(window->ApplyColorBy("POINTS:Height").empty(), "colour by Height");

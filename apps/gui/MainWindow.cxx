@@ -280,7 +280,7 @@ bool MainWindow::OpenMesh(const std::string& path, std::string& error)
   vtkSmartPointer<vtkPolyData> mesh;
   try
   {
-    mesh.TakeReference(ReadMesh(path));
+    mesh.TakeReference(ReadMesh(path, this->Options.reading));
   }
   catch (const std::exception& e)
   {

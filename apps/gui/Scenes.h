@@ -8,6 +8,7 @@
 #include "Profile.h"
 
 #include "MeshPreparation.h"
+#include "MeshIO.h"
 
 #include <string>
 #include <vector>
@@ -42,6 +43,8 @@ struct SceneOptions
   /// Mesh preparation of the user's mesh (normal weighting, crease angle,
   /// subdivision, repair).
   mesh::PreparationOptions preparation;
+  /// How files are read (File > Open and INPUT): the nonlinear subdivision.
+  ReadOptions reading;
   /// orientation: rotation of the quad in the image plane (degrees).
   double rotation = 0.0;
   /// normals: "corrugated" or "isosurface".

@@ -9,6 +9,7 @@
 
 #include "MeshIO.h"
 #include "shadinglab/Version.h"
+#include "shadinglab/render/Settings.h"
 
 #include <QApplication>
 #include <QSurfaceFormat>
@@ -32,10 +33,11 @@ const char* kUsage =
   "usage: shadinglab-gui [--scene NAME] [INPUT] [--backend gpu|cpu] [--size WxH]\n"
   "                      [--variant corrugated|isosurface] [--rotation DEG]\n"
   "                      [--screenshot FILE.png] [--profile FILE.csv] [--color-by ARRAY]\n"
+  "                      [--nonlinear-subdivision N]\n"
   "       shadinglab-gui --list-scenes | --version\n"
   "\n"
   "The ShadingLab explorer: the lecture's interpolation artifacts side by side.\n"
-  "INPUT is any file the CLI reads (.vtp .vtk .vtu .vts .vtr .vti .vtm .pvd .ply .obj .stl .off).\n"
+  "INPUT is any file the CLI reads (.vtp .vtk .vtu .vts .vtr .vti .vtm .pvd .e .ply .obj .stl .off).\n"
   "With --screenshot and/or --profile the window is rendered, the files are\n"
   "written (the profile or study numbers as CSV) and the program exits.\n"
   "Needs an X display (e.g. xvfb-run); without one it exits with status 2.\n";
@@ -106,6 +108,18 @@ int main(int argc, char** argv)
         sizeText = value("--size");
       else if (a == "--color-by")
         colorBy = value("--color-by");
+      else if (a == "--nonlinear-subdivision")
+      {
+        // Range and message from the settings table, as the CLI's.
+        render::Settings settings;
+        const std::string problem =
+          render::ApplySettingText(settings, "nonlinear-subdivision", value("--nonlinear-subdivision"), "--");
+        if (!problem.empty())
+        {
+          return Fail(problem);
+        }
+        options.reading.nonlinearSubdivisionLevel = settings.input.nonlinearSubdivisionLevel;
+      }
       else if (a == "--variant")
         options.variant = value("--variant");
       else if (a == "--rotation")
@@ -150,7 +164,7 @@ int main(int argc, char** argv)
   {
     try
     {
-      mesh.TakeReference(ReadMesh(input));
+      mesh.TakeReference(ReadMesh(input, options.reading));
     }
     catch (const std::exception& e)
     {

@@ -48,6 +48,23 @@ void ApplySettingArguments(const Arguments& args, render::SettingGroup group,
   }
 }
 
+ReadOptions ReadOptionsFromArguments(const Arguments& args)
+{
+  render::Settings settings;
+  ApplySettingArguments(args, render::SettingGroup::Mesh, settings);
+  ReadOptions options;
+  options.nonlinearSubdivisionLevel = settings.input.nonlinearSubdivisionLevel;
+  return options;
+}
+
+std::vector<std::string> ReadFlags()
+{
+  std::vector<std::string> valued, flags;
+  AddSettingFlags(valued, flags, render::SettingGroup::Mesh);
+  valued.insert(valued.end(), flags.begin(), flags.end());
+  return valued;
+}
+
 const std::vector<std::string>& MaterialOptions()
 {
   static const std::vector<std::string> options = [] {

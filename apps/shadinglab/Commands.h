@@ -3,6 +3,7 @@
 
 #include "CliArgs.h"
 
+#include "MeshIO.h"
 #include "shadinglab/model/Shading.h"
 #include "shadinglab/render/Settings.h"
 
@@ -21,6 +22,13 @@ void AddSettingFlags(std::vector<std::string>& valued, std::vector<std::string>&
 /// `settings`, in table order. Throws UsageError with the table's message.
 void ApplySettingArguments(const Arguments& args, render::SettingGroup group,
   render::Settings& settings, const std::map<std::string, std::string>& implied = {});
+
+/// The reading options (--nonlinear-subdivision, the table's Mesh rows shown
+/// on the command line) of a command that reads a mesh file; throws
+/// UsageError.
+ReadOptions ReadOptionsFromArguments(const Arguments& args);
+/// Their flags, for an Arguments' valued options.
+std::vector<std::string> ReadFlags();
 
 /// Options every material-taking command accepts (see MaterialHelp()).
 const std::vector<std::string>& MaterialOptions();

@@ -23,20 +23,26 @@ const char* kNormalsHelp =
   "usage: shadinglab normals INPUT --out OUT.vtp [--weights uniform|area|angle|max]\n"
   "                          [--feature-angle DEG] [--weld [TOL]] [--fix-t-junctions]\n"
   "                          [--subdivide N [--scheme loop|catmull-clark]] [--json]\n"
+  "                          [--nonlinear-subdivision N]\n"
   "\n"
   "Repairs INPUT (degenerate faces removed, orientation made consistent and outward,\n"
   "non-manifold faces kept on copied vertices), optionally welds coincident points\n"
   "(TOL relative to the bounding-box diagonal, default 1e-6), splits T-junction edges,\n"
   "subdivides N levels with OpenSubdiv (normals then come from the limit surface),\n"
   "and computes vertex normals (default: area weights, creases split at 30 degrees).\n"
-  "OUT: .vtp .vtk .ply .obj .stl .off by extension. --json prints one JSON object.\n";
+  "OUT: .vtp .vtk .ply .obj .stl .off by extension. --json prints one JSON object.\n"
+  "--nonlinear-subdivision N: times each quadratic face of INPUT is split (default 1).\n";
 } // namespace
 
 int RunNormals(int argc, char** argv)
 {
   const Stopwatch total;
-  const Arguments args(argc, argv, { "out", "weights", "feature-angle", "subdivide", "scheme" },
-    { "help", "json", "fix-t-junctions" }, {}, { "weld" });
+  std::vector<std::string> valued = { "out", "weights", "feature-angle", "subdivide", "scheme" };
+  for (const std::string& flag : ReadFlags())
+  {
+    valued.push_back(flag);
+  }
+  const Arguments args(argc, argv, valued, { "help", "json", "fix-t-junctions" }, {}, { "weld" });
   if (args.Has("help"))
   {
     std::cout << kNormalsHelp;
@@ -64,7 +70,7 @@ int RunNormals(int argc, char** argv)
   const Stopwatch reading;
   try
   {
-    input.TakeReference(ReadMesh(args.Positionals()[0]));
+    input.TakeReference(ReadMesh(args.Positionals()[0], ReadOptionsFromArguments(args)));
   }
   catch (const MeshError& e)
   {

@@ -19,7 +19,7 @@ const char* kRenderHelp =
   "usage: shadinglab render INPUT [--backend auto|cpu|gpu] [--mode MODE] [--size WxH]\n"
   "                         [--out OUT.png] [options]\n"
   "\n"
-  "INPUT: .vtp .vtk .vtu .vts .vtr .vti .vtm .pvd .ply .obj .stl .off\n"
+  "INPUT: .vtp .vtk .vtu .vts .vtr .vti .vtm .pvd .e .exo .ex2 .ply .obj .stl .off\n"
   "  --size WxH          image size (default 1024x768)\n"
   "  --out FILE.png      output image (default out.png)\n"
   "  --stats             print one JSON line of timings and counts\n"

@@ -45,6 +45,9 @@ std::string SceneOptionsHelp()
     "                              default: one key light above-left of the camera)\n" +
     render::CliHelp(render::SettingGroup::Lights) +
     "\n"
+    "Reading files:\n" +
+    render::CliHelp(render::SettingGroup::Mesh) +
+    "\n"
     "Mesh preparation:\n"
     "  --normals W                 recompute vertex normals: uniform | area | angle | max\n"
     "  --feature-angle DEG         crease angle for --normals / --subdivide (default 30)\n"
@@ -194,7 +197,7 @@ void ReadAndPrepare(const Arguments& args, const std::string& input, SceneArgume
   const Stopwatch reading;
   try
   {
-    polydata.TakeReference(ReadMesh(input));
+    polydata.TakeReference(ReadMesh(input, ReadOptionsFromArguments(args)));
   }
   catch (const MeshError& e)
   {
@@ -411,6 +414,8 @@ std::unique_ptr<SceneArguments> SceneFromArguments(int argc, char** argv, const 
   {
     AddSettingFlags(valued, flags, group);
   }
+  const std::vector<std::string> reading = ReadFlags();
+  valued.insert(valued.end(), reading.begin(), reading.end());
   valued.insert(valued.end(), extraValued.begin(), extraValued.end());
   auto result =
     std::make_unique<SceneArguments>(Arguments(argc, argv, valued, flags, { "light" }, { "weld" }));

@@ -2,14 +2,24 @@
 #include "CompositeIO.h"
 
 #include "MeshIO.h"
+#include "MeshPrecheck.h"
 
 #include <vtkAppendPolyData.h>
+#include <vtkCompositeDataIterator.h>
+#include <vtkCompositeDataSet.h>
+#include <vtkDataSet.h>
+#include <vtkExodusIIReader.h>
+#include <vtkIdList.h>
 #include <vtkNew.h>
 #include <vtkPolyData.h>
 #include <vtkXMLDataElement.h>
 #include <vtkXMLDataParser.h>
 
+#include <cstdio>
 #include <cstdlib>
+#include <fcntl.h>
+#include <unistd.h>
+#include <fstream>
 #include <cstring>
 #include <limits>
 #include <string>
@@ -56,9 +66,40 @@ void Collect(vtkXMLDataElement* e, std::vector<Listed>& out, const std::string& 
   }
 }
 
+/// Standard error pointed at /dev/null while alive: the Exodus and netCDF
+/// libraries print their own multi-line reports there, which would break
+/// the one-line error (ours says what failed).
+struct SilencedStderr
+{
+  int saved = -1;
+  SilencedStderr()
+  {
+    std::fflush(stderr);
+    saved = dup(2);
+    const int null = open("/dev/null", O_WRONLY);
+    if (null >= 0)
+    {
+      dup2(null, 2);
+      close(null);
+    }
+  }
+  ~SilencedStderr()
+  {
+    std::fflush(stderr);
+    if (saved >= 0)
+    {
+      dup2(saved, 2);
+      close(saved);
+    }
+  }
+  SilencedStderr(const SilencedStderr&) = delete;
+  SilencedStderr& operator=(const SilencedStderr&) = delete;
+};
+
 } // namespace
 
-vtkSmartPointer<vtkPolyData> ReadListing(const std::string& path, bool collection, int depth)
+vtkSmartPointer<vtkPolyData> ReadListing(
+  const std::string& path, bool collection, const ReadOptions& options, int depth)
 {
   if (depth >= kMaxListingDepth)
   {
@@ -108,7 +149,7 @@ vtkSmartPointer<vtkPolyData> ReadListing(const std::string& path, bool collectio
     vtkSmartPointer<vtkPolyData> block;
     try
     {
-      block.TakeReference(ReadMeshAt(file, depth + 1));
+      block.TakeReference(ReadMeshAt(file, options, depth + 1));
     }
     catch (const MeshError& e)
     {
@@ -122,6 +163,93 @@ vtkSmartPointer<vtkPolyData> ReadListing(const std::string& path, bool collectio
   }
   append->Update();
   vtkSmartPointer<vtkPolyData> mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->ShallowCopy(append->GetOutput());
+  return mesh;
+}
+
+namespace
+{
+
+/// Every cell of a block names points the block has: the Exodus library
+/// leaves a block's connectivity unset when its variable is missing, and
+/// VTK's surface filters index (and assert on) the points unchecked.
+void CheckCellPoints(vtkDataSet* data, const std::string& path)
+{
+  const vtkIdType points = data->GetNumberOfPoints();
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < data->GetNumberOfCells(); ++c)
+  {
+    data->GetCellPoints(c, ids);
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+    {
+      if (ids->GetId(k) < 0 || ids->GetId(k) >= points)
+      {
+        throw MeshError("malformed Exodus II file '" + path + "': element " + std::to_string(c) +
+          " names node " + std::to_string(ids->GetId(k)) + " of a block with " +
+          std::to_string(points) + " nodes");
+      }
+    }
+  }
+}
+
+} // namespace
+
+vtkSmartPointer<vtkPolyData> ReadExodus(const std::string& path, const ReadOptions& options)
+{
+  // The netCDF / HDF5 signature first: anything else never reaches the
+  // Exodus library.
+  char magic[8] = {};
+  std::ifstream in(path, std::ios::binary);
+  in.read(magic, sizeof magic);
+  const bool netcdf = in.gcount() >= 4 && std::memcmp(magic, "CDF", 3) == 0 &&
+    (magic[3] == 1 || magic[3] == 2 || magic[3] == 5);
+  const bool hdf5 = in.gcount() == 8 && std::memcmp(magic, "\x89HDF\r\n\x1a\n", 8) == 0;
+  if (hdf5)
+  {
+    throw MeshError("cannot read '" + path + "': a netCDF-4 (HDF5) Exodus II file; only the "
+                                             "classic netCDF format is read (nccopy -k classic converts)");
+  }
+  if (!netcdf)
+  {
+    throw MeshError("cannot read '" + path + "': not an Exodus II file (no netCDF signature)");
+  }
+  PrecheckNetcdfClassic(path);
+  const SilencedStderr quiet;
+  vtkNew<vtkExodusIIReader> reader;
+  if (!reader->CanReadFile(path.c_str()))
+  {
+    throw MeshError("cannot read '" + path + "': not an Exodus II file (malformed or truncated)");
+  }
+  reader->SetFileName(path.c_str());
+  reader->UpdateInformation();
+  reader->SetAllArrayStatus(vtkExodusIIReader::ELEM_BLOCK, 1);
+  reader->SetAllArrayStatus(vtkExodusIIReader::NODAL, 1);
+  reader->SetAllArrayStatus(vtkExodusIIReader::ELEM_BLOCK_ELEM_CONN, 1);
+  reader->Update();
+  auto* blocks = vtkCompositeDataSet::SafeDownCast(reader->GetOutputDataObject(0));
+  if (reader->GetErrorCode() != 0 || !blocks)
+  {
+    throw MeshError("cannot read '" + path + "': malformed Exodus II file");
+  }
+  vtkNew<vtkAppendPolyData> append;
+  vtkSmartPointer<vtkCompositeDataIterator> it;
+  it.TakeReference(blocks->NewIterator());
+  int leaves = 0;
+  for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+  {
+    if (auto* data = vtkDataSet::SafeDownCast(it->GetCurrentDataObject()))
+    {
+      CheckCellPoints(data, path);
+      append->AddInputData(SurfaceOf(data, options));
+      ++leaves;
+    }
+  }
+  if (leaves == 0)
+  {
+    throw MeshError("cannot read '" + path + "': no element block");
+  }
+  append->Update();
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
   mesh->ShallowCopy(append->GetOutput());
   return mesh;
 }

@@ -474,11 +474,9 @@ vtkSmartPointer<vtkDataSet> WithoutBoundaryCopies(vtkDataSet* data)
   return out;
 }
 
-/// The outer surface of a data set (polydata as is), as ParaView's Surface
-/// representation shows it: higher-order cells (quadratic triangles and
-/// tetrahedra) tessellated once, ParaView's default Nonlinear Subdivision
-/// Level of 1.
-vtkSmartPointer<vtkPolyData> SurfaceOf(vtkDataSet* data)
+} // namespace
+
+vtkSmartPointer<vtkPolyData> SurfaceOf(vtkDataSet* data, const ReadOptions& options)
 {
   auto mesh = vtkSmartPointer<vtkPolyData>::New();
   if (auto* poly = vtkPolyData::SafeDownCast(data))
@@ -488,7 +486,7 @@ vtkSmartPointer<vtkPolyData> SurfaceOf(vtkDataSet* data)
   }
   vtkNew<vtkDataSetSurfaceFilter> surface;
   surface->SetInputData(WithoutBoundaryCopies(data));
-  surface->SetNonlinearSubdivisionLevel(1);
+  surface->SetNonlinearSubdivisionLevel(options.nonlinearSubdivisionLevel);
   surface->Update();
   mesh->ShallowCopy(surface->GetOutput());
   // The subdivision gives each higher-order face its own points: merge the
@@ -513,6 +511,9 @@ vtkSmartPointer<vtkPolyData> SurfaceOf(vtkDataSet* data)
   }
   return mesh;
 }
+
+namespace
+{
 
 /// A structured VTK XML file (.vts, .vtr, .vti), pre-checked like .vtp.
 vtkSmartPointer<vtkDataSet> ReadStructured(const std::string& path, const std::string& ext)
@@ -552,12 +553,19 @@ vtkSmartPointer<vtkDataSet> ReadStructured(const std::string& path, const std::s
 
 } // namespace
 
-vtkPolyData* ReadMesh(const std::string& path)
+vtkPolyData* ReadMesh(const std::string& path, const ReadOptions& options)
 {
-  return ReadMeshAt(path, 0);
+  if (options.nonlinearSubdivisionLevel < 0 ||
+    options.nonlinearSubdivisionLevel > kMaxNonlinearSubdivisionLevel)
+  {
+    throw MeshError("the nonlinear subdivision level must be 0.." +
+      std::to_string(kMaxNonlinearSubdivisionLevel) + " (got " +
+      std::to_string(options.nonlinearSubdivisionLevel) + ")");
+  }
+  return ReadMeshAt(path, options, 0);
 }
 
-vtkPolyData* ReadMeshAt(const std::string& path, int depth)
+vtkPolyData* ReadMeshAt(const std::string& path, const ReadOptions& options, int depth)
 {
   struct stat st;
   if (stat(path.c_str(), &st) != 0)
@@ -620,13 +628,17 @@ vtkPolyData* ReadMeshAt(const std::string& path, int depth)
   {
     mesh = ReadOff(path);
   }
+  else if (ext == "e" || ext == "exo" || ext == "ex2" || ext == "exii")
+  {
+    mesh = ReadExodus(path, options);
+  }
   else if (ext == "vtm" || ext == "pvd")
   {
-    mesh = ReadListing(path, ext == "pvd", depth);
+    mesh = ReadListing(path, ext == "pvd", options, depth);
   }
   else if (ext == "vts" || ext == "vtr" || ext == "vti")
   {
-    mesh = SurfaceOf(ReadStructured(path, ext));
+    mesh = SurfaceOf(ReadStructured(path, ext), options);
   }
   else if (ext == "vtk" || ext == "vtu")
   {
@@ -660,12 +672,12 @@ vtkPolyData* ReadMeshAt(const std::string& path, int depth)
       }
       data = reader->GetOutput();
     }
-    mesh = SurfaceOf(data);
+    mesh = SurfaceOf(data, options);
   }
   else
   {
     throw MeshError("cannot read '" + path +
-      "': unknown extension (expected .vtp .vtk .vtu .vts .vtr .vti .vtm .pvd .ply .obj .stl .off)");
+      "': unknown extension (expected .vtp .vtk .vtu .vts .vtr .vti .vtm .pvd .e .exo .ex2 .ply .obj .stl .off)");
   }
   if (!mesh)
   {

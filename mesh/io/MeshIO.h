@@ -16,16 +16,32 @@ struct MeshError : std::runtime_error
   using std::runtime_error::runtime_error;
 };
 
+/// Most tessellation levels of a higher-order face: ParaView's Nonlinear
+/// Subdivision Level stops at 4 too (a quadratic triangle becomes 4^4 = 256
+/// triangles there; more only multiplies the memory).
+constexpr int kMaxNonlinearSubdivisionLevel = 4;
+
+/// How files are turned into surfaces.
+struct ReadOptions
+{
+  /// Each higher-order (quadratic) face is split this many times, as
+  /// ParaView's Surface does with its Nonlinear Subdivision Level (default
+  /// 1 there too); 0 draws the corner nodes' linear face.
+  int nonlinearSubdivisionLevel = 1;
+};
+
 /**
  * Reads INPUT by extension: .vtp, .vtk (any legacy data set), .vtu, .vts,
  * .vtr, .vti (the outer surface; higher-order cells tessellated as ParaView
  * does), .vtm (every block) and .pvd (the first time step's parts),
- * appended into one mesh, .ply, .obj, .stl, .off. Triangle strips are
+ * appended into one mesh, Exodus II (.e .exo .ex2, classic netCDF), .ply,
+ * .obj, .stl, .off. Triangle strips are
  * converted to triangles; lines and vertices are dropped.
  * Throws MeshError when the file is missing, unreadable, malformed, empty (no
- * polygon), or has non-finite coordinates. The caller owns the result.
+ * polygon), or has non-finite coordinates, or when `options` are out of
+ * range. The caller owns the result.
  */
-vtkPolyData* ReadMesh(const std::string& path);
+vtkPolyData* ReadMesh(const std::string& path, const ReadOptions& options = {});
 
 /// Writes by extension: .vtp, .vtk, .ply, .obj, .stl, .off. Throws MeshError.
 void WriteMesh(vtkPolyData* mesh, const std::string& path);

@@ -39,5 +39,9 @@ void PrecheckLegacyVtk(const std::string& path);
 /// connectivity and cell types decoded and consistent.
 void PrecheckXmlVtk(const std::string& path, const std::string& type);
 
+/// Exodus II (NetcdfCheck.cxx): a netCDF classic header (CDF-1, -2, -5)
+/// whose counts, names and fixed-size variables all lie within the file.
+void PrecheckNetcdfClassic(const std::string& path);
+
 
 } // namespace shadinglab

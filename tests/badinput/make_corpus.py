@@ -188,8 +188,22 @@ write('vtr_short_coordinates.vtr', '<VTKFile type="RectilinearGrid" version="1.0
       '<Piece Extent="0 3 0 1 0 1"><Coordinates><DataArray type="Float32" format="ascii">0 1</DataArray>'
       '<DataArray type="Float32" format="ascii">0 1</DataArray><DataArray type="Float32" format="ascii">0 1</DataArray>'
       '</Coordinates></Piece></RectilinearGrid></VTKFile>\n')
+# Exodus II: text, a netCDF signature over junk, an HDF5 signature over junk.
+write('exo_text.exo', 'this is not exodus\n')
+write('exo_netcdf_junk.e', b'CDF\x01' + bytes(range(256)) * 4)
+write('exo_hdf5_junk.ex2', b'\x89HDF\r\n\x1a\n' + bytes(range(256)) * 4)
+# Mutations of a valid ParaView-written file (fuzz/seeds/sphere.e): nodal
+# results without their names (the Exodus library then leaves the names
+# unset), a node number past num_nodes in the connectivity, cut short.
+sphere = open(os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', 'fuzz', 'seeds',
+                           'sphere.e'), 'rb').read()
+write('exo_results_without_names.e', sphere.replace(b'name_nod_var', b'name_xyz_var'))
+write('exo_truncated.e', sphere[:len(sphere) // 2])
+at = sphere.find(b'TRIANGLE') + 12  # connect1's type, vsize, then its 64-bit begin (CDF-2)
+begin = struct.unpack('>Q', sphere[at + 8:at + 16])[0]
+write('exo_node_out_of_range.e', sphere[:begin] + struct.pack('>i', 1000000) + sphere[begin + 4:])
 # Random bytes with every extension.
 noise = bytes((i * 131 + 7) % 256 for i in range(512))
-for ext in ['obj', 'off', 'ply', 'vtk', 'stl', 'vtp', 'vtu', 'vtm', 'pvd', 'vts', 'vtr', 'vti']:
+for ext in ['obj', 'off', 'ply', 'vtk', 'stl', 'vtp', 'vtu', 'vtm', 'pvd', 'vts', 'vtr', 'vti', 'e']:
     write('random.' + ext, noise)
 print(len(os.listdir(out)), 'files in', out)

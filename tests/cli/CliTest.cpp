@@ -296,6 +296,7 @@ TEST(CliTest, RenderBadInputExitsTwoWithOneLine)
     "compare " + good + " --modes fast-phong/cook-torrance" + out,
     "render " + good + " --kd 2" + out,
     "render " + good + " --interp curved" + out,
+    "render " + good + " --nonlinear-subdivision -1" + out,
     "render " + good + " --view-up 0,0,0" + out,
     "render " + good + " --camera-position 0,0,5 --focal-point 0,0,0 --view-up 0,0,2" + out,
     "render " + good + " --backend cpu --out /nonexistent-dir/x.png", // unwritable
@@ -360,6 +361,8 @@ TEST(CliTest, NormalsBadInputExitsTwoWithOneLine)
     "normals " + good + " --out /tmp/x.xyz",              // unknown output format
     "normals " + kData + "torus_96x48.vtp --subdivide 6" + out, // 37.7M faces: over budget
     "normals " + good + " --out /nonexistent-dir/x.vtp",  // unwritable
+    "normals " + good + " --nonlinear-subdivision 5" + out, // over ParaView's 4
+    "normals " + good + " --nonlinear-subdivision 1.5" + out, // not an integer
   };
   for (const auto& args : bad)
   {

@@ -6,7 +6,11 @@
 #include "AnalyticMeshes.h"
 #include "MeshIO.h"
 
+#include <vtkAppendFilter.h>
 #include <vtkCellArray.h>
+#include <vtkExodusIIWriter.h>
+#include <vtkFloatArray.h>
+#include <vtkPointData.h>
 #include <vtkImageData.h>
 #include <vtkMultiBlockDataSet.h>
 #include <vtkNew.h>
@@ -29,6 +33,7 @@
 #include <array>
 #include <cmath>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 namespace
@@ -38,18 +43,18 @@ std::string Temp(const std::string& name)
   return ::testing::TempDir() + "/shadinglab_formats_" + name;
 }
 
-vtkSmartPointer<vtkPolyData> Read(const std::string& path)
+vtkSmartPointer<vtkPolyData> Read(const std::string& path, const shadinglab::ReadOptions& options = {})
 {
   vtkSmartPointer<vtkPolyData> mesh;
-  mesh.TakeReference(shadinglab::ReadMesh(path));
+  mesh.TakeReference(shadinglab::ReadMesh(path, options));
   return mesh;
 }
 
-std::string ErrorOf(const std::string& path)
+std::string ErrorOf(const std::string& path, const shadinglab::ReadOptions& options = {})
 {
   try
   {
-    Read(path);
+    Read(path, options);
   }
   catch (const shadinglab::MeshError& e)
   {
@@ -157,6 +162,30 @@ TEST(ScientificFormatsTest, QuadraticCellsAreTessellatedAsParaViewDoes)
   double bounds[6];
   mesh->GetBounds(bounds);
   EXPECT_NEAR(bounds[5], 0.3, 1e-6) << "the curved edges are kept"; // float points
+  // The level is a setting: 0 draws the corner nodes' flat triangle, each
+  // level splits every triangle in four (ParaView's property, 0..4).
+  // The top rises towards the quadratic surface's own (its value at the
+  // centroid, 4/3 of the edge midpoints' 0.3 = 0.4).
+  double previousTop = -1.0;
+  for (int level = 0; level <= shadinglab::kMaxNonlinearSubdivisionLevel; ++level)
+  {
+    shadinglab::ReadOptions options;
+    options.nonlinearSubdivisionLevel = level;
+    const auto at = Read(Temp("quadratic.vtu"), options);
+    EXPECT_EQ(at->GetNumberOfPolys(), 1 << (2 * level)) << "level " << level;
+    at->GetBounds(bounds);
+    if (level <= 1)
+    {
+      EXPECT_NEAR(bounds[5], level == 0 ? 0.0 : 0.3, 1e-6) << "level " << level;
+    }
+    EXPECT_GT(bounds[5], previousTop) << "level " << level;
+    EXPECT_LE(bounds[5], 0.4 + 1e-6) << "level " << level;
+    previousTop = bounds[5];
+  }
+  shadinglab::ReadOptions absurd;
+  absurd.nonlinearSubdivisionLevel = shadinglab::kMaxNonlinearSubdivisionLevel + 1;
+  const std::string error = ErrorOf(Temp("quadratic.vtu"), absurd);
+  EXPECT_NE(error.find("nonlinear subdivision level must be 0..4"), std::string::npos) << error;
 }
 
 TEST(ScientificFormatsTest, ListingFilesFailInOneLine)
@@ -227,4 +256,54 @@ TEST(ScientificFormatsTest, BoundaryCopiesOfAVolumeMeshAreDrawnOnce)
   Write<vtkXMLUnstructuredGridWriter>(grid, Temp("volume_with_boundary.vtu"));
   // 4 tetrahedron faces + the shell, each tessellated into 4 triangles.
   EXPECT_EQ(Read(Temp("volume_with_boundary.vtu"))->GetNumberOfPolys(), 5 * 4);
+}
+
+TEST(ScientificFormatsTest, ExodusReadsEveryElementBlockWithItsVariables)
+{
+  vtkSmartPointer<vtkPolyData> sphere;
+  sphere.TakeReference(shadinglab::datasets::MakeUVSphere(16, 8));
+  vtkNew<vtkFloatArray> temperature;
+  temperature->SetName("Temperature");
+  for (vtkIdType i = 0; i < sphere->GetNumberOfPoints(); ++i)
+  {
+    temperature->InsertNextValue(static_cast<float>(sphere->GetPoint(i)[2]));
+  }
+  sphere->GetPointData()->AddArray(temperature);
+  vtkNew<vtkAppendFilter> grid;
+  grid->AddInputData(sphere);
+  grid->Update();
+  const std::string path = Temp("sphere.e");
+  vtkNew<vtkExodusIIWriter> writer;
+  writer->SetInputConnection(grid->GetOutputPort());
+  writer->SetFileName(path.c_str());
+  writer->WriteAllTimeStepsOff();
+  ASSERT_EQ(writer->Write(), 1);
+  const auto mesh = Read(path);
+  EXPECT_EQ(mesh->GetNumberOfPolys(), sphere->GetNumberOfPolys());
+  EXPECT_NE(mesh->GetPointData()->GetArray("Temperature"), nullptr) << "nodal variables come along";
+  // Not netCDF, or netCDF cut short: one line, no library report.
+  std::ofstream(Temp("text.exo")) << "not exodus\n";
+  EXPECT_NE(ErrorOf(Temp("text.exo")).find("no netCDF signature"), std::string::npos);
+  std::ofstream(Temp("cut.e"), std::ios::binary) << std::string("CDF\x01", 4) << "truncated";
+  const std::string cut = ErrorOf(Temp("cut.e"));
+  EXPECT_NE(cut.find("cut short"), std::string::npos) << cut;
+
+  // Mutations of the valid file that VTK's reader cannot survive, each
+  // refused by the header check in one line: nodal results without their
+  // names (the library leaves the names unset), a header claiming millions
+  // of time steps (minutes of reading before).
+  std::ifstream in(path, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string unnamed = bytes;
+  const size_t at = unnamed.find("name_nod_var");
+  ASSERT_NE(at, std::string::npos);
+  unnamed.replace(at, 12, "name_xyz_var");
+  std::ofstream(Temp("unnamed.e"), std::ios::binary) << unnamed;
+  const std::string noNames = ErrorOf(Temp("unnamed.e"));
+  EXPECT_NE(noNames.find("'num_nod_var' without 'name_nod_var'"), std::string::npos) << noNames;
+  std::string records = bytes;
+  records[4] = 2; // numrecs, big-endian: 0x02000001 time steps
+  std::ofstream(Temp("records.e"), std::ios::binary) << records;
+  const std::string tooMany = ErrorOf(Temp("records.e"));
+  EXPECT_NE(tooMany.find("records (time steps) in a"), std::string::npos) << tooMany;
 }

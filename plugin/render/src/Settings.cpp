@@ -541,6 +541,23 @@ void MeshRows(std::vector<SettingRow>& t)
     t.push_back(r);
   }
   {
+    SettingRow r = Row("nonlinear-subdivision", "NonlinearSubdivisionLevel",
+      "Nonlinear Subdivision Level", G::Mesh, K::Integer);
+    // 4 as ParaView's property (mesh::kMaxNonlinearSubdivisionLevel):
+    // 256 triangles per quadratic triangle.
+    r.min = 0;
+    r.max = 4;
+    r.doc = "times each higher-order (quadratic) face of a file is split into linear ones, as "
+            "ParaView's Surface does; 0 draws the corner nodes' faces";
+    r.frontEnds = kCli | kExplorer;
+    r.metavar = "N";
+    r.set = [](Settings& s, const SettingValue& v) {
+      s.input.nonlinearSubdivisionLevel = static_cast<int>(v.numbers[0]);
+    };
+    r.get = [](const Settings& s) { return Number(s.input.nonlinearSubdivisionLevel); };
+    t.push_back(r);
+  }
+  {
     SettingRow r = Row("recompute-normals", "RecomputeNormals", "Recompute Normals", G::Mesh, K::Flag);
     r.doc = "make normals with the weighting and feature angle even when the data has normals";
     r.frontEnds = kParaView | kMapper;

@@ -34,6 +34,15 @@ struct NormalSettings
   bool recompute = false;     ///< replace the data's own normals too
 };
 
+/// How the front ends that read files (the CLI, the explorer) turn them
+/// into surfaces; ParaView's own Surface properties do this there.
+struct InputSettings
+{
+  /// Times each higher-order (quadratic) face is split: ParaView's
+  /// Nonlinear Subdivision Level, default 1 there too.
+  int nonlinearSubdivisionLevel = 1;
+};
+
 /// Colour by data in the front ends that read files (the CLI): which array,
 /// through which of ParaView's colour maps, over which range. ParaView's
 /// own colouring controls do this for the representation.
@@ -57,6 +66,7 @@ struct Settings
   std::string preset; ///< the preset `material` was started from ("" custom)
   NormalSettings normals;
   ColorBySettings color;
+  InputSettings input;
 };
 
 enum class SettingGroup

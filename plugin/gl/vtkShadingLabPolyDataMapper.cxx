@@ -388,6 +388,18 @@ void vtkShadingLabPolyDataMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* a
   this->Superclass::RenderPieceStart(ren, act);
 }
 
+vtkUnsignedCharArray* vtkShadingLabPolyDataMapper::MapScalars(double alpha)
+{
+  int cellFlag = 0;
+  return this->MapScalars(alpha, cellFlag);
+}
+
+vtkUnsignedCharArray* vtkShadingLabPolyDataMapper::MapScalars(double alpha, int& cellFlag)
+{
+  vtkDataSet* drawn = this->CurrentInput ? this->CurrentInput : this->GetInput();
+  return this->Superclass::MapScalars(drawn, alpha, cellFlag);
+}
+
 bool vtkShadingLabPolyDataMapper::GetNeedToRebuildShaders(
   vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
 {

@@ -116,6 +116,17 @@ public:
   /// The variant #defines of the last build.
   const std::string& GetLastVariant() const { return this->LastVariant; }
 
+  ///@{
+  /// Colours (or colour texture coordinates) are mapped from the data
+  /// drawn: the input with the normals made in RenderPieceStart, whose
+  /// crease split adds points. VTK 9.2's buffer building maps GetInput()
+  /// (without them), and the split points took whatever colour lay past
+  /// the array's end.
+  using Superclass::MapScalars;
+  vtkUnsignedCharArray* MapScalars(double alpha) override;
+  vtkUnsignedCharArray* MapScalars(double alpha, int& cellFlag) override;
+  ///@}
+
 protected:
   vtkShadingLabPolyDataMapper();
   ~vtkShadingLabPolyDataMapper() override;

@@ -6,8 +6,17 @@
 #include "vtkShadingLabCompositePolyDataMapper.h"
 #include "vtkShadingLabPolyDataMapper.h"
 
+#include "vtkShadingLabNormals.h"
+
+#include <vtkCommunicator.h>
 #include <vtkCompositeDataDisplayAttributes.h>
+#include <vtkCompositeDataIterator.h>
+#include <vtkCompositeDataSet.h>
+#include <vtkMultiProcessController.h>
+#include <vtkNew.h>
 #include <vtkObjectFactory.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
 #include <vtkPVView.h>
 #include <vtkSmartPointer.h>
 
@@ -87,6 +96,11 @@ void vtkShadingLabSurfaceRepresentation::SetSetting(
     }
   }
   in.Dirty = true;
+  if (row->group == sl::render::SettingGroup::Mesh)
+  {
+    // Normals may be made in RequestData (several ranks): run it again.
+    this->MarkModified();
+  }
   this->Modified();
 }
 
@@ -137,6 +151,68 @@ int vtkShadingLabSurfaceRepresentation::ProcessViewRequest(
   return result;
 }
 
+int vtkShadingLabSurfaceRepresentation::RequestData(
+  vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  if (!this->Superclass::RequestData(request, inputVector, outputVector))
+  {
+    return 0;
+  }
+  this->MakeDistributedNormals();
+  return 1;
+}
+
+void vtkShadingLabSurfaceRepresentation::MakeDistributedNormals()
+{
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  auto* blocks = vtkCompositeDataSet::SafeDownCast(this->MultiBlockMaker->GetOutputDataObject(0));
+  if (!controller || controller->GetNumberOfProcesses() < 2 || !blocks)
+  {
+    return;
+  }
+  // Every rank holds the same tree of blocks (some empty): each block is
+  // handled by all ranks together, even those with nothing of it.
+  const sl::render::NormalSettings& made = this->Internal->Parameters.normals;
+  vtkSmartPointer<vtkCompositeDataIterator> it;
+  it.TakeReference(blocks->NewIterator());
+  it->SkipEmptyNodesOff();
+  for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+  {
+    auto* block = vtkPolyData::SafeDownCast(it->GetCurrentDataObject());
+    int needs = block && block->GetNumberOfPolys() > 0 &&
+        (made.recompute || !block->GetPointData()->GetNormals())
+      ? 1
+      : 0;
+    int anyone = 0;
+    controller->AllReduce(&needs, &anyone, 1, vtkCommunicator::MAX_OP);
+    if (!anyone)
+    {
+      continue;
+    }
+    vtkNew<vtkPolyData> piece;
+    if (block)
+    {
+      piece->ShallowCopy(block);
+    }
+    if (made.recompute)
+    {
+      piece->GetPointData()->SetNormals(nullptr);
+    }
+    vtkNew<vtkShadingLabNormals> normals;
+    normals->SetWeighting(made.weighting);
+    normals->SetFeatureAngle(made.featureAngle);
+    normals->SetSplitting(made.featureAngle < 180.0);
+    normals->SetInputData(piece);
+    normals->Update();
+    if (block)
+    {
+      auto result = vtkSmartPointer<vtkPolyData>::New();
+      result->ShallowCopy(normals->GetOutput());
+      blocks->SetDataSet(it, result);
+    }
+  }
+}
+
 void vtkShadingLabSurfaceRepresentation::UpdateBlockAttributes()
 {
   // The superclass hands block colours, opacities and visibility only to a
@@ -184,6 +260,13 @@ void vtkShadingLabSurfaceRepresentation::UpdateSettings()
     settings.material = in.Applied.material;
   }
   in.Applied = settings;
+  vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
+  if (controller && controller->GetNumberOfProcesses() > 1)
+  {
+    // On several ranks RequestData has made the normals already
+    // (MakeDistributedNormals); the mappers must not remake them locally.
+    settings.normals.recompute = false;
+  }
   for (vtkMapper* m : { this->Mapper, this->LODMapper })
   {
     if (auto* sm = vtkShadingLabCompositePolyDataMapper::SafeDownCast(m))

@@ -66,6 +66,17 @@ protected:
   vtkShadingLabSurfaceRepresentation();
   ~vtkShadingLabSurfaceRepresentation() override;
 
+  /// The superclass's geometry, then normals made across partition
+  /// boundaries (MakeDistributedNormals).
+  int RequestData(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override;
+  /// On several ranks, the blocks without normals get them here, from
+  /// every face around each vertex, the neighbouring ranks' included
+  /// (vtkShadingLabNormals: borrowed boundary faces). The mappers would
+  /// make them from their own rank's faces only, and smooth shading would
+  /// show each partition boundary as a seam. Collective.
+  void MakeDistributedNormals();
+
   /// Pushes the settings to both mappers after validating the material.
   void UpdateSettings();
   /// Hands ParaView's block colours, opacities and visibility to both

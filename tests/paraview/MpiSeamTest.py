@@ -1,0 +1,168 @@
+# Smooth shading on 2 MPI ranks equals 1 rank for irregular meshes without
+# normals, shown directly as ShadingLab Surface (no Normals filter): the
+# representation must make normals that see every face around a partition
+# boundary vertex. Meshes are generated here (none has normals): a
+# decimated noisy sphere (non-uniform triangles), a marching-cubes
+# isosurface (slivers) and a scan-like height field with sliver triangles
+# (open, random diagonals). Each is split by RedistributeDataSet and drawn
+# coloured by Elevation in Gouraud, Phong and fast Phong (Blinn-Phong) and
+# Phong/Cook-Torrance, with the default normals (split at 30 degrees);
+# 2 ranks against 1 rank: mean <= 1/255 and p99 <= 2/255 of the covered
+# pixels' channels.
+#
+#   pvpython MpiSeamTest.py PLUGIN OUTDIR       (the driver; runs mpiexec)
+#   pvbatch MpiSeamTest.py --worker PLUGIN DIR  (one run, on rank 0)
+import os
+import subprocess
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from pngs import read_png  # noqa: E402
+
+W, H = 400, 300
+MESHES = ('noisy_sphere', 'isosurface', 'scan')
+MODES = (('Gouraud', 'Blinn-Phong'), ('Phong', 'Blinn-Phong'), ('Fast Phong', 'Blinn-Phong'),
+         ('Phong', 'Cook-Torrance'))
+
+
+def make_meshes(outdir):
+    """Writes the three meshes (no normals) into outdir."""
+    import random
+    from vtkmodules.vtkFiltersSources import vtkSphereSource
+    from vtkmodules.vtkFiltersCore import vtkDecimatePro, vtkTriangleFilter, vtkFlyingEdges3D
+    from vtkmodules.vtkImagingHybrid import vtkSampleFunction
+    from vtkmodules.vtkCommonDataModel import vtkQuadric, vtkPolyData, vtkCellArray
+    from vtkmodules.vtkCommonCore import vtkPoints
+    from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
+
+    def write(poly, name):
+        poly.GetPointData().SetNormals(None)
+        writer = vtkXMLPolyDataWriter()
+        writer.SetFileName(os.path.join(outdir, name + '.vtp'))
+        writer.SetInputData(poly)
+        writer.Write()
+
+    rng = random.Random(7)
+    sphere = vtkSphereSource()
+    sphere.SetThetaResolution(120)
+    sphere.SetPhiResolution(60)
+    sphere.Update()
+    noisy = vtkPolyData()
+    noisy.DeepCopy(sphere.GetOutput())
+    points = noisy.GetPoints()
+    for i in range(points.GetNumberOfPoints()):
+        p = points.GetPoint(i)
+        s = 1.0 + rng.uniform(-0.01, 0.01)
+        points.SetPoint(i, p[0] * s, p[1] * s, p[2] * s)
+    decimate = vtkDecimatePro()
+    decimate.SetInputData(noisy)
+    decimate.SetTargetReduction(0.7)
+    decimate.PreserveTopologyOn()
+    decimate.Update()
+    write(decimate.GetOutput(), 'noisy_sphere')
+
+    quadric = vtkQuadric()
+    quadric.SetCoefficients(1, 2, 0.5, 0.3, 0, 0.2, 0, 0, 0, 0)
+    sample = vtkSampleFunction()
+    sample.SetImplicitFunction(quadric)
+    sample.SetSampleDimensions(40, 40, 40)
+    sample.SetModelBounds(-1, 1, -1, 1, -1, 1)
+    contour = vtkFlyingEdges3D()
+    contour.SetInputConnection(sample.GetOutputPort())
+    contour.SetValue(0, 0.5)
+    contour.ComputeNormalsOff()
+    contour.ComputeGradientsOff()
+    contour.Update()
+    write(contour.GetOutput(), 'isosurface')
+
+    import math
+    n = 48
+    scan_points, cells = vtkPoints(), vtkCellArray()
+    for j in range(n):
+        for i in range(n):
+            # Columns bunched together (slivers) and a bumpy height.
+            x = (i / (n - 1)) ** 1.7 * 2 - 1 + rng.uniform(-0.002, 0.002)
+            y = j / (n - 1) * 2 - 1
+            z = 0.25 * math.sin(3 * x) * math.cos(2 * y) + rng.uniform(-0.004, 0.004)
+            scan_points.InsertNextPoint(x, y, z)
+    for j in range(n - 1):
+        for i in range(n - 1):
+            a, b, c, d = j * n + i, j * n + i + 1, (j + 1) * n + i + 1, (j + 1) * n + i
+            if rng.random() < 0.5:
+                cells.InsertNextCell(3, (a, b, c))
+                cells.InsertNextCell(3, (a, c, d))
+            else:
+                cells.InsertNextCell(3, (a, b, d))
+                cells.InsertNextCell(3, (b, c, d))
+    scan = vtkPolyData()
+    scan.SetPoints(scan_points)
+    scan.SetPolys(cells)
+    write(scan, 'scan')
+
+
+def worker(plugin, directory):
+    from paraview.simple import (LoadPlugin, OpenDataFile, RedistributeDataSet, ExtractSurface,
+                                 Elevation, CreateView, Show, Hide, Render, ResetCamera,
+                                 SaveScreenshot, ColorBy)
+    LoadPlugin(plugin, remote=False, ns=globals())
+    view = CreateView('RenderView')
+    view.ViewSize = [W, H]
+    view.OrientationAxesVisibility = 0
+    for name in MESHES:
+        reader = OpenDataFile(os.path.join(directory, name + '.vtp'))
+        reader.UpdatePipeline()
+        b = reader.GetDataInformation().GetBounds()
+        parts = RedistributeDataSet(Input=reader)
+        surface = ExtractSurface(Input=parts)
+        elevation = Elevation(Input=surface, LowPoint=[b[0], b[2], b[4]], HighPoint=[b[1], b[3], b[5]])
+        rep = Show(elevation, view)
+        rep.Representation = 'ShadingLab Surface'
+        ColorBy(rep, ('POINTS', 'Elevation'))
+        ResetCamera(view)
+        camera = view.GetActiveCamera()
+        camera.Azimuth(30)
+        camera.Elevation(25)
+        for mode, model in MODES:
+            rep.ShadingMode = mode
+            rep.ReflectanceModel = model
+            Render(view)
+            out = os.path.join(directory, '%s_%s_%s.png' % (name, mode.replace(' ', ''), model))
+            SaveScreenshot(out, view, ImageResolution=[W, H])
+        Hide(elevation, view)
+
+
+def driver(plugin, outdir):
+    import numpy
+    failures = []
+    dirs = {}
+    for ranks in (1, 2):
+        d = os.path.join(outdir, 'ranks%d' % ranks)
+        os.makedirs(d, exist_ok=True)
+        make_meshes(d)
+        env = {k: v for k, v in os.environ.items() if not k.startswith(('OMPI_', 'PMIX_', 'OPAL_'))}
+        subprocess.run(['mpiexec', '--allow-run-as-root', '--oversubscribe', '-n', str(ranks),
+                        'pvbatch', '--force-offscreen-rendering', os.path.abspath(__file__),
+                        '--worker', plugin, d], check=True, timeout=600, env=env)
+        dirs[ranks] = d
+    for name in MESHES:
+        for mode, model in MODES:
+            png = '%s_%s_%s.png' % (name, mode.replace(' ', ''), model)
+            a, b = read_png(os.path.join(dirs[1], png)), read_png(os.path.join(dirs[2], png))
+            background = a[0, 0]
+            covered = numpy.any(a != background, axis=2) | numpy.any(b != background, axis=2)
+            diff = numpy.abs(a - b)[covered]
+            mean, p99, worst = diff.mean(), numpy.percentile(diff, 99), diff.max()
+            ok = mean <= 1.0 and p99 <= 2.0
+            print('%-13s %-11s %-14s 2 ranks vs 1: mean %.3f p99 %.1f max %.0f /255 over %d pixels %s'
+                  % (name, mode, model, mean, p99, worst, covered.sum(), 'ok' if ok else 'FAIL'))
+            if not ok:
+                failures.append(png)
+    print('%d failure(s)' % len(failures))
+    return 1 if failures else 0
+
+
+if __name__ == '__main__':
+    if sys.argv[1] == '--worker':
+        worker(*sys.argv[2:4])
+    else:
+        sys.exit(driver(*sys.argv[1:3]))

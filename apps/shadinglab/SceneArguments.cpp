@@ -396,6 +396,10 @@ void LightsFromArguments(const Arguments& args, SceneArguments& scene)
   {
     render::ToLocal(scene.frame, lighting); // the given lights are in world coordinates
   }
+  for (int k = 0; k < lighting.lightCount; ++k)
+  {
+    lighting.lights[k].solidAngle = scene.settings.lightSolidAngle;
+  }
   lighting.ambientIntensity = Vec3<double>(1, 1, 1);
 
 }

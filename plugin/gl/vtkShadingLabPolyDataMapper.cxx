@@ -242,7 +242,7 @@ void vtkShadingLabPolyDataMapper::ChooseAutoMode(vtkRenderer* ren, vtkPolyData* 
     static_cast<double>(input->GetMTime()), static_cast<double>(this->GetMTime()),
     static_cast<double>(ren->GetActiveCamera()->GetMTime()),
     static_cast<double>(ren->GetSize()[0]), static_cast<double>(ren->GetSize()[1]),
-    in.Settings.render.maxError, in.Settings.lightIntensity };
+    in.Settings.render.maxError, in.Settings.lightIntensity, in.Settings.lightSolidAngle };
   {
     vtkCollectionSimpleIterator lit;
     ren->GetLights()->InitTraversal(lit);
@@ -262,7 +262,8 @@ void vtkShadingLabPolyDataMapper::ChooseAutoMode(vtkRenderer* ren, vtkPolyData* 
   // The lights as drawn, in the world, then in the mesh's local frame: the
   // prediction reads their strength (render::LightScale) and, for its
   // estimate of what interpolating colours costs (eq. 4.4), where they are.
-  sl::Lighting<double> lighting = sl::render::LightingFromVtk(ren, in.Settings.lightIntensity);
+  sl::Lighting<double> lighting =
+    sl::render::LightingFromVtk(ren, in.Settings.lightIntensity, in.Settings.lightSolidAngle);
   sl::render::ToLocal(in.AutoFrame, lighting);
   const int* size = ren->GetSize();
   const sl::render::ModeChoice choice = sl::render::ChooseMode(in.AutoMesh, in.AutoNormals,
@@ -498,7 +499,8 @@ void vtkShadingLabPolyDataMapper::SetMapperShaderParameters(
   // The lights (the one vtkLight conversion, render::LightingFromVtk) in
   // view coordinates.
   const sl::render::Settings& settings = this->Internal->Settings;
-  const sl::Lighting<double> lighting = sl::render::LightingFromVtk(ren, settings.lightIntensity);
+  const sl::Lighting<double> lighting =
+    sl::render::LightingFromVtk(ren, settings.lightIntensity, settings.lightSolidAngle);
   const int count = lighting.lightCount;
   for (int j = 0; j < count; ++j)
   {

@@ -7,6 +7,7 @@
 #   pvbatch --force-offscreen-rendering RepresentationTest.py PLUGIN MESH COARSE CLI OUTDIR
 #
 # COARSE is a mesh of large facets for the flat-mode comparison.
+import math
 import os
 import subprocess
 import sys
@@ -431,6 +432,27 @@ Render(view)
 pos, focal, up = camera.GetPosition(), camera.GetFocalPoint(), camera.GetViewUp()
 direction = [p - f for p, f in zip(pos, focal)]
 cpu_parity('creased_cylinder_phong', cylinder_colored_path, 'phong')
+
+# 8. The lights' solid angle (LightSolidAngle, eq. 1.1): irradiance I_L dw,
+#    so pi / 2 halves a white Lambertian sphere's brightest pixel (linear,
+#    Clamp display).
+cylinder.Visibility = 0
+ball = Show(Sphere(ThetaResolution=64, PhiResolution=32), view)
+ball.Representation = 'ShadingLab Surface'
+ball.ShadingMode = 'Phong'
+ball.MaterialPreset = 'Custom'
+ball.ReflectanceModel = 'Lambert'
+ball.Ks = 0.0
+ball.Kd = 1.0
+ball.AmbientReflectance = 0.0
+ball.DisplayTransform = 'Clamp'
+ResetCamera(view)
+brightest = {}
+for solid_angle in (math.pi, math.pi / 2):
+    ball.LightSolidAngle = solid_angle
+    brightest[solid_angle] = shot('solid_angle_%.4f' % solid_angle)[:, :, 1].max()
+check(brightest[math.pi] > 200 and abs(brightest[math.pi / 2] - brightest[math.pi] / 2) <= 1.5,
+      'LightSolidAngle pi/2 halves the irradiance (%.0f -> %.0f)' % (brightest[math.pi], brightest[math.pi / 2]))
 
 print('%d failure(s)' % len(failures))
 sys.exit(1 if failures else 0)

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <sstream>
 
 namespace shadinglab::render
@@ -74,6 +75,21 @@ std::string Number(double v, int digits)
   s.precision(digits);
   s << v;
   return s.str();
+}
+
+/// The shortest of 10 to 17 significant digits that reads back as `v`
+/// exactly (pi as a default stays pi through a .pvsm or a command line).
+std::string RoundTripNumber(double v)
+{
+  for (int digits = 10; digits < 17; ++digits)
+  {
+    const std::string text = Number(v, digits);
+    if (std::strtod(text.c_str(), nullptr) == v)
+    {
+      return text;
+    }
+  }
+  return Number(v, 17);
 }
 
 SettingRow Row(const char* key, const char* property, const char* label, SettingGroup group,
@@ -273,6 +289,11 @@ void ColorRows(std::vector<SettingRow>& t)
   }
 }
 
+/// The smallest solid angle a light may subtend: 1e-6 sr, about a
+/// seventieth of the sun's 6.8e-5 sr (a point-like source; zero would be
+/// no light at all, which the intensity says more plainly).
+constexpr double kMinLightSolidAngle = 1e-6;
+
 /// The rows of the lights.
 void LightRows(std::vector<SettingRow>& t)
 {
@@ -288,6 +309,19 @@ void LightRows(std::vector<SettingRow>& t)
     r.metavar = "I";
     r.set = [](Settings& s, const SettingValue& v) { s.lightIntensity = v.numbers[0]; };
     r.get = [](const Settings& s) { return Number(s.lightIntensity); };
+    t.push_back(r);
+  }
+  {
+    SettingRow r = Row("light-solid-angle", "LightSolidAngle", "Light Solid Angle (sr)", G::Lights, K::Real);
+    // Up to the whole sphere, 4 pi sr.
+    r.min = kMinLightSolidAngle;
+    r.max = 4 * kPi<double>;
+    r.doc = "the solid angle dw each light subtends, in steradians: irradiance I_L dw (eq. 1.1); pi "
+            "makes a unit light on a white Lambertian surface give 1";
+    r.frontEnds = kCli | kParaView | kMapper;
+    r.metavar = "SR";
+    r.set = [](Settings& s, const SettingValue& v) { s.lightSolidAngle = v.numbers[0]; };
+    r.get = [](const Settings& s) { return Number(s.lightSolidAngle); };
     t.push_back(r);
   }
 }
@@ -757,7 +791,7 @@ std::string FormatSetting(const SettingRow& row, const SettingValue& value)
       std::string out;
       for (size_t i = 0; i < value.numbers.size(); ++i)
       {
-        out += (i ? "," : "") + Number(value.numbers[i], 10);
+        out += (i ? "," : "") + RoundTripNumber(value.numbers[i]);
       }
       return out;
     }

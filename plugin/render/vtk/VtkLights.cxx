@@ -8,7 +8,7 @@
 namespace shadinglab::render
 {
 
-Lighting<double> LightingFromVtk(vtkRenderer* renderer, double intensityScale)
+Lighting<double> LightingFromVtk(vtkRenderer* renderer, double intensityScale, double solidAngle)
 {
   Lighting<double> lighting;
   lighting.lightCount = 0; // (the default is one light; none is a headlight)
@@ -27,7 +27,7 @@ Lighting<double> LightingFromVtk(vtkRenderer* renderer, double intensityScale)
     const double i = light->GetIntensity() * intensityScale;
     Light<double>& l = lighting.lights[lighting.lightCount++];
     l.intensity = Vec3<double>(c[0] * i, c[1] * i, c[2] * i);
-    l.solidAngle = kPi<double>;
+    l.solidAngle = solidAngle;
     double pos[3], fp[3];
     light->GetTransformedPosition(pos);
     light->GetTransformedFocalPoint(fp);

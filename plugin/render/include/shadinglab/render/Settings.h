@@ -62,6 +62,10 @@ struct Settings
   /// Scales every light's intensity I_L (eq. 1.1): the CLI's lights, the
   /// explorer's light, the vtkLights a mapper draws with.
   double lightIntensity = 1.0;
+  /// The solid angle dw every light subtends (eq. 1.1, in steradians): its
+  /// irradiance is I_L dw. pi makes a unit white light on a white
+  /// Lambertian surface facing it give exactly 1 (Light::solidAngle).
+  double lightSolidAngle = kPi<double>;
   Material<double> material;
   std::string preset; ///< the preset `material` was started from ("" custom)
   NormalSettings normals;

@@ -31,6 +31,7 @@ MaterialEditor::MaterialEditor(QWidget* parent)
   , Lobes(new QComboBox(this))
 {
   auto* form = new QFormLayout(this);
+  this->Form = form;
   form->setContentsMargins(0, 0, 0, 0);
   this->Preset->addItem("(custom)");
   for (const MaterialPreset& preset : MaterialPresets())
@@ -70,9 +71,10 @@ MaterialEditor::MaterialEditor(QWidget* parent)
   this->AddRow("specular", "specular G", 0.0, 1.0, false, &this->Value.specularColor.y);
   this->AddRow("specular", "specular B", 0.0, 1.0, false, &this->Value.specularColor.z);
   this->AddRow("ambient", "ambient", 0.0, 0.5, false, &this->Value.ambient.x);
-  for (const Row& row : this->Rows)
+  for (Row& row : this->Rows)
   {
     auto* line = new QWidget(this);
+    row.line = line;
     auto* h = new QHBoxLayout(line);
     h->setContentsMargins(0, 0, 0, 0);
     h->addWidget(row.slider, 1);
@@ -95,6 +97,7 @@ MaterialEditor::MaterialEditor(QWidget* parent)
   });
   connect(this->Model, QOverload<int>::of(&QComboBox::activated), this, [this](int index) {
     this->Value.model = static_cast<ReflectanceModel>(this->Model->itemData(index).toInt());
+    this->ShowModelParameters();
     this->Emit();
   });
   connect(this->Variant, QOverload<int>::of(&QComboBox::activated), this, [this](int index) {
@@ -129,7 +132,7 @@ void MaterialEditor::AddRow(const char* key, const QString& label, double lo, do
   // The value's range and documentation are the settings table's (one
   // home for every front end); [lo, hi] is the part the slider spans.
   const render::SettingRow* setting = render::FindSetting(key);
-  Row row{ label, lo, hi, setting->min, setting->max, logScale,
+  Row row{ key, label, lo, hi, setting->min, setting->max, logScale,
     new QSlider(Qt::Horizontal, this), new QDoubleSpinBox(this), target };
   row.slider->setRange(0, kSliderSteps);
   row.slider->setObjectName(label); // found by label (tests, scripting)
@@ -227,7 +230,30 @@ void MaterialEditor::Refresh()
   this->Model->setCurrentIndex(this->Model->findData(static_cast<int>(this->Value.model)));
   this->Variant->setCurrentIndex(this->Value.variant == SpecularVariant::Walter2007 ? 1 : 0);
   this->Lobes->setCurrentIndex(std::clamp(this->Value.lobeCount, 1, 2) - 1);
+  this->ShowModelParameters();
   this->Updating = false;
+}
+
+void MaterialEditor::ShowModelParameters()
+{
+  const ReflectanceModel model = this->Value.model;
+  auto show = [this](QWidget* field, bool visible) {
+    field->setVisible(visible);
+    if (QWidget* label = this->Form->labelForField(field))
+    {
+      label->setVisible(visible);
+    }
+  };
+  show(this->Variant, ModelUsesParameter(model, "variant"));
+  show(this->Lobes, ModelUsesParameter(model, "m"));
+  for (const Row& row : this->Rows)
+  {
+    // The second lobe's roughness and the first lobe's weight mean
+    // something only in a mixture of two.
+    const bool secondLobe = row.label.contains("lobe 2") || row.label.contains("weight lobe");
+    show(row.line,
+      ModelUsesParameter(model, row.key) && (!secondLobe || this->Value.lobeCount == 2));
+  }
 }
 
 void MaterialEditor::Emit()

@@ -13,6 +13,7 @@
 #include <vector>
 
 class QComboBox;
+class QFormLayout;
 class QDoubleSpinBox;
 class QSlider;
 
@@ -38,6 +39,7 @@ signals:
 private:
   struct Row
   {
+    const char* key; ///< the settings table's key (a model declares the keys it reads)
     QString label;
     double lo, hi;   ///< the slider's span
     double min, max; ///< the setting's range (shadinglab/render/Settings.h)
@@ -45,6 +47,7 @@ private:
     QSlider* slider;
     QDoubleSpinBox* box;
     double* target;
+    QWidget* line = nullptr; ///< slider and box, one row of the form
   };
   /// A slider and spin box for `target`, the setting `key`'s value (or one
   /// channel of it).
@@ -52,6 +55,9 @@ private:
     double* target);
   void OnRowEdited(int index, double value);
   void Refresh();
+  /// Shows the rows of the parameters the chosen model declares
+  /// (ReflectanceModelRow::parameters), the second lobe's with two lobes.
+  void ShowModelParameters();
   void Emit();
 
   Material<double> Value;
@@ -60,6 +66,7 @@ private:
   QComboBox* Variant;
   QComboBox* Lobes;
   std::vector<Row> Rows;
+  QFormLayout* Form = nullptr;
   bool Updating = false;
 };
 

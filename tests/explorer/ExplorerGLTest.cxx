@@ -134,6 +134,7 @@ private slots:
   void LommelSeeligerOnGpuMatchesCpu();
   void UserMeshIsFramedWhateverItsPlaceAndSize();
   void ColourByDataOnBothBackends();
+  void MaterialEditorShowsTheModelsParameters();
 };
 
 void ExplorerGLTest::CameraLinkMovesAllPanels()
@@ -234,6 +235,40 @@ void ExplorerGLTest::MaterialSliderRerendersOnePanel()
   const Material<double> m = view->Panel(2)->Spec().material;
   QVERIFY(m.kd + m.ks <= 1.0 + 1e-12);
   QCOMPARE(m.kd, 0.95);
+}
+
+void ExplorerGLTest::MaterialEditorShowsTheModelsParameters()
+{
+  // Each model declares the parameters it reads (ReflectanceModelRow::
+  // parameters): the editor shows those and hides the rest, as Disney's
+  // BRDF Explorer shows a BRDF's own parameters.
+  widgets::MaterialEditor editor;
+  auto shown = [&editor](const char* label) {
+    auto* slider = editor.findChild<QSlider*>(label);
+    return slider && slider->isVisibleTo(&editor);
+  };
+  Material<double> m;
+  m.model = ReflectanceModel::Lambert;
+  editor.SetMaterial(m);
+  QVERIFY(shown("kd") && shown("albedo R") && shown("ambient"));
+  QVERIFY(!shown("ks") && !shown("shininess n") && !shown("eta R") && !shown("m (lobe 1)"));
+  m.model = ReflectanceModel::BlinnPhong;
+  editor.SetMaterial(m);
+  QVERIFY(shown("ks") && shown("shininess n") && shown("specular R"));
+  QVERIFY(!shown("eta R") && !shown("k R") && !shown("m (lobe 1)"));
+  m.model = ReflectanceModel::CookTorrance;
+  m.lobeCount = 1;
+  editor.SetMaterial(m);
+  QVERIFY(shown("m (lobe 1)") && shown("eta R") && shown("k B") && shown("ks"));
+  QVERIFY(!shown("shininess n") && !shown("specular R") && !shown("m (lobe 2)"));
+  m.lobeCount = 2;
+  m.lobes[0].weight = m.lobes[1].weight = 0.5;
+  m.lobes[1].m = 0.5;
+  editor.SetMaterial(m);
+  QVERIFY(shown("m (lobe 2)") && shown("weight lobe 1"));
+  m.model = ReflectanceModel::LommelSeeliger;
+  editor.SetMaterial(m);
+  QVERIFY(shown("kd") && !shown("ks") && !shown("eta R") && !shown("m (lobe 2)"));
 }
 
 void ExplorerGLTest::EveryScreenshotIsDrawn()

@@ -15,6 +15,7 @@
 #include "shadinglab/model/Vec3.h"
 
 #include <string>
+#include <string_view>
 
 namespace shadinglab
 {
@@ -39,15 +40,47 @@ struct ReflectanceModelRow
   const char* name;  ///< command-line / material-format name
   const char* label; ///< for people
   const char* glsl;  ///< GLSL #define suffix (SL_MODEL_<glsl>)
+  /// The material parameters the model reads, by their keys in the
+  /// settings table (space-separated): what a material editor shows for it.
+  /// A new model declares its own here.
+  const char* parameters;
 };
 
 inline constexpr ReflectanceModelRow kReflectanceModels[] = {
-  { ReflectanceModel::Lambert, "lambert", "Lambert", "LAMBERT" },
-  { ReflectanceModel::Phong, "phong", "Phong", "PHONG" },
-  { ReflectanceModel::BlinnPhong, "blinn-phong", "Blinn-Phong", "BLINN_PHONG" },
-  { ReflectanceModel::CookTorrance, "cook-torrance", "Cook-Torrance", "COOK_TORRANCE" },
-  { ReflectanceModel::LommelSeeliger, "lommel-seeliger", "Lommel-Seeliger", "LOMMEL_SEELIGER" },
+  { ReflectanceModel::Lambert, "lambert", "Lambert", "LAMBERT", "ambient kd albedo" },
+  { ReflectanceModel::Phong, "phong", "Phong", "PHONG", "ambient kd ks shininess albedo specular" },
+  { ReflectanceModel::BlinnPhong, "blinn-phong", "Blinn-Phong", "BLINN_PHONG",
+    "ambient kd ks shininess albedo specular" },
+  // F colours the specular term: no specular colour (eq. 1.5-1.8).
+  { ReflectanceModel::CookTorrance, "cook-torrance", "Cook-Torrance", "COOK_TORRANCE",
+    "ambient kd ks m w eta k variant albedo" },
+  { ReflectanceModel::LommelSeeliger, "lommel-seeliger", "Lommel-Seeliger", "LOMMEL_SEELIGER",
+    "ambient kd albedo" },
 };
+
+/// Whether `model` reads the material parameter `key` (its row's
+/// `parameters`).
+inline bool ModelUsesParameter(ReflectanceModel model, std::string_view key)
+{
+  for (const ReflectanceModelRow& row : kReflectanceModels)
+  {
+    if (row.value != model)
+    {
+      continue;
+    }
+    std::string_view rest = row.parameters;
+    while (!rest.empty())
+    {
+      const size_t space = rest.find(' ');
+      if (rest.substr(0, space) == key)
+      {
+        return true;
+      }
+      rest = space == std::string_view::npos ? std::string_view() : rest.substr(space + 1);
+    }
+  }
+  return false;
+}
 
 /// Material parameters of the illumination model. Plain data, so it can be
 /// cast between float and double and uploaded to GLSL uniforms unchanged.

@@ -51,7 +51,7 @@ void ColorLegend::paintEvent(QPaintEvent*)
   {
     const int y = top + (barH - 1) * (4 - k) / 4;
     painter.drawLine(barX + barW, y, barX + barW + 4, y);
-    const double value = this->Map.rangeMin + k * (this->Map.rangeMax - this->Map.rangeMin) / 4;
+    const double value = this->Map.LegendTick(k, 4);
     painter.drawText(barX + barW + 8, y + metrics.ascent() / 2 - 1, QString::number(value, 'g', 4));
   }
 }

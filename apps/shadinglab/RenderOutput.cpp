@@ -152,7 +152,7 @@ void DrawColorLegend(std::vector<uint8_t>& canvas, int canvasWidth, int canvasHe
       }
     }
     char value[32];
-    std::snprintf(value, sizeof value, "%.4g", map.rangeMin + k * (map.rangeMax - map.rangeMin) / 4);
+    std::snprintf(value, sizeof value, "%.4g", map.LegendTick(k, 4));
     DrawLabel(canvas, W, H, x0 + barW + 7, y - font / 2 - 2, value, font);
   }
 }

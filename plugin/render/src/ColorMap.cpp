@@ -70,4 +70,11 @@ bool FindColorMap(const std::string& name, ColorMap& map)
   return false;
 }
 
+double ColorMap::LegendTick(int k, int count) const
+{
+  const double width = this->rangeMax - this->rangeMin;
+  const double value = this->rangeMin + k * width / count;
+  return std::abs(value) <= kLegendZeroFraction * std::abs(width) ? 0.0 : value;
+}
+
 } // namespace shadinglab::render

@@ -28,7 +28,17 @@ struct ColorMap
   /// min) * bins), clamped), or the NaN colour. A range of zero width maps
   /// everything to the first bin.
   Vec3<float> Map(double s) const;
+
+  /// The value of tick k of `count` + 1 evenly spaced legend ticks (0: the
+  /// range's minimum). A value within kLegendZeroFraction of the range's
+  /// width from zero is 0: float data and rounding put a range's end at
+  /// -2.6e-08 for a surface that starts at zero.
+  double LegendTick(int k, int count) const;
 };
+
+/// 1e-6 of the range's width: far below the 4 significant digits a legend
+/// prints, far above double rounding of a data range (1e-16 relative).
+constexpr double kLegendZeroFraction = 1e-6;
 
 /// The presets: ParaView's name and the command line's (kebab-case, e.g.
 /// "Viridis (matplotlib)" and "viridis"), in the order listed.

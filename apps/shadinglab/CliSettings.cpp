@@ -57,14 +57,6 @@ ReadOptions ReadOptionsFromArguments(const Arguments& args)
   return options;
 }
 
-std::vector<std::string> ReadFlags()
-{
-  std::vector<std::string> valued, flags;
-  AddSettingFlags(valued, flags, render::SettingGroup::Mesh);
-  valued.insert(valued.end(), flags.begin(), flags.end());
-  return valued;
-}
-
 const std::vector<std::string>& MaterialOptions()
 {
   static const std::vector<std::string> options = [] {

@@ -24,11 +24,9 @@ void ApplySettingArguments(const Arguments& args, render::SettingGroup group,
   render::Settings& settings, const std::map<std::string, std::string>& implied = {});
 
 /// The reading options (--nonlinear-subdivision, the table's Mesh rows shown
-/// on the command line) of a command that reads a mesh file; throws
-/// UsageError.
+/// on the command line, accepted through AddSettingFlags) of a command that
+/// reads a mesh file; throws UsageError.
 ReadOptions ReadOptionsFromArguments(const Arguments& args);
-/// Their flags, for an Arguments' valued options.
-std::vector<std::string> ReadFlags();
 
 /// Options every material-taking command accepts (see MaterialHelp()).
 const std::vector<std::string>& MaterialOptions();

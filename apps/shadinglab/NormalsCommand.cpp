@@ -38,11 +38,9 @@ int RunNormals(int argc, char** argv)
 {
   const Stopwatch total;
   std::vector<std::string> valued = { "out", "weights", "feature-angle", "subdivide", "scheme" };
-  for (const std::string& flag : ReadFlags())
-  {
-    valued.push_back(flag);
-  }
-  const Arguments args(argc, argv, valued, { "help", "json", "fix-t-junctions" }, {}, { "weld" });
+  std::vector<std::string> flags = { "help", "json", "fix-t-junctions" };
+  AddSettingFlags(valued, flags, render::SettingGroup::Mesh);
+  const Arguments args(argc, argv, valued, flags, {}, { "weld" });
   if (args.Has("help"))
   {
     std::cout << kNormalsHelp;

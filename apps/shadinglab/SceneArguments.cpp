@@ -414,12 +414,10 @@ std::unique_ptr<SceneArguments> SceneFromArguments(int argc, char** argv, const 
     "subdivide", "scheme" };
   std::vector<std::string> flags = { "help", "stats", "parallel", "fix-t-junctions" };
   for (auto group : { render::SettingGroup::Render, render::SettingGroup::Lights,
-         render::SettingGroup::Material })
+         render::SettingGroup::Material, render::SettingGroup::Mesh })
   {
     AddSettingFlags(valued, flags, group);
   }
-  const std::vector<std::string> reading = ReadFlags();
-  valued.insert(valued.end(), reading.begin(), reading.end());
   valued.insert(valued.end(), extraValued.begin(), extraValued.end());
   auto result =
     std::make_unique<SceneArguments>(Arguments(argc, argv, valued, flags, { "light" }, { "weld" }));

@@ -12,6 +12,7 @@ import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from pngs import read_png  # noqa: E402
+from mpirun import clean_environment  # noqa: E402
 
 plugin, mesh, outdir = sys.argv[1:4]
 os.makedirs(outdir, exist_ok=True)
@@ -20,9 +21,7 @@ os.makedirs(outdir, exist_ok=True)
 with socket.socket() as s:
     s.bind(('localhost', 0))
     port = s.getsockname()[1]
-# pvpython initialized MPI as a singleton: its Open MPI variables must not
-# reach the mpiexec it starts.
-env = {k: v for k, v in os.environ.items() if not k.startswith(('OMPI_', 'PMIX_', 'OPAL_'))}
+env = clean_environment()
 server = subprocess.Popen(['mpiexec', '--allow-run-as-root', '--oversubscribe', '-n', '2', 'pvserver',
                            '--force-offscreen-rendering', '--server-port=%d' % port],
                           env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,

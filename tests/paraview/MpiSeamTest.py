@@ -13,11 +13,11 @@
 #   pvpython MpiSeamTest.py PLUGIN OUTDIR       (the driver; runs mpiexec)
 #   pvbatch MpiSeamTest.py --worker PLUGIN DIR  (one run, on rank 0)
 import os
-import subprocess
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from pngs import read_png  # noqa: E402
+from mpirun import pvbatch_on_ranks  # noqa: E402
 
 W, H = 400, 300
 MESHES = ('noisy_sphere', 'isosurface', 'scan')
@@ -139,10 +139,7 @@ def driver(plugin, outdir):
         d = os.path.join(outdir, 'ranks%d' % ranks)
         os.makedirs(d, exist_ok=True)
         make_meshes(d)
-        env = {k: v for k, v in os.environ.items() if not k.startswith(('OMPI_', 'PMIX_', 'OPAL_'))}
-        subprocess.run(['mpiexec', '--allow-run-as-root', '--oversubscribe', '-n', str(ranks),
-                        'pvbatch', '--force-offscreen-rendering', os.path.abspath(__file__),
-                        '--worker', plugin, d], check=True, timeout=600, env=env)
+        pvbatch_on_ranks(ranks, __file__, plugin, d)
         dirs[ranks] = d
     for name in MESHES:
         for mode, model in MODES:

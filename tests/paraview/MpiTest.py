@@ -9,12 +9,12 @@
 #   pvpython MpiTest.py PLUGIN MESH OUTDIR      (the driver; runs mpiexec)
 #   pvbatch MpiTest.py --worker PLUGIN MESH OUT (one run, on rank 0)
 import os
-import subprocess
 import sys
 import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from pngs import read_png  # noqa: E402
+from mpirun import pvbatch_on_ranks  # noqa: E402
 
 W, H = 400, 300
 
@@ -115,12 +115,7 @@ def driver(plugin, mesh, outdir):
     runs = {}
     for ranks in (1, 2):
         out = os.path.join(outdir, 'ranks%d' % ranks)
-        # pvpython initialized MPI as a singleton: its Open MPI variables
-        # must not reach the mpiexec it starts.
-        env = {k: v for k, v in os.environ.items() if not k.startswith(('OMPI_', 'PMIX_', 'OPAL_'))}
-        subprocess.run(['mpiexec', '--allow-run-as-root', '--oversubscribe', '-n', str(ranks),
-                        'pvbatch', '--force-offscreen-rendering', os.path.abspath(__file__),
-                        '--worker', plugin, mesh, out], check=True, timeout=600, env=env)
+        pvbatch_on_ranks(ranks, __file__, plugin, mesh, out)
         runs[ranks] = out
     failures = []
     serial = numpy.load(runs[1] + '.npy')

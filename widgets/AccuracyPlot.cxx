@@ -110,23 +110,32 @@ QChartView* MakeChart(const std::string& group, const std::vector<AccuracyPoint>
 
 } // namespace
 
-std::string WriteAccuracyPlot(const std::vector<std::string>& groups,
-  const std::vector<std::vector<AccuracyPoint>>& points, const std::string& title,
-  const std::string& path)
+namespace
 {
-  std::unique_ptr<QApplication> app;
+
+/// A QApplication for the plot's lifetime when none exists (Qt's offscreen
+/// platform without DISPLAY); nullptr when one does.
+std::unique_ptr<QApplication> EnsureApplication()
+{
   static int argc = 1;
   static char name[] = "shadinglab";
   static char* argv[] = { name, nullptr };
-  if (!QApplication::instance())
+  if (QApplication::instance())
   {
-    const char* display = std::getenv("DISPLAY");
-    if (!display || !*display)
-    {
-      setenv("QT_QPA_PLATFORM", "offscreen", 1); // no X: Qt's raster, no window
-    }
-    app = std::make_unique<QApplication>(argc, argv);
+    return nullptr;
   }
+  const char* display = std::getenv("DISPLAY");
+  if (!display || !*display)
+  {
+    setenv("QT_QPA_PLATFORM", "offscreen", 1); // no X: Qt's raster, no window
+  }
+  return std::make_unique<QApplication>(argc, argv);
+}
+
+/// The charts under a bold title, `columns` a row, grabbed to a PNG.
+std::string WritePage(const std::string& title, const std::vector<QChartView*>& charts,
+  int columns, const std::string& path)
+{
   QWidget page;
   page.setStyleSheet("background: white;");
   auto* layout = new QVBoxLayout(&page);
@@ -139,13 +148,11 @@ std::string WriteAccuracyPlot(const std::vector<std::string>& groups,
   layout->addWidget(heading);
   auto* grid = new QGridLayout;
   layout->addLayout(grid, 1);
-  const int columns = groups.size() > 1 ? 2 : 1;
-  for (size_t i = 0; i < groups.size() && i < points.size(); ++i)
+  for (size_t i = 0; i < charts.size(); ++i)
   {
-    grid->addWidget(MakeChart(groups[i], points[i]), static_cast<int>(i) / columns,
-      static_cast<int>(i) % columns);
+    grid->addWidget(charts[i], static_cast<int>(i) / columns, static_cast<int>(i) % columns);
   }
-  const int rows = static_cast<int>((groups.size() + columns - 1) / columns);
+  const int rows = static_cast<int>((charts.size() + columns - 1) / columns);
   page.resize(columns * 700, 60 + rows * 480);
   page.ensurePolished();
   page.layout()->activate();
@@ -154,6 +161,107 @@ std::string WriteAccuracyPlot(const std::vector<std::string>& groups,
     return "cannot write " + path;
   }
   return "";
+}
+
+QLogValueAxis* LogAxis(const std::string& title)
+{
+  auto* axis = new QLogValueAxis;
+  axis->setTitleText(QString::fromStdString(title));
+  axis->setLabelFormat("%g");
+  axis->setBase(10);
+  axis->setMinorTickCount(8);
+  return axis;
+}
+
+/// Values are drawn no lower than this fraction of the panel's largest:
+/// an exact zero would be -infinity on a log axis.
+constexpr double kLogFloorFraction = 1e-16;
+
+QChartView* MakeLogLogChart(const LogLogPanel& panel)
+{
+  auto* chart = new QChart;
+  StyleChart(chart, QString::fromStdString(panel.title));
+  QLogValueAxis* x = LogAxis(panel.xTitle);
+  QLogValueAxis* y = LogAxis(panel.yTitle);
+  chart->addAxis(x, Qt::AlignBottom);
+  chart->addAxis(y, Qt::AlignLeft);
+  double xlo = 1e300, xhi = 0, yhi = std::max(0.0, panel.referenceY);
+  for (const LogLogLine& line : panel.lines)
+  {
+    for (size_t i = 0; i < line.x.size(); ++i)
+    {
+      xlo = std::min(xlo, line.x[i]);
+      xhi = std::max(xhi, line.x[i]);
+      yhi = std::max(yhi, line.y[i]);
+    }
+  }
+  const double floor = yhi * kLogFloorFraction;
+  double ylo = yhi;
+  auto add = [&](QLineSeries* series)
+  {
+    chart->addSeries(series);
+    series->attachAxis(x);
+    series->attachAxis(y);
+  };
+  for (const LogLogLine& line : panel.lines)
+  {
+    auto* series = new QLineSeries;
+    series->setName(QString::fromStdString(line.name));
+    series->setPen(QPen(PanelColor(line.color), 2, line.dashed ? Qt::DashLine : Qt::SolidLine));
+    series->setPointsVisible(!line.dashed);
+    for (size_t i = 0; i < line.x.size() && i < line.y.size(); ++i)
+    {
+      const double v = std::max(line.y[i], floor);
+      ylo = std::min(ylo, v);
+      series->append(line.x[i], v);
+    }
+    add(series);
+  }
+  if (panel.referenceY > 0 && xlo <= xhi)
+  {
+    auto* series = new QLineSeries;
+    series->setName(QString::fromStdString(panel.referenceName));
+    series->setPen(QPen(Qt::black, 1.5, Qt::DotLine));
+    series->append(xlo, panel.referenceY);
+    series->append(xhi, panel.referenceY);
+    add(series);
+  }
+  if (xlo <= xhi && ylo > 0)
+  {
+    x->setRange(xlo, xhi);
+    y->setRange(std::pow(10.0, std::floor(std::log10(ylo))), std::pow(10.0, std::ceil(std::log10(yhi))));
+  }
+  chart->legend()->setAlignment(Qt::AlignRight); // long names: a column beside the plot
+  auto* view = new QChartView(chart);
+  view->setRenderHint(QPainter::Antialiasing);
+  return view;
+}
+
+} // namespace
+
+std::string WriteLogLogPlot(
+  const std::vector<LogLogPanel>& panels, const std::string& title, const std::string& path)
+{
+  const std::unique_ptr<QApplication> app = EnsureApplication();
+  std::vector<QChartView*> charts;
+  for (const LogLogPanel& panel : panels)
+  {
+    charts.push_back(MakeLogLogChart(panel));
+  }
+  return WritePage(title, charts, 1, path);
+}
+
+std::string WriteAccuracyPlot(const std::vector<std::string>& groups,
+  const std::vector<std::vector<AccuracyPoint>>& points, const std::string& title,
+  const std::string& path)
+{
+  const std::unique_ptr<QApplication> app = EnsureApplication();
+  std::vector<QChartView*> charts;
+  for (size_t i = 0; i < groups.size() && i < points.size(); ++i)
+  {
+    charts.push_back(MakeChart(groups[i], points[i]));
+  }
+  return WritePage(title, charts, groups.size() > 1 ? 2 : 1, path);
 }
 
 } // namespace shadinglab::widgets

@@ -19,6 +19,29 @@ struct AccuracyPoint
   bool pareto;
 };
 
+/// A line of a log-log panel (WriteLogLogPlot).
+struct LogLogLine
+{
+  std::string name;
+  std::vector<double> x, y; ///< y <= 0 is drawn at the panel's floor
+  int color = 0;            ///< PanelColor index
+  bool dashed = false;      ///< e.g. a bound beside its measurement
+};
+
+struct LogLogPanel
+{
+  std::string title, xTitle, yTitle;
+  std::vector<LogLogLine> lines;
+  /// A horizontal reference line (e.g. 1/255, the visible step) when > 0.
+  double referenceY = 0;
+  std::string referenceName;
+};
+
+/// Panels of lines on log-log axes, side by side, to a PNG; "" or a
+/// one-line error. As WriteAccuracyPlot, without a display if need be.
+std::string WriteLogLogPlot(
+  const std::vector<LogLogPanel>& panels, const std::string& title, const std::string& path);
+
 /// One panel per group (e.g. per shape) in a grid; returns "" or a one-line
 /// error. Creates a QApplication if none exists (offscreen without DISPLAY).
 std::string WriteAccuracyPlot(const std::vector<std::string>& groups,

@@ -4,6 +4,7 @@
 #include "AccuracyStudy.h"
 #include "Commands.h"
 
+#include "shadinglab/cpu/ScanStudy.h"
 #include "shadinglab/gl/GpuRenderer.h"
 #ifdef SHADINGLAB_HAVE_QT
 #include "AccuracyPlot.h"
@@ -33,6 +34,9 @@ const char* kAccuracyHelp =
   "the surface ray-cast with its exact normal. Writes DIR/accuracy.csv (one row per\n"
   "configuration; columns in docs/accuracy.md), DIR/accuracy.md (the Pareto front and\n"
   "every row) and DIR/accuracy.png (frame time against mean error, log-log).\n"
+  "Then the lecture's incremental scan (forward differences, docs/model.md eq. 2.11)\n"
+  "against exact interpolation over spans of 16 to 8192 pixels, in float and double:\n"
+  "DIR/scan.csv, a section of DIR/accuracy.md and DIR/scan.png.\n"
   "  --quick        a subset (sphere, torus; 3 and 2 levels) for CI: well under a minute\n"
   "  --size WxH     image size (default 320x240)\n"
   "  --frames N     frames timed per configuration, median reported (default 5)\n"
@@ -227,6 +231,106 @@ void WritePlot(const std::vector<StudyRow>& rows, const StudyOptions& options,
 #endif
 }
 
+/// The incremental scan's accumulated error (ScanStudy.h): scan.csv, a
+/// section of accuracy.md, scan.png; returns the summary line.
+std::string WriteScanStudy(const std::filesystem::path& dir)
+{
+  const cpu::ScanStudyOptions options;
+  const std::vector<cpu::ScanErrorRow> rows = cpu::IncrementalScanErrors(options);
+  std::ofstream csv(dir / "scan.csv");
+  csv << "quantity,precision,unit,length,mean,worst,last_mean,bound,bound_ratio\n";
+  std::ofstream md(dir / "accuracy.md", std::ios::app);
+  md << "\n## Incremental scan: forward differences against exact interpolation\n\n"
+     << options.spansPerWidth << " random spans per width; gouraud steps the intensity (ends in "
+     << "[0, 1]), phong the normal (ends within 45 degrees of the view axis) lit as (N.H)^"
+     << options.shininess << " with H between them, errors in 1/255; edge steps the crossing x "
+     << "down as many rows in a " << options.imageWidth << "-pixel-wide image, errors in pixels. "
+     << "Bound: docs/model.md eq. 2.12 (phong eq. 2.13), the largest over the spans.\n\n"
+     << "| quantity | precision | length (px) | unit | mean | worst | mean at the end | bound |\n"
+     << "|---|---|---|---|---|---|---|---|\n";
+  std::map<std::string, int> firstVisible;
+  for (const cpu::ScanErrorRow& r : rows)
+  {
+    csv << r.quantity << ',' << r.precision << ',' << r.unit << ',' << r.width << ',' << r.mean
+        << ',' << r.worst << ',' << r.last << ',' << r.bound << ',' << r.boundRatio << '\n';
+    md << "| " << r.quantity << " | " << r.precision << " | " << r.width << " | " << r.unit
+       << " | " << Fmt(r.mean) << " | " << Fmt(r.worst) << " | " << Fmt(r.last) << " | "
+       << Fmt(r.bound) << " |\n";
+    const std::string key = r.quantity + " " + r.precision;
+    // Visible: a display step (1/255), or half a pixel of an edge (a
+    // pixel centre changes sides).
+    if (r.worst >= (r.unit == "px" ? 0.5 : 1.0) && !firstVisible.count(key))
+    {
+      firstVisible[key] = r.width;
+    }
+  }
+  std::ostringstream summary;
+  summary << "incremental scan, worst error over " << options.maxWidth << " steps:";
+  for (const cpu::ScanErrorRow& r : rows)
+  {
+    if (r.width == options.maxWidth)
+    {
+      summary << " " << r.quantity << "/" << r.precision << " " << Fmt(r.worst) << " "
+              << r.unit;
+    }
+  }
+  summary << "; first length with a visible error (1/255, or 0.5 px for an edge):";
+  for (const char* key : { "gouraud float", "phong float", "edge float" })
+  {
+    summary << " " << key << " "
+            << (firstVisible.count(key) ? std::to_string(firstVisible[key]) + " px"
+                                        : "none up to " + std::to_string(options.maxWidth));
+  }
+  md << "\n" << summary.str() << ".\n";
+#ifdef SHADINGLAB_HAVE_QT
+  std::vector<widgets::LogLogPanel> panels(3);
+  const char* quantities[] = { "gouraud", "phong", "edge" };
+  panels[0].title = "Gouraud span: intensity stepped";
+  panels[1].title = "Phong span: normal stepped, (N.H)^" + Fmt(options.shininess);
+  panels[2].title = "Edge: crossing x stepped, " + Fmt(options.imageWidth, 6) + " px wide image";
+  for (int q = 0; q < 3; ++q)
+  {
+    panels[q].xTitle = q == 2 ? "edge length (rows, log)" : "span length (pixels, log)";
+    panels[q].yTitle = q == 2 ? "x error (pixels, log)" : "error (1/255, log)";
+    panels[q].referenceY = q == 2 ? 0.5 : 1.0;
+    panels[q].referenceName = q == 2 ? "half a pixel: a pixel centre changes sides"
+                                     : "1/255: one display step";
+    int color = 0;
+    for (const char* precision : { "float", "double" })
+    {
+      widgets::LogLogLine worst{ std::string(precision) + " worst", {}, {}, color, false };
+      widgets::LogLogLine mean{ std::string(precision) + " mean", {}, {}, color + 1, false };
+      widgets::LogLogLine bound{ std::string(precision) + " bound (eq. 2." +
+          (q == 1 ? "13" : "12") + ")", {}, {}, color, true };
+      for (const cpu::ScanErrorRow& r : rows)
+      {
+        if (r.quantity == quantities[q] && r.precision == precision)
+        {
+          worst.x.push_back(r.width);
+          worst.y.push_back(r.worst);
+          mean.x.push_back(r.width);
+          mean.y.push_back(r.mean);
+          bound.x.push_back(r.width);
+          bound.y.push_back(r.bound);
+        }
+      }
+      panels[q].lines.push_back(worst);
+      panels[q].lines.push_back(mean);
+      panels[q].lines.push_back(bound);
+      color += 2;
+    }
+  }
+  const std::string error = widgets::WriteLogLogPlot(panels,
+    "Incremental scan (forward differences): accumulated error against span length",
+    (dir / "scan.png").string());
+  if (!error.empty())
+  {
+    throw UsageError(error);
+  }
+#endif
+  return summary.str();
+}
+
 } // namespace
 
 int RunAccuracy(int argc, char** argv)
@@ -282,6 +386,7 @@ int RunAccuracy(int argc, char** argv)
                                                     << summary << ".\n";
   std::cout << summary << "\n";
   WritePlot(rows, options, dir);
+  std::cout << WriteScanStudy(dir) << "\n";
   std::cout << "wrote " << rows.size() << " configurations to " << dir.string() << "\n";
   return 0;
 }

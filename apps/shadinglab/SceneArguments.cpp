@@ -136,6 +136,16 @@ void SettingsFromArguments(const Arguments& args, SceneArguments& scene)
   {
     throw UsageError("unknown --backend '" + backend + "' (expected auto, cpu or gpu)");
   }
+  if (options.scan == render::ScanConversion::Incremental)
+  {
+    // The lecture's DDA is the CPU renderer's: auto takes it there.
+    if (backend == "gpu")
+    {
+      throw UsageError("--scan incremental is the CPU renderer's (the GPU's rasterizer "
+                       "interpolates in hardware): use --backend cpu or auto");
+    }
+    scene.backend = "cpu";
+  }
 }
 
 /// --color-by, --colormap, --range: the mesh with the array's values and

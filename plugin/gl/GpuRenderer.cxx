@@ -114,6 +114,11 @@ const render::Image& GpuRenderer::Render(
                                 "(a fragment shader cannot see its triangle's centroid): use "
                                 "--expansion vertex or --backend cpu");
   }
+  if (options.scan != render::ScanConversion::Plane)
+  {
+    throw std::invalid_argument("the incremental scan is the CPU renderer's (the GPU's rasterizer "
+                                "interpolates in hardware): use --backend cpu");
+  }
   const auto start = std::chrono::steady_clock::now();
   Internals& in = *this->Impl;
   const Material<double>& material = scene.material;

@@ -78,5 +78,14 @@ check("## Pareto front" in md and md.count("\n|") > len(rows), "Markdown table")
 with open(os.path.join(out, "accuracy.png"), "rb") as f:
     png = f.read()
 check(png[:4] == b"\x89PNG" and len(png) > 20000, "PNG plot (%d bytes)" % len(png))
+# The incremental scan's section: 3 quantities x 2 precisions x 10 lengths,
+# every row under its bound, and its plot.
+with open(os.path.join(out, "scan.csv")) as f:
+    scan = list(csv.DictReader(f))
+check(len(scan) == 60, "scan.csv: %d rows (60 expected)" % len(scan))
+check(all(float(r["bound_ratio"]) <= 1.0 for r in scan), "scan: every row under its bound")
+check("## Incremental scan" in md, "scan section in accuracy.md")
+with open(os.path.join(out, "scan.png"), "rb") as f:
+    check(f.read(4) == b"\x89PNG", "scan.png")
 print("%d failure(s)" % failures)
 sys.exit(1 if failures else 0)

@@ -298,10 +298,20 @@ TEST(CpuRendererTest, TessellatedPlaneHasNoCracksOrOverlaps)
       mesh.offsets.push_back(static_cast<int64_t>(mesh.connectivity.size()));
     }
   }
+  // The per-row scan and the lecture's incremental one (whose edges step
+  // their crossings: the neighbours of an edge must step it alike).
+  for (const auto& [scan, precision] : {
+         std::pair{ render::ScanConversion::Plane, render::ScanPrecision::Float },
+         std::pair{ render::ScanConversion::Incremental, render::ScanPrecision::Float },
+         std::pair{ render::ScanConversion::Incremental, render::ScanPrecision::Double } })
+  {
+  SCOPED_TRACE(static_cast<int>(scan) * 2 + static_cast<int>(precision));
   render::RenderOptions opt;
   opt.width = 301;
   opt.height = 233;
   opt.countCoverage = true;
+  opt.scan = scan;
+  opt.scanPrecision = precision;
   const auto cam = CameraLookingAt(Vec3d(0.01, -0.02, 2.9), Vec3d(0.01, -0.02, 0), 45);
   const auto image = test::RenderCpu(mesh, cam, OneLight(Vec3f(0, 0, 1)), BlinnPhong(), opt);
   int64_t holes = 0, overlaps = 0, covered = 0;
@@ -329,6 +339,7 @@ TEST(CpuRendererTest, TessellatedPlaneHasNoCracksOrOverlaps)
   EXPECT_GT(covered, 20000);
   EXPECT_EQ(holes, 0);
   EXPECT_EQ(overlaps, 0);
+  }
 }
 
 TEST(CpuRendererTest, OutputIsBitIdenticalForAnyThreadCount)
@@ -345,6 +356,9 @@ TEST(CpuRendererTest, OutputIsBitIdenticalForAnyThreadCount)
     { render::ShadingMode::Phong, sl::ReflectanceModel::CookTorrance },
     { render::ShadingMode::Gouraud, sl::ReflectanceModel::CookTorrance },
   };
+  // The incremental scan too: its edges are stepped from the image's top
+  // in every band, so no row depends on which thread drew the band above.
+  for (const auto scan : { render::ScanConversion::Plane, render::ScanConversion::Incremental })
   for (const auto& [mode, model] : cases)
   {
     render::RenderOptions opt;
@@ -352,6 +366,7 @@ TEST(CpuRendererTest, OutputIsBitIdenticalForAnyThreadCount)
     opt.height = 199;
     opt.mode = mode;
     opt.threads = 1;
+    opt.scan = scan;
     auto material = BlinnPhong();
     material.model = model;
     const auto ref = test::RenderCpu(mesh, cam, OneLight(Vec3f(0.3f, 0.6f, 0.7f)), material, opt);

@@ -95,6 +95,30 @@ struct ScreenVertex
   float a[kMaxAttributes];
 };
 
+/// An edge's canonical direction (lower y first, then lower x): the
+/// polygons sharing an edge compute its crossings from the same end with
+/// the same numbers, bit-identical, so the fill rule stays watertight.
+inline void CanonicalEdge(const ScreenVertex*& p, const ScreenVertex*& q)
+{
+  if (q->y < p->y || (q->y == p->y && q->x < p->x))
+  {
+    std::swap(p, q);
+  }
+}
+
+/// Sorts a scanline's few crossings by x (insertion sort: n is small).
+template<typename Crossing>
+void SortCrossings(Crossing* cross, int n)
+{
+  for (int a = 1; a < n; ++a)
+  {
+    for (int b = a; b > 0 && cross[b].x < cross[b - 1].x; --b)
+    {
+      std::swap(cross[b], cross[b - 1]);
+    }
+  }
+}
+
 struct Matrix4
 {
   double m[4][4];
@@ -201,10 +225,7 @@ void ScanTriangle(int width,
   {
     const ScreenVertex* p = verts[k];
     const ScreenVertex* q = verts[(k + 1) % 3];
-    if (q->y < p->y || (q->y == p->y && q->x < p->x))
-    {
-      std::swap(p, q);
-    }
+    CanonicalEdge(p, q);
     edges[k] = { p->x, p->y, q->y, q->y > p->y ? (q->x - p->x) / (q->y - p->y) : 0.0f };
     ymin = std::min(ymin, p->y);
     ymax = std::max(ymax, q->y);
@@ -302,12 +323,7 @@ void ScanPolygon(int width,
     {
       const ScreenVertex* p = verts[k];
       const ScreenVertex* q = verts[(k + 1) % n];
-      // Canonical direction (lower y first, then lower x): the two polygons
-      // sharing this edge compute bit-identical crossings.
-      if (q->y < p->y || (q->y == p->y && q->x < p->x))
-      {
-        std::swap(p, q);
-      }
+      CanonicalEdge(p, q);
       if (!(p->y <= yc && yc < q->y))
       {
         continue;
@@ -321,14 +337,8 @@ void ScanPolygon(int width,
         c.a[i] = p->a[i] + t * (q->a[i] - p->a[i]);
       }
     }
-    // Sort crossings by x (n is small); pair them even-odd into spans.
-    for (int a = 1; a < nc; ++a)
-    {
-      for (int b = a; b > 0 && cross[b].x < cross[b - 1].x; --b)
-      {
-        std::swap(cross[b], cross[b - 1]);
-      }
-    }
+    // Crossings by x, paired even-odd into spans.
+    SortCrossings(cross, nc);
     for (int s = 0; s + 1 < nc; s += 2)
     {
       const Crossing& L = cross[s];

@@ -14,6 +14,7 @@
 
 #include "Frame.h"
 #include "Geometry.h"
+#include "IncrementalScan.h"
 
 namespace shadinglab::cpu
 {
@@ -49,7 +50,8 @@ struct StageBase
   /// After the thread's last polygon.
   void Finish(ThreadState&) const {}
 
-  /// raster::ScanConvert over this frame's width and attribute slots.
+  /// raster::ScanConvert over this frame's width and attribute slots, or
+  /// the lecture's incremental scan (IncrementalScan.h) when asked.
   template<typename SpanFn, typename PixelFn>
   void Scan(const ScreenVertex* const* verts,
     int n,
@@ -58,6 +60,20 @@ struct StageBase
     SpanFn&& beginSpan,
     PixelFn&& pixel) const
   {
+    if (F.Opt.scan == render::ScanConversion::Incremental)
+    {
+      if (F.Opt.scanPrecision == render::ScanPrecision::Double)
+      {
+        raster::ScanIncremental<double>(
+          F.Width, F.NumAttributes, verts, n, rowBegin, rowEnd, beginSpan, pixel);
+      }
+      else
+      {
+        raster::ScanIncremental<float>(
+          F.Width, F.NumAttributes, verts, n, rowBegin, rowEnd, beginSpan, pixel);
+      }
+      return;
+    }
     ScanConvert(F.Width, F.NumAttributes, verts, n, rowBegin, rowEnd, beginSpan, pixel);
   }
   /// The same, for stages with nothing to do at the start of a span.

@@ -234,7 +234,9 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh,
   F.Width = F.Opt.width * ssaa;
   F.Height = F.Opt.height * ssaa;
   F.Threads = ThreadsFor(F.Opt);
-  F.Perspective = F.Opt.interpolation == render::InterpolationSpace::Perspective && !F.Cam.parallel;
+  // The incremental scan is the lecture's, in screen space (IncrementalScan.h).
+  F.Perspective = F.Opt.interpolation == render::InterpolationSpace::Perspective &&
+    !F.Cam.parallel && F.Opt.scan == render::ScanConversion::Plane;
   SetupTransforms(F);
   // Back faces: culled when asked, or when none can be seen (HiddenBackFaces.h;
   // not in the fill-rule check, which counts every polygon).

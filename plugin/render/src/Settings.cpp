@@ -169,6 +169,32 @@ void RenderRows(std::vector<SettingRow>& t)
     t.push_back(r);
   }
   {
+    SettingRow r = Row("scan", "ScanConversion", "Scan Conversion", G::Render, K::Choice);
+    r.choices = ChoicesOf(kScanConversions);
+    r.doc = "per-row spans (default), or the lecture's incremental DDA: edges stepped row to "
+            "row, spans pixel to pixel, in screen space (eq. 2.10-2.11; CPU)";
+    r.frontEnds = kCli | kExplorer;
+    r.metavar = "S";
+    r.set = [](Settings& s, const SettingValue& v) {
+      s.render.scan = kScanConversions[static_cast<int>(v.numbers[0])].value;
+    };
+    r.get = [](const Settings& s) { return Number(static_cast<int>(s.render.scan)); };
+    t.push_back(r);
+  }
+  {
+    SettingRow r = Row("scan-precision", "ScanPrecision", "Scan Precision", G::Render, K::Choice);
+    r.choices = ChoicesOf(kScanPrecisions);
+    r.doc = "the incremental scan's arithmetic: float (rounding error grows with the span, "
+            "docs/model.md eq. 2.12) or double (CPU)";
+    r.frontEnds = kCli | kExplorer;
+    r.metavar = "P";
+    r.set = [](Settings& s, const SettingValue& v) {
+      s.render.scanPrecision = kScanPrecisions[static_cast<int>(v.numbers[0])].value;
+    };
+    r.get = [](const Settings& s) { return Number(static_cast<int>(s.render.scanPrecision)); };
+    t.push_back(r);
+  }
+  {
     SettingRow r = Row("expansion", "ExpansionPoint", "Fast Phong Expansion", G::Render, K::Choice);
     r.choices = { { "vertex", "Vertex" }, { "centroid", "Centroid" } };
     r.doc = "fast-phong Taylor point: the provoking vertex (both backends) or the centroid "

@@ -72,6 +72,38 @@ enum class PolygonHandling
   Direct       ///< scan-converted as polygons: edge walk in y, span in x (eq. 2.3)
 };
 
+/// How a polygon's attributes reach its pixels (CPU renderer).
+enum class ScanConversion
+{
+  /// Each row's span starts from the polygon's own interpolation (the
+  /// triangle's plane equation, or the polygon's edge crossings computed
+  /// afresh), then steps across the span: no error carries from row to row.
+  Plane,
+  /// The lecture's DDA as written (docs/model.md eq. 2.10-2.11): every edge
+  /// steps its crossing x and its attributes from row to row, every span
+  /// steps its attributes from pixel to pixel, in ScanPrecision, always in
+  /// screen space as on the slides (the interpolation space is ignored).
+  /// Forward differences accumulate rounding error along edges and spans.
+  Incremental
+};
+
+inline constexpr EnumName<ScanConversion> kScanConversions[] = {
+  { ScanConversion::Plane, "plane", "Per row", nullptr },
+  { ScanConversion::Incremental, "incremental", "Incremental (lecture DDA)", nullptr },
+};
+
+/// The arithmetic of the incremental scan.
+enum class ScanPrecision
+{
+  Float, ///< IEEE single: unit roundoff 2^-24
+  Double ///< IEEE double: unit roundoff 2^-53
+};
+
+inline constexpr EnumName<ScanPrecision> kScanPrecisions[] = {
+  { ScanPrecision::Float, "float", "Float", nullptr },
+  { ScanPrecision::Double, "double", "Double", nullptr },
+};
+
 /// How linear intensity becomes a display value in [0, 1] (docs/model.md,
 /// section 6). Both backends apply it per pixel, after interpolation: the
 /// CPU renderer in Image::ToRGB8, the GL mapper in its fragment shader.
@@ -113,6 +145,10 @@ struct RenderOptions
   double maxError = 1.0;
   InterpolationSpace interpolation = InterpolationSpace::Perspective;
   PolygonHandling polygons = PolygonHandling::Triangulate;
+  /// The lecture's incremental scan in float or double, or the per-row
+  /// default (CPU).
+  ScanConversion scan = ScanConversion::Plane;
+  ScanPrecision scanPrecision = ScanPrecision::Float;
   /// fast-phong's Taylor point: the provoking (last) vertex on both
   /// backends by default; Centroid (lower error, docs/model.md eq. 2.7) is
   /// CPU only: a fragment shader cannot see its triangle's centroid.

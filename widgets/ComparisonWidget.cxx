@@ -183,6 +183,12 @@ void ComparisonWidget::SetLightIntensity(double intensity)
   this->RenderAll();
 }
 
+void ComparisonWidget::SetLightSolidAngle(double solidAngle)
+{
+  this->State.lightSolidAngle = solidAngle;
+  this->RenderAll();
+}
+
 std::string ComparisonWidget::SetColorBy(const std::string& colorBy, const std::string& mapName)
 {
   render::ColorMap map;

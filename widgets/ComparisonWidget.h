@@ -51,6 +51,8 @@ public:
   void SetLight(double azimuth, double elevation);
   /// The light's intensity I_L (the light-intensity setting); redraws all.
   void SetLightIntensity(double intensity);
+  /// dw of the light, steradians (eq. 1.1).
+  void SetLightSolidAngle(double solidAngle);
   /**
    * Colours every panel by the array `colorBy` ([POINTS:|CELLS:]NAME[:C],
    * "" for none) through the colour map `map`, over the array's range on

@@ -7,6 +7,7 @@
 #include "shadinglab/render/ColorMap.h"
 #include "shadinglab/render/Options.h"
 #include "shadinglab/render/Renderer.h"
+#include "shadinglab/render/Settings.h"
 
 #include <vtkCamera.h>   // complete types for the smart pointers below
 #include <vtkPolyData.h>
@@ -38,6 +39,10 @@ struct PanelSpec
   /// Direct: quads and polygons scan-converted whole (CPU only: the GPU
   /// triangulates), the lecture's polygon scan conversion.
   render::PolygonHandling polygons = render::PolygonHandling::Triangulate;
+  /// The lecture's incremental scan (CPU only: the GPU interpolates in its
+  /// rasterizer), in float or double.
+  render::ScanConversion scan = render::ScanConversion::Plane;
+  render::ScanPrecision scanPrecision = render::ScanPrecision::Float;
   /// >= 0: the panel displays the per-pixel error |I - I_ref| of its image
   /// against panel `errorReference` as a heat map instead of its image.
   int errorReference = -1;
@@ -53,6 +58,8 @@ struct ViewState
   double lightAzimuth = -25.0;  ///< degrees toward the camera's right
   double lightElevation = 25.0; ///< degrees toward the camera's up
   double lightIntensity = 1.0;  ///< I_L of the one light (eq. 1.1)
+  /// dw of the one light (eq. 1.1, steradians), as the settings table's default.
+  double lightSolidAngle = render::Settings().lightSolidAngle;
   Vec3<float> background{ 0.32f, 0.34f, 0.43f };
   /// Linear intensity to pixel, as the settings table's default (every
   /// panel, both backends; profiles and error maps read display values).

@@ -3,7 +3,9 @@
 
 #include "ChartStyle.h"
 
-#include <QtCharts/QCategoryAxis>
+#include <QtCharts/QBarCategoryAxis>
+#include <QtCharts/QBarSeries>
+#include <QtCharts/QBarSet>
 #include <QtCharts/QChart>
 #include <QtCharts/QChartView>
 #include <QtCharts/QLegendMarker>
@@ -31,28 +33,73 @@ ParameterPlot::ParameterPlot(QWidget* parent)
   layout->addWidget(this->View);
 }
 
+namespace
+{
+
+/// A categorical comparison (normal weightings, say): grouped bars, one
+/// set per series, one group per category; a series' x are category
+/// indices.
+QChart* MakeBarChart(const QString& title, const QString& xTitle, const QString& yTitle,
+  const std::vector<ParameterSeries>& series, const std::vector<QString>& categories)
+{
+  auto* chart = new QChart;
+  StyleChart(chart, title);
+  auto* bars = new QBarSeries;
+  double yhi = 1e-6;
+  for (const ParameterSeries& s : series)
+  {
+    auto* set = new QBarSet(s.name);
+    set->setColor(s.color);
+    set->setBorderColor(s.color);
+    std::vector<double> values(categories.size(), 0.0);
+    for (size_t i = 0; i < s.x.size() && i < s.y.size(); ++i)
+    {
+      const auto c = static_cast<size_t>(s.x[i] + 0.5);
+      if (c < values.size())
+      {
+        values[c] = s.y[i];
+        yhi = std::max(yhi, s.y[i]);
+      }
+    }
+    for (double v : values)
+    {
+      set->append(v);
+    }
+    bars->append(set);
+  }
+  chart->addSeries(bars);
+  auto* x = new QBarCategoryAxis;
+  for (const QString& c : categories)
+  {
+    x->append(c);
+  }
+  x->setTitleText(xTitle);
+  QValueAxis* y = MakeAxis(yTitle, yhi >= 100.0 ? "%.0f" : "%.3g");
+  y->setRange(0.0, yhi * 1.1);
+  y->applyNiceNumbers();
+  chart->addAxis(x, Qt::AlignBottom);
+  chart->addAxis(y, Qt::AlignLeft);
+  bars->attachAxis(x);
+  bars->attachAxis(y);
+  return chart;
+}
+
+} // namespace
+
 void ParameterPlot::SetSeries(const QString& title, const QString& xTitle, const QString& yTitle,
   const std::vector<ParameterSeries>& series, double marker, const std::vector<QString>& categories)
 {
   this->Data = series;
-  auto* chart = new QChart;
-  StyleChart(chart, title);
-  QValueAxis* x = nullptr;
   if (!categories.empty())
   {
-    auto* cat = new QCategoryAxis;
-    cat->setLabelsPosition(QCategoryAxis::AxisLabelsPositionOnValue);
-    for (size_t i = 0; i < categories.size(); ++i)
-    {
-      cat->append(categories[i], static_cast<double>(i));
-    }
-    cat->setTitleText(xTitle);
-    x = cat;
+    QChart* old = this->View->chart();
+    this->View->setChart(MakeBarChart(title, xTitle, yTitle, series, categories));
+    delete old;
+    return;
   }
-  else
-  {
-    x = MakeAxis(xTitle, "%.3g");
-  }
+  auto* chart = new QChart;
+  StyleChart(chart, title);
+  QValueAxis* x = MakeAxis(xTitle, "%.3g");
   QValueAxis* y = MakeAxis(yTitle, "%.3g");
   chart->addAxis(x, Qt::AlignBottom);
   chart->addAxis(y, Qt::AlignLeft);
@@ -92,16 +139,12 @@ void ParameterPlot::SetSeries(const QString& title, const QString& xTitle, const
   {
     xhi = xlo + 1;
   }
-  const double pad = categories.empty() ? 0.0 : 0.5;
-  x->setRange(xlo - pad, xhi + pad);
+  x->setRange(xlo, xhi);
   // Plain integers for counts, three digits otherwise (no 4.94e+03).
   y->setLabelFormat(yhi >= 100.0 ? "%.0f" : "%.3g");
   y->setRange(ylo, yhi * 1.1);
   y->applyNiceNumbers();
-  if (categories.empty())
-  {
-    x->applyNiceNumbers();
-  }
+  x->applyNiceNumbers();
   if (marker > -1e299)
   {
     auto* mark = new QLineSeries;

@@ -31,7 +31,8 @@ class ParameterPlot : public QWidget
 public:
   explicit ParameterPlot(QWidget* parent = nullptr);
   /// Replaces the plot. `marker` >= xmin draws a vertical line there (the
-  /// parameter's current value); `categories` labels integer x values.
+  /// parameter's current value). With `categories`, a bar chart: the
+  /// series' x are category indices, one bar per series in each group.
   void SetSeries(const QString& title, const QString& xTitle, const QString& yTitle,
     const std::vector<ParameterSeries>& series, double marker = -1e300,
     const std::vector<QString>& categories = {});

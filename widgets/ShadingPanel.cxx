@@ -33,6 +33,7 @@ Lighting<double> ViewLighting(const ViewState& view, const render::Camera& camer
   lighting.lightCount = 1;
   lighting.lights[0] =
     render::CameraLight(camera, view.lightAzimuth, view.lightElevation, view.lightIntensity);
+  lighting.lights[0].solidAngle = view.lightSolidAngle;
   return lighting;
 }
 
@@ -192,6 +193,8 @@ render::RenderOptions PanelOptions(const PanelSpec& spec, const ViewState& view,
   options.maxError = spec.maxError;
   options.interpolation = spec.interpolation;
   options.polygons = spec.polygons;
+  options.scan = spec.scan;
+  options.scanPrecision = spec.scanPrecision;
   options.width = width;
   options.height = height;
   options.background = view.background;

@@ -340,6 +340,9 @@ void MainWindow::OnPanelSelected(int index)
   this->Backend->setCurrentIndex(this->Backend->findData(static_cast<int>(spec.backend)));
   this->Interpolation->setCurrentIndex(
     this->Interpolation->findData(static_cast<int>(spec.interpolation)));
+  this->Scan->setCurrentIndex(this->Scan->findData(static_cast<int>(spec.scan)));
+  this->ScanPrecision->setCurrentIndex(
+    this->ScanPrecision->findData(static_cast<int>(spec.scanPrecision)));
   this->Editor->SetMaterial(spec.material);
   this->Updating = false;
 }
@@ -357,8 +360,18 @@ void MainWindow::OnPanelEdited()
   this->MaxError->setEnabled(spec.mode == render::ShadingMode::Auto);
   spec.interpolation =
     static_cast<render::InterpolationSpace>(this->Interpolation->currentData().toInt());
+  spec.scan = static_cast<render::ScanConversion>(this->Scan->currentData().toInt());
+  spec.scanPrecision =
+    static_cast<render::ScanPrecision>(this->ScanPrecision->currentData().toInt());
   spec.material = this->Editor->GetMaterial();
-  const auto backend = static_cast<render::Backend>(this->Backend->currentData().toInt());
+  auto backend = static_cast<render::Backend>(this->Backend->currentData().toInt());
+  if (spec.scan == render::ScanConversion::Incremental && backend == render::Backend::GPU)
+  {
+    // The lecture's DDA is the CPU renderer's: the panel moves there.
+    backend = render::Backend::CPU;
+    this->Backend->setCurrentIndex(this->Backend->findData(static_cast<int>(backend)));
+    this->statusBar()->showMessage("the incremental scan is the CPU renderer's: panel moved to CPU");
+  }
   if (!render::SupportsModel(spec.mode, spec.material.model))
   {
     this->statusBar()->showMessage(QString("%1 cannot evaluate %2; choose another mode")

@@ -97,9 +97,12 @@ private:
   QDoubleSpinBox* MaxError; ///< auto mode's budget (enabled with auto)
   QComboBox* Backend;
   QComboBox* Interpolation;
+  QComboBox* Scan;
+  QComboBox* ScanPrecision;
   QSlider* LightAzimuth;
   QSlider* LightElevation;
   QDoubleSpinBox* LightIntensity; ///< the light-intensity setting: I_L of the one light
+  QDoubleSpinBox* LightSolidAngle; ///< the light-solid-angle setting: its dw
   QComboBox* Weighting;
   QDoubleSpinBox* CreaseAngle;
   QSpinBox* Subdivision;

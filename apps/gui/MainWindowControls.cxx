@@ -62,6 +62,10 @@ QWidget* MainWindow::BuildControls()
   panelForm->addRow("Backend", this->Backend);
   this->Interpolation = widgets::MakeSettingComboBox("interp");
   panelForm->addRow("Interpolation", this->Interpolation);
+  this->Scan = widgets::MakeSettingComboBox("scan");
+  panelForm->addRow("Scan (CPU)", this->Scan);
+  this->ScanPrecision = widgets::MakeSettingComboBox("scan-precision");
+  panelForm->addRow("Scan precision", this->ScanPrecision);
   layout->addWidget(panelBox);
 
   // Colour by data (every panel): the mesh's arrays, ParaView's colour maps.
@@ -79,7 +83,8 @@ QWidget* MainWindow::BuildControls()
     connect(box, QOverload<int>::of(&QComboBox::activated), this, [this] { this->ApplyColorBy(); });
   }
   layout->addWidget(colorBox);
-  for (QComboBox* box : { this->Mode, this->Backend, this->Interpolation })
+  for (QComboBox* box :
+    { this->Mode, this->Backend, this->Interpolation, this->Scan, this->ScanPrecision })
   {
     connect(box, QOverload<int>::of(&QComboBox::activated), this, &MainWindow::OnPanelEdited);
   }
@@ -100,6 +105,16 @@ QWidget* MainWindow::BuildControls()
   this->LightIntensity = widgets::MakeSettingSpinBox("light-intensity");
   this->LightIntensity->setSingleStep(0.1);
   lightForm->addRow("Intensity I_L", this->LightIntensity);
+  this->LightSolidAngle = widgets::MakeSettingSpinBox("light-solid-angle");
+  this->LightSolidAngle->setSingleStep(0.1);
+  lightForm->addRow("Solid angle dw (sr)", this->LightSolidAngle);
+  connect(this->LightSolidAngle, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
+    [this](double solidAngle) {
+      if (!this->Updating)
+      {
+        this->View->SetLightSolidAngle(solidAngle);
+      }
+    });
   connect(this->LightIntensity, QOverload<double>::of(&QDoubleSpinBox::valueChanged), this,
     [this](double intensity) {
       if (!this->Updating)

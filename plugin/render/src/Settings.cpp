@@ -344,7 +344,7 @@ void LightRows(std::vector<SettingRow>& t)
     r.max = 4 * kPi<double>;
     r.doc = "the solid angle dw each light subtends, in steradians: irradiance I_L dw (eq. 1.1); pi "
             "makes a unit light on a white Lambertian surface give 1";
-    r.frontEnds = kCli | kParaView | kMapper;
+    r.frontEnds = kCli | kParaView | kMapper | kExplorer;
     r.metavar = "SR";
     r.set = [](Settings& s, const SettingValue& v) { s.lightSolidAngle = v.numbers[0]; };
     r.get = [](const Settings& s) { return Number(s.lightSolidAngle); };

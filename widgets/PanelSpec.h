@@ -58,6 +58,9 @@ struct ViewState
   double lightAzimuth = -25.0;  ///< degrees toward the camera's right
   double lightElevation = 25.0; ///< degrees toward the camera's up
   double lightIntensity = 1.0;  ///< I_L of the one light (eq. 1.1)
+  /// 0: the light is directional; > 0: a point light this far from the
+  /// camera's focal point, in the same direction.
+  double lightDistance = 0.0;
   /// dw of the one light (eq. 1.1, steradians), as the settings table's default.
   double lightSolidAngle = render::Settings().lightSolidAngle;
   Vec3<float> background{ 0.32f, 0.34f, 0.43f };

@@ -34,6 +34,12 @@ Lighting<double> ViewLighting(const ViewState& view, const render::Camera& camer
   lighting.lights[0] =
     render::CameraLight(camera, view.lightAzimuth, view.lightElevation, view.lightIntensity);
   lighting.lights[0].solidAngle = view.lightSolidAngle;
+  if (view.lightDistance > 0)
+  {
+    Light<double>& light = lighting.lights[0];
+    light.type = LightType::Point;
+    light.vector = camera.focalPoint + light.vector * view.lightDistance;
+  }
   return lighting;
 }
 

@@ -98,6 +98,7 @@ private:
   QComboBox* Backend;
   QComboBox* Interpolation;
   QComboBox* Scan;
+  QDoubleSpinBox* Distance; ///< flat-conditions: light and viewer distance
   QComboBox* ScanPrecision;
   QSlider* LightAzimuth;
   QSlider* LightElevation;

@@ -193,6 +193,19 @@ QWidget* MainWindow::BuildControls()
       this->ReloadScene();
     }
   });
+  this->Distance = new QDoubleSpinBox;
+  this->Distance->setRange(kMinConditionsDistance, kMaxConditionsDistance);
+  this->Distance->setDecimals(1);
+  this->Distance->setValue(this->Options.distance);
+  this->Distance->setSuffix(" radii");
+  plotForm->addRow("flat-conditions: distance", this->Distance);
+  connect(this->Distance, &QDoubleSpinBox::editingFinished, this, [this] {
+    this->Options.distance = this->Distance->value();
+    if (this->Current.name == "flat-conditions")
+    {
+      this->ReloadScene();
+    }
+  });
   this->ThetaL = MakeSlider(0, 89, 45);
   plotForm->addRow("brdf: light angle", this->ThetaL);
   this->Shininess = MakeSlider(1, 200, 32);

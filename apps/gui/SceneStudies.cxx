@@ -4,6 +4,7 @@
 #include "Scenes.h"
 
 #include "SceneMeshes.h"
+#include "SceneParts.h"
 
 #include "CpuPanel.h"
 #include "VtkCamera.h"
@@ -25,6 +26,9 @@ constexpr int kStudySize = 129;
 /// Largest mesh a study refines to: 4M faces take a few seconds to subdivide
 /// and render on the CPU, the most a click on a scene should cost.
 constexpr double kStudyMaxFaces = 4e6;
+/// flat-conditions at infinity: half the parallel view's height, the unit
+/// sphere with ConditionsCamera's margin.
+constexpr double kViewMarginOfLimit = 1.15;
 
 widgets::ViewState StudyView(const Scene& scene, const std::vector<widgets::PanelSpec>& panels)
 {
@@ -47,6 +51,7 @@ widgets::ViewState StudyView(const Scene& scene, const std::vector<widgets::Pane
   view.lightAzimuth = scene.lightAzimuth;
   view.lightElevation = scene.lightElevation;
   view.lightIntensity = scene.lightIntensity;
+  view.lightDistance = scene.lightDistance;
   view.display = scene.display;
   return view;
 }
@@ -175,6 +180,76 @@ Study NormalsStudy(const Scene& scene)
   return study;
 }
 
+/// Mean |a - b| of the luminance, in 1/255, over the pixels both cover.
+double MeanDifference255(const render::Image& a, const render::Image& b)
+{
+  double sum = 0;
+  long count = 0;
+  for (size_t i = 0; i < a.covered.size() && i < b.covered.size(); ++i)
+  {
+    if (a.covered[i] && b.covered[i])
+    {
+      sum += std::abs(widgets::Luminance(&a.rgb[3 * i]) - widgets::Luminance(&b.rgb[3 * i]));
+      ++count;
+    }
+  }
+  return count ? 255.0 * sum / count : 0.0;
+}
+
+/// flat-conditions: the mean error of flat shading against per-pixel
+/// lighting (panels 1 against 0, 4 against 3) with the camera and the
+/// point light at each distance; and the limit, a directional light and a
+/// parallel view, drawn as a level line.
+Study FlatConditionsStudy(const Scene& scene, const SceneOptions& options)
+{
+  Study study;
+  study.title = "Flat shading's mean error against the distance of light and viewer";
+  study.xTitle = "log10 of the distance (circumradii)";
+  study.yTitle = "mean |I_flat - I_exact| (1/255)";
+  study.marker = std::log10(options.distance);
+  cpu::SoftwareRenderer renderer;
+  const double distances[] = { 1.5, 2, 3, 5, 10, 20, 50, 100, 300, 1000, 3000, 10000 };
+  Study::Series cube{ "cube (a polyhedron)", {}, {} }, sphere{ "sphere (16 x 8 facets)", {}, {} };
+  auto error = [&](const widgets::ViewState& view, int exact, int flat)
+  {
+    widgets::CpuMeshCache a, b;
+    const render::Image reference =
+      widgets::RenderOnCpu(renderer, a, scene.panels[exact], view, kStudySize, kStudySize);
+    return MeanDifference255(
+      widgets::RenderOnCpu(renderer, b, scene.panels[flat], view, kStudySize, kStudySize),
+      reference);
+  };
+  for (double d : distances)
+  {
+    Scene at = scene;
+    at.camera = ConditionsCamera(d);
+    at.lightDistance = d;
+    const widgets::ViewState view = StudyView(at, at.panels);
+    cube.x.push_back(std::log10(d));
+    cube.y.push_back(error(view, 0, 1));
+    sphere.x.push_back(std::log10(d));
+    sphere.y.push_back(error(view, 3, 4));
+  }
+  // At infinity: parallel rays from the light and to the viewer.
+  Scene limit = scene;
+  limit.camera = ConditionsCamera(distances[0]);
+  limit.camera.parallel = true;
+  limit.camera.parallelScale = kViewMarginOfLimit;
+  limit.lightDistance = 0;
+  const widgets::ViewState view = StudyView(limit, limit.panels);
+  const double cubeLimit = error(view, 0, 1), sphereLimit = error(view, 3, 4);
+  Study::Series cubeFar{ "cube, both at infinity", {}, {} };
+  Study::Series sphereFar{ "sphere, both at infinity", {}, {} };
+  for (Study::Series* s : { &cubeFar, &sphereFar })
+  {
+    s->x = { cube.x.front(), cube.x.back() };
+    const double v = s == &cubeFar ? cubeLimit : sphereLimit;
+    s->y = { v, v };
+  }
+  study.series = { cube, sphere, cubeFar, sphereFar };
+  return study;
+}
+
 } // namespace
 
 Study RunStudy(const Scene& scene, const SceneOptions& options)
@@ -190,6 +265,10 @@ Study RunStudy(const Scene& scene, const SceneOptions& options)
   if (scene.name == "normals")
   {
     return NormalsStudy(scene);
+  }
+  if (scene.name == "flat-conditions")
+  {
+    return FlatConditionsStudy(scene, options);
   }
   return {};
 }

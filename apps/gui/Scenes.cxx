@@ -4,6 +4,7 @@
 #include "Scenes.h"
 
 #include "SceneMeshes.h"
+#include "SceneParts.h"
 
 #include "AnalyticMeshes.h"
 #include "shadinglab/model/Materials.h"
@@ -32,6 +33,8 @@ const std::vector<SceneInfo>& SceneList()
     { "shared-vertices", "T-junctions: the intensity discontinuity and the crack, then repaired" },
     { "silhouette", "polygonal silhouettes against OpenSubdiv refinement with limit normals" },
     { "normals", "uniform, area, angle and Max vertex normals against the exact normal" },
+    { "creases", "unrepresentative averaged normals: a corrugation shaded flat, a cube rounded" },
+    { "flat-conditions", "flat shading is exact only for a polyhedron seen and lit from afar" },
     { "moon", "a sphere lit from behind the viewer: Lambert vs Lommel-Seeliger" },
     { "metal", "Cook-Torrance gold and copper vs Phong plastic at grazing light" },
     { "brdf", "the BRDF lobes in the plane of incidence, parameters live" },
@@ -39,10 +42,7 @@ const std::vector<SceneInfo>& SceneList()
   return list;
 }
 
-namespace
-{
-
-Material<double> Lambert(double kd = 0.9)
+Material<double> Lambert(double kd)
 {
   Material<double> m;
   m.model = ReflectanceModel::Lambert;
@@ -52,7 +52,7 @@ Material<double> Lambert(double kd = 0.9)
   return m;
 }
 
-Material<double> Plastic(ReflectanceModel model = ReflectanceModel::BlinnPhong)
+Material<double> Plastic(ReflectanceModel model)
 {
   Material<double> m;
   m.model = model;
@@ -85,6 +85,9 @@ PanelSpec Panel(const std::string& title, const PolyPtr& mesh, ShadingMode mode,
   spec.backend = backend;
   return spec;
 }
+
+namespace
+{
 
 /// The user's mesh prepared as asked, or the scene's own.
 PolyPtr InputOr(const SceneOptions& options, const std::function<PolyPtr()>& fallback)
@@ -468,7 +471,8 @@ Scene MakeScene(const std::string& name, const SceneOptions& options)
   static const std::map<std::string, std::function<Scene(const SceneOptions&)>> makers = {
     { "modes", Modes }, { "mach-bands", MachBands }, { "perspective", Perspective },
     { "orientation", Orientation }, { "shared-vertices", SharedVertices },
-    { "silhouette", Silhouette }, { "normals", Normals }, { "moon", Moon },
+    { "silhouette", Silhouette }, { "normals", Normals }, { "creases", Creases },
+    { "flat-conditions", FlatConditions }, { "moon", Moon },
     { "metal", Metal }, { "brdf", Brdf } };
   const auto it = makers.find(name);
   if (it == makers.end())

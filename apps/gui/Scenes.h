@@ -33,6 +33,12 @@ struct SceneInfo
 /// The scenes in lecture order.
 const std::vector<SceneInfo>& SceneList();
 
+/// flat-conditions' distance range (circumradii): from just outside the
+/// object (1.5: the near plane stays in front of it) to where even a
+/// shininess-60 highlight is constant over a face to 0.1/255.
+inline constexpr double kMinConditionsDistance = 1.5;
+inline constexpr double kMaxConditionsDistance = 1e4;
+
 struct SceneOptions
 {
   render::Backend backend = render::Backend::GPU;
@@ -49,6 +55,9 @@ struct SceneOptions
   double rotation = 0.0;
   /// normals: "corrugated" or "isosurface".
   std::string variant = "corrugated";
+  /// flat-conditions: the camera's and the light's distance from the
+  /// object's centre, in circumradii.
+  double distance = 3.0;
 };
 
 struct Scene
@@ -63,6 +72,9 @@ struct Scene
   bool explicitCamera = false;
   render::Camera camera;
   double lightAzimuth = -25, lightElevation = 25, lightIntensity = 1;
+  /// 0: a directional light; > 0: a point light this far from the focal
+  /// point, in the light's direction.
+  double lightDistance = 0;
   widgets::ProfileLine line;
   PlotKind plot = PlotKind::Profile;
   bool perceived = false;

@@ -31,7 +31,7 @@ namespace
 
 const char* kUsage =
   "usage: shadinglab-gui [--scene NAME] [INPUT] [--backend gpu|cpu] [--size WxH]\n"
-  "                      [--variant corrugated|isosurface] [--rotation DEG]\n"
+  "                      [--variant corrugated|isosurface] [--rotation DEG] [--distance R]\n"
   "                      [--screenshot FILE.png] [--profile FILE.csv] [--color-by ARRAY]\n"
   "                      [--nonlinear-subdivision N]\n"
   "       shadinglab-gui --list-scenes | --version\n"
@@ -122,6 +122,17 @@ int main(int argc, char** argv)
       }
       else if (a == "--variant")
         options.variant = value("--variant");
+      else if (a == "--distance")
+      {
+        const std::string v = value("--distance");
+        char* end = nullptr;
+        options.distance = std::strtod(v.c_str(), &end);
+        if (*end || !(options.distance >= gui::kMinConditionsDistance &&
+              options.distance <= gui::kMaxConditionsDistance))
+        {
+          return Fail("--distance must be a number of radii in [1.5, 10000] (got '" + v + "')");
+        }
+      }
       else if (a == "--rotation")
       {
         const std::string v = value("--rotation");

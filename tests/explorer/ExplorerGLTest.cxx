@@ -135,6 +135,8 @@ private slots:
   void UserMeshIsFramedWhateverItsPlaceAndSize();
   void ColourByDataOnBothBackends();
   void MaterialEditorShowsTheModelsParameters();
+  void FlatConditionsErrorVanishesForTheCubeOnly();
+  void CreasesAveragedCorrugationShadesFlat();
 };
 
 void ExplorerGLTest::CameraLinkMovesAllPanels()
@@ -817,3 +819,92 @@ void ExplorerGLTest::ColourByDataOnBothBackends()
 }
 
 
+
+namespace
+{
+
+/// The study's series `name` from the plot's CSV (x, y pairs).
+std::vector<std::pair<double, double>> StudySeries(const std::string& csv, const std::string& name)
+{
+  std::vector<std::pair<double, double>> out;
+  std::istringstream in(csv);
+  std::string line;
+  const std::string prefix = "\"" + name + "\",";
+  while (std::getline(in, line))
+  {
+    if (line.rfind(prefix, 0) == 0)
+    {
+      const size_t a = prefix.size(), b = line.find(',', a);
+      out.emplace_back(std::stod(line.substr(a, b - a)), std::stod(line.substr(b + 1)));
+    }
+  }
+  return out;
+}
+
+/// The sample standard deviation of a profile's covered samples.
+double CoveredSpread(const widgets::Profile& p)
+{
+  double sum = 0, sum2 = 0;
+  int n = 0;
+  for (size_t s = 0; s < p.intensity.size(); ++s)
+  {
+    if (p.covered[s])
+    {
+      sum += p.intensity[s];
+      sum2 += p.intensity[s] * p.intensity[s];
+      ++n;
+    }
+  }
+  return n > 1 ? std::sqrt(std::max(0.0, (sum2 - sum * sum / n) / (n - 1))) : 0.0;
+}
+
+} // namespace
+
+// The lecture's three conditions: flat shading's error on the cube (a
+// polyhedron) falls as light and viewer recede and is zero for a
+// directional light and a parallel view; the sphere's (not a polyhedron)
+// stays above 10/255 at every distance.
+void ExplorerGLTest::FlatConditionsErrorVanishesForTheCubeOnly()
+{
+  auto window = Open("flat-conditions", render::Backend::CPU);
+  const std::string csv = window->PlotCsv();
+  const auto cube = StudySeries(csv, "cube (a polyhedron)");
+  const auto sphere = StudySeries(csv, "sphere (16 x 8 facets)");
+  const auto cubeFar = StudySeries(csv, "cube, both at infinity");
+  QVERIFY2(cube.size() >= 10 && sphere.size() == cube.size(), csv.c_str());
+  QVERIFY2(cube.front().second > 3.0, qPrintable(QString::number(cube.front().second)));
+  for (size_t i = 1; i < cube.size(); ++i)
+  {
+    QVERIFY2(cube[i].second < cube[i - 1].second, qPrintable(QString::number(cube[i].first)));
+  }
+  QVERIFY2(cube.back().second < 0.01, qPrintable(QString::number(cube.back().second)));
+  QVERIFY(!cubeFar.empty());
+  QCOMPARE(cubeFar.front().second, 0.0);
+  for (const auto& [x, y] : sphere)
+  {
+    QVERIFY2(y > 10.0, qPrintable(QString("%1: %2").arg(x).arg(y)));
+  }
+  // The heat maps show it too: the cube's error panel is not blank near.
+  QCOMPARE(window->Comparison()->PanelCount(), 6);
+}
+
+// The corrugation with averaged normals shades (nearly) flat across its
+// ridges, the creased one does not; the cube with averaged normals shows a
+// highlight where the creased one has flat faces.
+void ExplorerGLTest::CreasesAveragedCorrugationShadesFlat()
+{
+  auto window = Open("creases", render::Backend::CPU);
+  const std::vector<widgets::Profile> profiles = window->Comparison()->Profiles();
+  QCOMPARE(profiles.size(), size_t(5));
+  const double averaged = CoveredSpread(profiles[0]), creased = CoveredSpread(profiles[1]);
+  const double refined = CoveredSpread(profiles[2]);
+  QVERIFY2(creased > 4 * averaged, qPrintable(QString("%1 vs %2").arg(creased).arg(averaged)));
+  QVERIFY2(refined > 2 * averaged, qPrintable(QString("%1 vs %2").arg(refined).arg(averaged)));
+  double roundPeak = 0, boxPeak = 0;
+  for (size_t s = 0; s < profiles[3].intensity.size(); ++s)
+  {
+    roundPeak = std::max(roundPeak, profiles[3].covered[s] ? profiles[3].intensity[s] : 0.0);
+    boxPeak = std::max(boxPeak, profiles[4].covered[s] ? profiles[4].intensity[s] : 0.0);
+  }
+  QVERIFY2(roundPeak > 2 * boxPeak, qPrintable(QString("%1 vs %2").arg(roundPeak).arg(boxPeak)));
+}

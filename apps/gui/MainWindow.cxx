@@ -8,6 +8,7 @@
 #include "MaterialEditor.h"
 #include "ParameterPlot.h"
 #include "ProfilePlot.h"
+#include "ScanlineInspector.h"
 #include "ShadingPanel.h"
 
 #include "MeshIO.h"
@@ -65,6 +66,7 @@ MainWindow::MainWindow(const SceneOptions& options)
   , ProfileChart(new widgets::ProfilePlot)
   , BrdfChart(new widgets::BrdfPlot)
   , ParameterChart(new widgets::ParameterPlot)
+  , Inspector(new widgets::ScanlineInspector)
   , Editor(new widgets::MaterialEditor)
   , SceneNames(new QListWidget)
   , Explanation(new QTextBrowser)
@@ -84,6 +86,7 @@ MainWindow::MainWindow(const SceneOptions& options)
   this->Plots->addWidget(this->ProfileChart);
   this->Plots->addWidget(this->BrdfChart);
   this->Plots->addWidget(this->ParameterChart);
+  this->Plots->addWidget(this->Inspector);
   auto* split = new QSplitter(Qt::Vertical);
   split->addWidget(this->View);
   split->addWidget(this->Plots);
@@ -240,6 +243,12 @@ bool MainWindow::LoadScene(const std::string& name, std::string& error)
   this->Explanation->setHtml(html);
   this->CurrentStudy = scene.plot == PlotKind::Parameter ? RunStudy(scene, options) : Study();
   this->Plots->setCurrentIndex(static_cast<int>(scene.plot));
+  if (auto* split = qobject_cast<QSplitter*>(this->Plots->parentWidget()))
+  {
+    // The inspector has no panels above it: it takes the whole height.
+    split->setSizes(scene.plot == PlotKind::Scanline ? QList<int>{ 0, 1000 }
+                                                     : QList<int>{ 600, 380 });
+  }
   if (scene.explicitCamera)
   {
     this->View->SetCamera(scene.camera);
@@ -443,6 +452,7 @@ void MainWindow::UpdatePlot()
       break;
     }
     case PlotKind::Brdf:
+    case PlotKind::Scanline:
     case PlotKind::None:
       break;
   }
@@ -487,6 +497,10 @@ std::string MainWindow::PlotCsv() const
       }
     }
     return csv.str();
+  }
+  if (this->Current.plot == PlotKind::Scanline)
+  {
+    return this->Inspector->ToCsv();
   }
   if (this->Current.plot == PlotKind::Brdf)
   {

@@ -29,6 +29,7 @@ class ComparisonWidget;
 class MaterialEditor;
 class ParameterPlot;
 class ProfilePlot;
+class ScanlineInspector;
 }
 
 namespace shadinglab::gui
@@ -56,6 +57,7 @@ public:
   widgets::ComparisonWidget* Comparison() const { return this->View; }
   widgets::ProfilePlot* Profile() const { return this->ProfileChart; }
   widgets::ParameterPlot* Parameter() const { return this->ParameterChart; }
+  widgets::ScanlineInspector* Scanline() const { return this->Inspector; }
   widgets::MaterialEditor* Materials() const { return this->Editor; }
   const Scene& CurrentScene() const { return this->Current; }
   /// The current plot's numbers as CSV (profile, study or lobes).
@@ -89,6 +91,7 @@ private:
   widgets::ProfilePlot* ProfileChart;
   widgets::BrdfPlot* BrdfChart;
   widgets::ParameterPlot* ParameterChart;
+  widgets::ScanlineInspector* Inspector;
   widgets::MaterialEditor* Editor;
   QListWidget* SceneNames;
   QTextBrowser* Explanation;

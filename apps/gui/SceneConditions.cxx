@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Two scenes on what shading assumes of the mesh: `creases` (averaged vertex
 // normals that do not represent the surface) and `flat-conditions` (the
-// lecture's three conditions under which flat shading is exact).
+// lecture's three conditions under which flat shading is exact); and
+// `scanline`, the lecture's scan conversion pixel by pixel.
 #include "SceneParts.h"
 
 #include "AnalyticMeshes.h"
@@ -180,6 +181,28 @@ Scene FlatConditions(const SceneOptions& o)
   s.formula = "I<sub>face</sub> = I(P<sub>0</sub>, N<sub>f</sub>, L(P<sub>0</sub>), "
               "V(P<sub>0</sub>)) = I(P) for all P of the face iff N, L and V are constant "
               "on it &nbsp; (eq. 2.1)";
+  return s;
+}
+
+Scene Scanline(const SceneOptions&)
+{
+  Scene s;
+  s.title = "The scan line, pixel by pixel";
+  s.plot = PlotKind::Scanline;
+  s.explanation =
+    "One triangle, magnified until its pixels are squares, drawn by the CPU renderer. "
+    "Click or drag to pick the scan line and a pixel. Along each edge the value at the "
+    "scan line is interpolated in y (x4, x5 and their I or N); along the span it is "
+    "interpolated in x. The lecture does both by forward differences: one addition per "
+    "row and per pixel. Beside the per-row values stand those of the incremental scan, "
+    "stepped in float or double: identical to the eye here, they drift apart over long "
+    "spans and edges (docs/model.md eq. 2.12, docs/incremental-scan.md). In Phong mode "
+    "the arrows are the interpolated normals before renormalization. Every number is "
+    "the renderer's own, read back from its trace of that row.";
+  s.formula = "I<sub>p</sub> = (x<sub>5</sub> - x<sub>p</sub>)/(x<sub>5</sub> - x<sub>4</sub>) "
+              "I<sub>4</sub> + (x<sub>p</sub> - x<sub>4</sub>)/(x<sub>5</sub> - x<sub>4</sub>) "
+              "I<sub>5</sub>; &nbsp; I<sub>p+1</sub> = I<sub>p</sub> + (I<sub>5</sub> - "
+              "I<sub>4</sub>)/(x<sub>5</sub> - x<sub>4</sub>) &nbsp; (eq. 2.3-2.4, 2.10-2.11)";
   return s;
 }
 

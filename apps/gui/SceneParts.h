@@ -21,6 +21,7 @@ widgets::PanelSpec Panel(const std::string& title, const PolyPtr& mesh, render::
 /// The scenes of SceneConditions.cxx.
 Scene Creases(const SceneOptions& options);
 Scene FlatConditions(const SceneOptions& options);
+Scene Scanline(const SceneOptions& options);
 
 /// flat-conditions: the unit cube or the sphere around it (radius
 /// sqrt(3)/2), and the camera and light `distance` cube sides from the

@@ -35,6 +35,7 @@ const std::vector<SceneInfo>& SceneList()
     { "normals", "uniform, area, angle and Max vertex normals against the exact normal" },
     { "creases", "unrepresentative averaged normals: a corrugation shaded flat, a cube rounded" },
     { "flat-conditions", "flat shading is exact only for a polyhedron seen and lit from afar" },
+    { "scanline", "one triangle's scan conversion pixel by pixel: the lecture's equations in numbers" },
     { "moon", "a sphere lit from behind the viewer: Lambert vs Lommel-Seeliger" },
     { "metal", "Cook-Torrance gold and copper vs Phong plastic at grazing light" },
     { "brdf", "the BRDF lobes in the plane of incidence, parameters live" },
@@ -472,7 +473,7 @@ Scene MakeScene(const std::string& name, const SceneOptions& options)
     { "modes", Modes }, { "mach-bands", MachBands }, { "perspective", Perspective },
     { "orientation", Orientation }, { "shared-vertices", SharedVertices },
     { "silhouette", Silhouette }, { "normals", Normals }, { "creases", Creases },
-    { "flat-conditions", FlatConditions }, { "moon", Moon },
+    { "flat-conditions", FlatConditions }, { "scanline", Scanline }, { "moon", Moon },
     { "metal", Metal }, { "brdf", Brdf } };
   const auto it = makers.find(name);
   if (it == makers.end())

@@ -21,7 +21,8 @@ enum class PlotKind
   None,
   Profile,  ///< intensity profile along the line (+ derivative)
   Brdf,     ///< polar BRDF lobes
-  Parameter ///< a measured quantity against a parameter (Study)
+  Parameter, ///< a measured quantity against a parameter (Study)
+  Scanline   ///< the scanline inspector (widgets/ScanlineInspector.h), no panels
 };
 
 struct SceneInfo

@@ -195,3 +195,57 @@ TEST(IncrementalScanTest, RendererMatchesThePerRowScanInScreenSpace)
     }
   }
 }
+
+// The scan's trace (RenderOptions::traceRow, the scanline inspector's
+// source) is what the renderer used: on a convex mesh every traced pixel's
+// Gouraud colour is the pixel written, with perspective-correct
+// interpolation (1/w divided out) and with the incremental scan; the
+// spans' ends bracket the pixels; no trace without the option.
+TEST(IncrementalScanTest, TraceIsWhatThePixelsWereShadedWith)
+{
+  vtkSmartPointer<vtkPolyData> pd;
+  pd.TakeReference(sl::datasets::MakeUVSphere(24, 12));
+  const render::Mesh mesh = render::MeshFromPolyData(pd);
+  render::Camera cam;
+  cam.position = Vec3d(0.4, 0.3, 3.2);
+  sl::Lighting<float> lighting;
+  lighting.lightCount = 1;
+  lighting.lights[0].vector = Vec3f(0.3f, 0.5f, 0.8f);
+  sl::Material<float> material;
+  material.model = sl::ReflectanceModel::BlinnPhong;
+  for (const auto scan : { render::ScanConversion::Plane, render::ScanConversion::Incremental })
+  {
+    render::RenderOptions opt;
+    opt.width = 160;
+    opt.height = 120;
+    opt.mode = render::ShadingMode::Gouraud;
+    opt.scan = scan;
+    opt.traceRow = 61;
+    opt.threads = 2;
+    render::RenderStats stats;
+    const auto image = sl::test::RenderCpu(mesh, cam, lighting, material, opt, &stats);
+    const render::ScanTrace& trace = stats.trace;
+    EXPECT_EQ(trace.row, 61);
+    EXPECT_EQ(trace.intensitySlot, 0);
+    ASSERT_GT(trace.pixels.size(), 20u);
+    ASSERT_FALSE(trace.spans.empty());
+    for (const auto& p : trace.pixels)
+    {
+      const float* rgb = &image.rgb[3 * (61 * opt.width + p.i)];
+      for (int c = 0; c < 3; ++c)
+      {
+        EXPECT_NEAR(p.attributes[c], rgb[c], 1e-6) << p.i;
+      }
+      bool inSomeSpan = false;
+      for (const auto& s : trace.spans)
+      {
+        inSomeSpan |= s.xLeft <= p.i + 0.5f && p.i + 0.5f < s.xRight;
+      }
+      EXPECT_TRUE(inSomeSpan) << p.i;
+    }
+    opt.traceRow = -1;
+    render::RenderStats none;
+    sl::test::RenderCpu(mesh, cam, lighting, material, opt, &none);
+    EXPECT_TRUE(none.trace.pixels.empty());
+  }
+}

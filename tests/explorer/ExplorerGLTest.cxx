@@ -137,6 +137,7 @@ private slots:
   void MaterialEditorShowsTheModelsParameters();
   void FlatConditionsErrorVanishesForTheCubeOnly();
   void CreasesAveragedCorrugationShadesFlat();
+  void ScanlineInspectorShowsTheRenderersNumbers();
 };
 
 void ExplorerGLTest::CameraLinkMovesAllPanels()
@@ -755,6 +756,7 @@ void ExplorerGLTest::UserMeshIsFramedWhateverItsPlaceAndSize()
 }
 
 #include "ExplorerGLTest.moc"
+#include "ScanlineInspector.h"
 void ExplorerGLTest::ColourByDataOnBothBackends()
 {
   // A user's torus with a point array (its height): coloured through
@@ -907,4 +909,51 @@ void ExplorerGLTest::CreasesAveragedCorrugationShadesFlat()
     boxPeak = std::max(boxPeak, profiles[4].covered[s] ? profiles[4].intensity[s] : 0.0);
   }
   QVERIFY2(roundPeak > 2 * boxPeak, qPrintable(QString("%1 vs %2").arg(roundPeak).arg(boxPeak)));
+}
+
+// The inspector's numbers are the renderer's: the selected pixel's value is
+// the rendered image's pixel (Gouraud: the traced lit colour is what was
+// written; Phong: the image), it lies on the line through the traced span
+// ends (eq. 2.4), the equations print it, and the incremental scan's value
+// stands beside it. Off the triangle there is no value.
+void ExplorerGLTest::ScanlineInspectorShowsTheRenderersNumbers()
+{
+  auto window = Open("scanline", render::Backend::CPU);
+  widgets::ScanlineInspector* inspector = window->Scanline();
+  QVERIFY(inspector->isVisible());
+  QVERIFY(window->Comparison()->PanelCount() == 0);
+  for (const auto mode : { render::ShadingMode::Gouraud, render::ShadingMode::Phong })
+  {
+    inspector->SetMode(mode);
+    inspector->Select(4, 6);
+    for (bool incremental : { false, true })
+    {
+      const render::ScanTrace& trace = inspector->Trace(incremental);
+      QCOMPARE(trace.row, 4);
+      QCOMPARE(trace.spans.size(), size_t(1));
+      const double value = inspector->SelectedValue(incremental);
+      const render::Image& image = inspector->Rendered(incremental);
+      const double pixel = image.rgb[3 * (4 * widgets::ScanlineInspector::kColumns + 6)];
+      QVERIFY2(std::abs(value - pixel) < 1e-6, qPrintable(QString("%1 vs %2").arg(value).arg(pixel)));
+      // Eq. 2.4 through the traced ends, slot by slot.
+      const render::TracedSpan& span = trace.spans.front();
+      const int slot = mode == render::ShadingMode::Phong ? trace.normalSlot : trace.intensitySlot;
+      QVERIFY(slot >= 0);
+      const double t = (6.5 - span.xLeft) / (span.xRight - span.xLeft);
+      for (const render::TracedPixel& p : trace.pixels)
+      {
+        if (p.i == 6)
+        {
+          const double expected = span.left[slot] + t * (span.right[slot] - span.left[slot]);
+          QVERIFY2(std::abs(p.attributes[slot] - expected) < 1e-5,
+            qPrintable(QString("%1 vs %2").arg(p.attributes[slot]).arg(expected)));
+        }
+      }
+    }
+    QVERIFY(inspector->Equations().contains(QString::number(inspector->SelectedValue(false), 'f', 4)));
+  }
+  inspector->Select(0, 13);
+  QVERIFY(std::isnan(inspector->SelectedValue(false)));
+  QVERIFY(inspector->Equations().contains("misses") || inspector->Equations().contains("outside"));
+  QVERIFY(window->PlotCsv().rfind("row,pixel,per_row,incremental", 0) == 0);
 }

@@ -41,6 +41,9 @@ struct Frame
   float FastPhongMinCos = 0.0f;  ///< cos of RenderOptions::fastPhongMaxSpread
   bool CullBack = false;         ///< back faces are culled (asked, or hidden)
   PixelUniforms Pixels{};        ///< what the Phong stage's queued pixels are shaded with
+  /// Where the scan records RenderOptions::traceRow (written by the one
+  /// thread whose band holds the row), or nullptr.
+  render::ScanTrace* Trace = nullptr;
 
   // Frame buffers (full resolution), owned by the renderer.
   float* Rgb = nullptr;

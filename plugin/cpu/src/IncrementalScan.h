@@ -128,7 +128,8 @@ void ScanIncremental(int width,
   int rowBegin,
   int rowEnd,
   SpanFn&& beginSpan,
-  PixelFn&& pixel)
+  PixelFn&& pixel,
+  SpanTrace* trace = nullptr)
 {
   const int na = kAttrFirst + numAttributes;
   EdgeDda<T> edges[kMaxPolygonVertices];
@@ -177,6 +178,16 @@ void ScanIncremental(int width,
     SortCrossings(cross, nc);
     for (int s = 0; s + 1 < nc; s += 2)
     {
+      if (trace && j == trace->row)
+      {
+        float al[kMaxAttributes], ar[kMaxAttributes];
+        for (int k = 0; k < na; ++k)
+        {
+          al[k] = static_cast<float>(cross[s].a[k]);
+          ar[k] = static_cast<float>(cross[s + 1].a[k]);
+        }
+        trace->record(static_cast<float>(cross[s].x), al, static_cast<float>(cross[s + 1].x), ar);
+      }
       bool begun = false;
       StepSpan<T>(width, na, cross[s].x, cross[s].a, cross[s + 1].x, cross[s + 1].a,
         [&](int i, const T* value)

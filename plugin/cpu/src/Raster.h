@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace shadinglab::cpu::raster
@@ -93,6 +94,15 @@ struct ScreenVertex
 {
   float x, y;
   float a[kMaxAttributes];
+};
+
+/// Where a scan reports the ends of the spans of one row (the scanline
+/// inspector's trace): x and every attribute slot (z, 1/w, then the
+/// stage's), as the scan computed them.
+struct SpanTrace
+{
+  int row;
+  std::function<void(float xl, const float* al, float xr, const float* ar)> record;
 };
 
 /// An edge's canonical direction (lower y first, then lower x): the
@@ -185,7 +195,8 @@ void ScanTriangle(int width,
   int rowBegin,
   int rowEnd,
   SpanFn&& beginSpan,
-  PixelFn&& pixel)
+  PixelFn&& pixel,
+  SpanTrace* trace = nullptr)
 {
   const ScreenVertex& v0 = *verts[0];
   const ScreenVertex& v1 = *verts[1];
@@ -266,6 +277,17 @@ void ScanTriangle(int width,
     {
       value[k] = static_cast<float>(v0.a[k] + dadx[k] * dx + dady[k] * dy);
     }
+    if (trace && j == trace->row)
+    {
+      // The plane's values at the crossings (eq. 2.3 on a triangle).
+      float al[kMaxAttributes] = {}, ar[kMaxAttributes] = {};
+      for (int k = 0; k < NA; ++k)
+      {
+        al[k] = static_cast<float>(v0.a[k] + dadx[k] * (xl - v0.x) + dady[k] * dy);
+        ar[k] = static_cast<float>(v0.a[k] + dadx[k] * (xr - v0.x) + dady[k] * dy);
+      }
+      trace->record(xl, al, xr, ar);
+    }
     beginSpan(j, i0);
     for (int i = i0; i < i1; ++i)
     {
@@ -293,7 +315,8 @@ void ScanPolygon(int width,
   int rowBegin,
   int rowEnd,
   SpanFn&& beginSpan,
-  PixelFn&& pixel)
+  PixelFn&& pixel,
+  SpanTrace* trace = nullptr)
 {
   const int na = kAttrFirst + numAttributes;
   float ymin = verts[0]->y, ymax = verts[0]->y;
@@ -349,6 +372,10 @@ void ScanPolygon(int width,
       {
         continue;
       }
+      if (trace && j == trace->row)
+      {
+        trace->record(L.x, L.a, R.x, R.a);
+      }
       // docs/model.md eq. 2.4: I_p = (x_5 - x_p)/(x_5 - x_4) I_4 + (x_p - x_4)/(x_5 - x_4) I_5,
       // then incrementally I_{p+1} = I_p + (I_5 - I_4)/(x_5 - x_4).
       const float invSpan = 1.0f / (R.x - L.x);
@@ -384,11 +411,12 @@ void ScanConvert(int width,
   int rowBegin,
   int rowEnd,
   SpanFn&& beginSpan,
-  PixelFn&& pixel)
+  PixelFn&& pixel,
+  SpanTrace* trace = nullptr)
 {
   if (n != 3)
   {
-    ScanPolygon(width, numAttributes, verts, n, rowBegin, rowEnd, beginSpan, pixel);
+    ScanPolygon(width, numAttributes, verts, n, rowBegin, rowEnd, beginSpan, pixel, trace);
     return;
   }
   // The attribute count is fixed per frame; a compile-time count lets the
@@ -396,19 +424,19 @@ void ScanConvert(int width,
   switch (kAttrFirst + numAttributes)
   {
     case 2:
-      ScanTriangle<2>(width, verts, rowBegin, rowEnd, beginSpan, pixel);
+      ScanTriangle<2>(width, verts, rowBegin, rowEnd, beginSpan, pixel, trace);
       return;
     case 5:
-      ScanTriangle<5>(width, verts, rowBegin, rowEnd, beginSpan, pixel);
+      ScanTriangle<5>(width, verts, rowBegin, rowEnd, beginSpan, pixel, trace);
       return;
     case 8:
-      ScanTriangle<8>(width, verts, rowBegin, rowEnd, beginSpan, pixel);
+      ScanTriangle<8>(width, verts, rowBegin, rowEnd, beginSpan, pixel, trace);
       return;
     case 11:
-      ScanTriangle<11>(width, verts, rowBegin, rowEnd, beginSpan, pixel);
+      ScanTriangle<11>(width, verts, rowBegin, rowEnd, beginSpan, pixel, trace);
       return;
     default:
-      ScanPolygon(width, numAttributes, verts, n, rowBegin, rowEnd, beginSpan, pixel);
+      ScanPolygon(width, numAttributes, verts, n, rowBegin, rowEnd, beginSpan, pixel, trace);
   }
 }
 

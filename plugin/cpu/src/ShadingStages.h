@@ -60,21 +60,84 @@ struct StageBase
     SpanFn&& beginSpan,
     PixelFn&& pixel) const
   {
+    if (F.Trace && F.Trace->row >= rowBegin && F.Trace->row < rowEnd)
+    {
+      this->ScanTraced(verts, n, rowBegin, rowEnd, beginSpan, pixel);
+      return;
+    }
+    this->ScanWith(verts, n, rowBegin, rowEnd, beginSpan, pixel, nullptr);
+  }
+
+  template<typename SpanFn, typename PixelFn>
+  void ScanWith(const ScreenVertex* const* verts,
+    int n,
+    int rowBegin,
+    int rowEnd,
+    SpanFn&& beginSpan,
+    PixelFn&& pixel,
+    raster::SpanTrace* spans) const
+  {
     if (F.Opt.scan == render::ScanConversion::Incremental)
     {
       if (F.Opt.scanPrecision == render::ScanPrecision::Double)
       {
         raster::ScanIncremental<double>(
-          F.Width, F.NumAttributes, verts, n, rowBegin, rowEnd, beginSpan, pixel);
+          F.Width, F.NumAttributes, verts, n, rowBegin, rowEnd, beginSpan, pixel, spans);
       }
       else
       {
         raster::ScanIncremental<float>(
-          F.Width, F.NumAttributes, verts, n, rowBegin, rowEnd, beginSpan, pixel);
+          F.Width, F.NumAttributes, verts, n, rowBegin, rowEnd, beginSpan, pixel, spans);
       }
       return;
     }
-    ScanConvert(F.Width, F.NumAttributes, verts, n, rowBegin, rowEnd, beginSpan, pixel);
+    ScanConvert(F.Width, F.NumAttributes, verts, n, rowBegin, rowEnd, beginSpan, pixel, spans);
+  }
+
+  /// Scan, recording the traced row (Frame::Trace): the span ends the scan
+  /// met, and each pixel's attributes as the stage receives them (1/w
+  /// divided out). Only the band holding the row comes here.
+  template<typename SpanFn, typename PixelFn>
+  void ScanTraced(const ScreenVertex* const* verts,
+    int n,
+    int rowBegin,
+    int rowEnd,
+    SpanFn&& beginSpan,
+    PixelFn&& pixel) const
+  {
+    render::ScanTrace& trace = *F.Trace;
+    const int na = F.NumAttributes;
+    raster::SpanTrace spans{ trace.row,
+      [&](float xl, const float* al, float xr, const float* ar)
+      {
+        render::TracedSpan span;
+        span.xLeft = xl;
+        span.xRight = xr;
+        const float wl = F.AttributeScale(al), wr = F.AttributeScale(ar);
+        for (int k = 0; k < na; ++k)
+        {
+          span.left.push_back(al[kAttrFirst + k] * wl);
+          span.right.push_back(ar[kAttrFirst + k] * wr);
+        }
+        trace.spans.push_back(std::move(span));
+      } };
+    this->ScanWith(verts, n, rowBegin, rowEnd, beginSpan,
+      [&](int j, int i, const float* a)
+      {
+        if (j == trace.row)
+        {
+          render::TracedPixel p;
+          p.i = i;
+          const float w = F.AttributeScale(a);
+          for (int k = 0; k < na; ++k)
+          {
+            p.attributes.push_back(a[kAttrFirst + k] * w);
+          }
+          trace.pixels.push_back(std::move(p));
+        }
+        pixel(j, i, a);
+      },
+      &spans);
   }
   /// The same, for stages with nothing to do at the start of a span.
   template<typename PixelFn>

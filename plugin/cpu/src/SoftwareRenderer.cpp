@@ -317,8 +317,14 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh,
   F.Covered = this->Covered.data();
   F.Coverage = this->Coverage.data();
 
+  render::ScanTrace trace;
+  trace.row = F.Opt.traceRow;
+  F.Trace = stats && F.Opt.traceRow >= 0 ? &trace : nullptr;
   std::vector<ThreadState> states(static_cast<size_t>(F.Threads));
   const int64_t degenerateBeforeRows = this->RasterizeFrame(states, fastPhongAsPhong);
+  F.Trace = nullptr;
+  trace.normalSlot = F.NormalSlot;
+  trace.intensitySlot = F.Opt.mode == ShadingMode::Gouraud ? 0 : -1;
   states[0].degenerate += degenerateBeforeRows;
 
   this->ResolveImage();
@@ -333,6 +339,7 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh,
     facts.normalsComputed = computedNormals;
     facts.normalsCached = normalsCached;
     this->FillStats(states, facts, *stats);
+    stats->trace = std::move(trace);
     stats->milliseconds =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   }

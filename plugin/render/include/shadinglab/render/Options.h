@@ -15,6 +15,7 @@
 
 #include <cstdint>
 #include <string>
+#include <vector>
 
 namespace shadinglab::render
 {
@@ -184,6 +185,37 @@ struct RenderOptions
   /// SIMD Phong pixels it saves), draw exact Phong instead and say so
   /// (RenderStats::fastPhongAsPhong). Off to study fast Phong itself.
   bool fastPhongFallback = true;
+  /// >= 0: record what the scan computes on this pixel row (full
+  /// resolution) in RenderStats::trace: the span ends and every pixel's
+  /// interpolated attributes (CPU; the explorer's scanline inspector).
+  int traceRow = -1;
+};
+
+/// One span of a traced row: its ends (the edge crossings x_4, x_5 of
+/// docs/model.md eq. 2.3) and the attributes there.
+struct TracedSpan
+{
+  float xLeft = 0, xRight = 0;
+  std::vector<float> left, right;
+};
+
+/// One pixel of a traced row: the attributes the scan handed the shading.
+struct TracedPixel
+{
+  int i = 0;
+  std::vector<float> attributes;
+};
+
+/// What the CPU renderer's scan computed on RenderOptions::traceRow, in the
+/// numbers it used (screen-space values: 1/w divided out). Attributes are
+/// the stage's slots: Gouraud's lit colour at `intensitySlot` (3 values),
+/// Phong's interpolated, not yet renormalized normal at `normalSlot`.
+struct ScanTrace
+{
+  int row = -1;
+  int intensitySlot = -1, normalSlot = -1;
+  std::vector<TracedSpan> spans;
+  std::vector<TracedPixel> pixels;
 };
 
 /// What a render did; fields a backend cannot know stay 0.
@@ -222,6 +254,8 @@ struct RenderStats
   /// Auto: the choice's reasons (predictors, each mode's predicted error
   /// and cost; ModeChoice::why); "" in the other modes.
   std::string autoChoice;
+  /// RenderOptions::traceRow's spans and pixels (CPU).
+  ScanTrace trace;
 };
 
 const char* ShadingModeName(ShadingMode mode);

@@ -56,7 +56,7 @@ public:
   explicit Canvas(ScanlineInspector* owner)
     : Owner(owner)
   {
-    this->setMinimumSize(kColumns * 24, kRows * 24);
+    this->setMinimumSize(kColumns * 8, kRows * 8);
     this->setCursor(Qt::CrossCursor);
   }
 
@@ -98,6 +98,17 @@ protected:
     p.drawLine(QPointF(0, yc), QPointF(kColumns * s, yc));
     const render::ScanTrace& trace = this->Owner->Trace(true);
     const bool phong = this->Owner->Mode() == render::ShadingMode::Phong;
+    // Arrows scaled to the row's longest screen part: directions and
+    // relative sizes read at any tilt.
+    double longest = 1e-6;
+    for (const render::TracedPixel& px : trace.pixels)
+    {
+      if (phong && trace.normalSlot >= 0)
+      {
+        const float* n = &px.attributes[trace.normalSlot];
+        longest = std::max(longest, std::hypot(double(n[0]), double(n[1])));
+      }
+    }
     QFont font = p.font();
     font.setPointSizeF(std::max(6.0, s / 5.0));
     p.setFont(font);
@@ -107,12 +118,15 @@ protected:
       if (phong && trace.normalSlot >= 0)
       {
         // The interpolated normal's screen part, as an arrow (y up in the world).
+        // From the upper third of the cell, clear of the scan line.
         const float* n = &px.attributes[trace.normalSlot];
-        const QPointF c = cell.center();
-        const QPointF tip = c + QPointF(n[0], -n[1]) * (0.45 * s);
-        p.setPen(QPen(QColor(0, 200, 255), 2));
+        const QPointF c(cell.center().x(), cell.top() + 0.3 * s);
+        const QPointF tip = c + QPointF(n[0], -n[1]) * (0.4 * s / longest);
+        p.setPen(QPen(QColor(0, 90, 220), 3));
         p.drawLine(c, tip);
-        p.drawEllipse(tip, 2, 2);
+        p.setBrush(QColor(0, 90, 220));
+        p.drawEllipse(tip, 3, 3);
+        p.setBrush(Qt::NoBrush);
       }
       if (s >= kMinLabelledCell)
       {
@@ -171,6 +185,7 @@ ScanlineInspector::ScanlineInspector(QWidget* parent)
   this->ModeChoice->addItem("Phong: N stepped", static_cast<int>(render::ShadingMode::Phong));
   this->PrecisionChoice->addItem("float", static_cast<int>(render::ScanPrecision::Float));
   this->PrecisionChoice->addItem("double", static_cast<int>(render::ScanPrecision::Double));
+  this->ModeChoice->setCurrentIndex(this->ModeChoice->findData(static_cast<int>(this->ShadingMode)));
   this->Text->setWordWrap(true);
   this->Text->setTextFormat(Qt::RichText);
   this->Text->setAlignment(Qt::AlignTop | Qt::AlignLeft);
@@ -194,6 +209,10 @@ ScanlineInspector::ScanlineInspector(QWidget* parent)
     this->SetPrecision(
       static_cast<render::ScanPrecision>(this->PrecisionChoice->currentData().toInt()));
   });
+  // A page of the explorer's plot stack, whose minimum is its largest
+  // page's: this one takes what it is given, and the other scenes keep
+  // their layout.
+  this->setSizePolicy(QSizePolicy::Ignored, QSizePolicy::Ignored);
   this->Rerender();
 }
 
@@ -246,8 +265,9 @@ void ScanlineInspector::Rerender()
   lighting.lights[0].vector = NormalizeOr(Vec3<double>(0.25, 0.2, 1.0), Vec3<double>(0, 0, 1));
   Material<double> material;
   material.model = ReflectanceModel::BlinnPhong;
-  material.kd = 0.55;
-  material.ks = 0.35;
+  // Peaks just under 1: nothing clips under the Clamp display.
+  material.kd = 0.45;
+  material.ks = 0.2;
   material.shininess = 12;
   material.diffuseColor = { 1, 1, 1 };
   material.ambient = { 0.05, 0.05, 0.05 };

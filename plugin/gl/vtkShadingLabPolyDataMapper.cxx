@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "vtkShadingLabPolyDataMapper.h"
+#include "CpuBackend.h"
 
 #include "MeshArrays.h"
 #include "PolyDataMesh.h"
@@ -14,6 +15,9 @@
 #include "shadinglab_glsl_defines.h"
 
 #include <vtkActor.h>
+#include <vtkCellData.h>
+#include <vtkExecutive.h>
+#include <vtkScalarsToColors.h>
 #include <vtkCamera.h>
 #include <vtkCellArray.h>
 #include <vtkFloatArray.h>
@@ -71,6 +75,9 @@ struct vtkShadingLabPolyDataMapper::Internals
   /// changes none of them keeps it (the choice costs ~10-35 ms on meshes of
   /// 0.1-1.3M triangles, BM_AutoChoice).
   std::vector<double> AutoKey;
+  /// Backend CPU: the software renderer and its hand-over to OpenGL.
+  shadinglab::gl::CpuBackend Cpu;
+  std::string CpuFailure; ///< the last reason the CPU could not draw (said once)
 };
 
 vtkStandardNewMacro(vtkShadingLabPolyDataMapper);
@@ -323,12 +330,17 @@ bool vtkShadingLabPolyDataMapper::Substitute(
 
 void vtkShadingLabPolyDataMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
 {
-  vtkPolyData* input = this->CurrentInput;
-  const sl::render::NormalSettings& made = this->Internal->Settings.normals;
   if (this->Internal->Settings.render.mode == sl::render::ShadingMode::Auto)
   {
-    this->ChooseAutoMode(ren, input);
+    this->ChooseAutoMode(ren, this->CurrentInput);
   }
+  this->CurrentInput = this->PrepareInput(this->CurrentInput);
+  this->Superclass::RenderPieceStart(ren, act);
+}
+
+vtkPolyData* vtkShadingLabPolyDataMapper::PrepareInput(vtkPolyData* input)
+{
+  const sl::render::NormalSettings& made = this->Internal->Settings.normals;
   const bool flat = this->GetDrawnMode() == FLAT;
   const bool hasNormals = input && input->GetPointData()->GetNormals();
   // Flat mode uploads no point normals; the other modes need them, made
@@ -384,9 +396,104 @@ void vtkShadingLabPolyDataMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* a
       this->Internal->PreparedKind = kind;
       this->Internal->PreparedSettings = settings;
     }
-    this->CurrentInput = this->Internal->Prepared;
+    return this->Internal->Prepared;
   }
-  this->Superclass::RenderPieceStart(ren, act);
+  return input;
+}
+
+void vtkShadingLabPolyDataMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
+{
+  const bool cpu = this->Internal->Settings.backend == sl::render::Backend::CPU &&
+    !ren->GetSelector() && !act->HasTranslucentPolygonalGeometry();
+  if (!cpu || !this->RenderPieceOnCpu(ren, act))
+  {
+    this->Superclass::RenderPiece(ren, act);
+  }
+}
+
+bool vtkShadingLabPolyDataMapper::RenderPieceOnCpu(vtkRenderer* ren, vtkActor* act)
+{
+  Internals& in = *this->Internal;
+  vtkPolyData* input = this->GetInput();
+  if (!input)
+  {
+    return false;
+  }
+  if (!this->Static && this->GetInputAlgorithm())
+  {
+    this->GetInputAlgorithm()->Update();
+    input = this->GetInput();
+  }
+  if (!input || !input->GetPoints())
+  {
+    return true; // nothing to draw, as the GL path
+  }
+  // The normals as the GL path draws them; the CPU resolves auto itself.
+  // (Flat shading drops point normals: the CPU takes face normals anyway.)
+  vtkPolyData* drawn = this->PrepareInput(input);
+  sl::gl::CpuDrawInputs inputs;
+  inputs.polydata = drawn;
+  // rho without scalar colours: the property's diffuse colour (or the
+  // block's), as the GL path's slDiffuseColor.
+  double albedo[3];
+  const double* dc = this->BlockColorSet ? this->BlockColor : act->GetProperty()->GetDiffuseColor();
+  std::copy(dc, dc + 3, albedo);
+  inputs.albedo = albedo;
+  int cellFlag = 0;
+  vtkDataArray* scalars = this->ScalarVisibility
+    ? vtkAbstractMapper::GetScalars(drawn, this->ScalarMode, this->ArrayAccessMode, this->ArrayId,
+        this->ArrayName, cellFlag)
+    : nullptr;
+  const bool direct = scalars && scalars->GetDataType() == VTK_UNSIGNED_CHAR &&
+    this->ColorMode != VTK_COLOR_MODE_MAP_SCALARS;
+  if (scalars && !direct && scalars->GetName() && cellFlag != 2)
+  {
+    vtkScalarsToColors* lut = this->GetLookupTable();
+    if (this->UseLookupTableScalarRange == 0)
+    {
+      lut->SetRange(this->ScalarRange);
+    }
+    inputs.lookupTable = lut;
+    inputs.scalarName = scalars->GetName();
+    inputs.scalarsOnCells = cellFlag == 1;
+    inputs.scalarComponent = scalars->GetNumberOfComponents() == 1
+      ? 0
+      : (lut->GetVectorMode() == vtkScalarsToColors::COMPONENT ? lut->GetVectorComponent() : -1);
+  }
+  const std::string failure = in.Cpu.Draw(ren, inputs, in.Settings);
+  if (!failure.empty())
+  {
+    if (failure != in.CpuFailure)
+    {
+      vtkWarningMacro("CPU backend: " << failure << "; drawing with OpenGL");
+      in.CpuFailure = failure;
+    }
+    return false;
+  }
+  in.Drawn = static_cast<int>(in.Cpu.LastStats().drawnMode);
+  in.AutoChoice = in.Cpu.LastStats().autoChoice;
+  return true;
+}
+
+double vtkShadingLabPolyDataMapper::GetCpuRenderMilliseconds() const
+{
+  return this->Internal->Cpu.LastStats().milliseconds;
+}
+
+double vtkShadingLabPolyDataMapper::GetCpuHandOverMilliseconds() const
+{
+  return this->Internal->Cpu.LastHandOverMilliseconds();
+}
+
+int vtkShadingLabPolyDataMapper::GetCpuMeshConversions() const
+{
+  return this->Internal->Cpu.Conversions();
+}
+
+void vtkShadingLabPolyDataMapper::ReleaseGraphicsResources(vtkWindow* window)
+{
+  this->Internal->Cpu.ReleaseGraphicsResources(window);
+  this->Superclass::ReleaseGraphicsResources(window);
 }
 
 vtkUnsignedCharArray* vtkShadingLabPolyDataMapper::MapScalars(double alpha)

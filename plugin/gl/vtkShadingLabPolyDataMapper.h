@@ -115,6 +115,13 @@ public:
   int GetUniformUploadCount() const { return this->UniformUploads; }
   /// The variant #defines of the last build.
   const std::string& GetLastVariant() const { return this->LastVariant; }
+  /// Backend CPU: the last frame's render milliseconds, hand-over
+  /// milliseconds (textures and quad) and mesh conversions so far (a camera
+  /// move converts nothing).
+  double GetCpuRenderMilliseconds() const;
+  double GetCpuHandOverMilliseconds() const;
+  int GetCpuMeshConversions() const;
+  void ReleaseGraphicsResources(vtkWindow* window) override;
 
   ///@{
   /// Colours (or colour texture coordinates) are mapped from the data
@@ -131,6 +138,11 @@ protected:
   vtkShadingLabPolyDataMapper();
   ~vtkShadingLabPolyDataMapper() override;
 
+  /// Backend CPU: the input drawn by the CPU renderer and handed over as
+  /// colour and depth (CpuBackend.h); OpenGL otherwise, and for hardware
+  /// selection (its pass needs the GL path's cell ids) and translucent
+  /// actors (the hand-over writes opaque pixels).
+  void RenderPiece(vtkRenderer* ren, vtkActor* act) override;
   void RenderPieceStart(vtkRenderer* ren, vtkActor* act) override;
   void ReplaceShaderValues(
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
@@ -158,6 +170,11 @@ private:
   /// AUTO: chooses the drawn mode for `input` seen by `ren`.
   void ChooseAutoMode(vtkRenderer* ren, vtkPolyData* input);
   bool Substitute(vtkShader* shader, const std::string& tag, const std::string& code);
+  /// The input with the normals the settings ask for (made here when it
+  /// has none, or on request; none in flat mode): what both backends draw.
+  vtkPolyData* PrepareInput(vtkPolyData* input);
+  /// Backend CPU; false (having said why once) when it could not draw.
+  bool RenderPieceOnCpu(vtkRenderer* ren, vtkActor* act);
 
   struct Internals;
   std::unique_ptr<Internals> Internal;

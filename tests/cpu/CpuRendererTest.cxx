@@ -913,3 +913,59 @@ TEST(CpuRendererTest, FastPhongOnSmallTrianglesDrawsExactPhongAndSaysSo)
   opt.mode = render::ShadingMode::Phong;
   EXPECT_NE(big.rgb, test::RenderCpu(coarse, cam, lighting, BlinnPhong(), opt).rgb);
 }
+
+// Depth output (RenderOptions::keepDepth, for merging into a depth-tested
+// framebuffer): a plane facing the camera at distance d has NDC depth
+// (f + n - 2 f n / d) / (f - n) at every covered pixel; +inf elsewhere;
+// the same for any thread count; refused with supersampling.
+TEST(CpuRendererTest, DepthOutputIsTheNormalizedDeviceDepth)
+{
+  render::Mesh mesh;
+  mesh.points = { -1, -1, 0, 1, -1, 0, 1, 1, 0, -1, 1, 0 };
+  mesh.connectivity = { 0, 1, 2, 3 };
+  mesh.offsets = { 0, 4 };
+  render::Camera cam;
+  cam.position = Vec3d(0, 0, 4);
+  cam.nearClip = 1;
+  cam.farClip = 10;
+  sl::Lighting<float> lighting;
+  lighting.lightCount = 1;
+  sl::Material<float> material;
+  render::RenderOptions opt;
+  opt.width = 64;
+  opt.height = 48;
+  opt.keepDepth = true;
+  const double n = 1, f = 10, d = 4;
+  const double expected = (f + n - 2 * f * n / d) / (f - n);
+  std::vector<float> first;
+  for (int threads : { 1, 3 })
+  {
+    opt.threads = threads;
+    const auto image = test::RenderCpu(mesh, cam, lighting, material, opt);
+    ASSERT_EQ(image.depth.size(), size_t(64 * 48));
+    int covered = 0;
+    for (size_t i = 0; i < image.depth.size(); ++i)
+    {
+      if (image.covered[i])
+      {
+        ++covered;
+        EXPECT_NEAR(image.depth[i], expected, 1e-5);
+      }
+      else
+      {
+        EXPECT_TRUE(std::isinf(image.depth[i]));
+      }
+    }
+    EXPECT_GT(covered, 500);
+    if (first.empty())
+    {
+      first = image.depth;
+    }
+    EXPECT_EQ(image.depth, first);
+  }
+  opt.ssaa = 2;
+  EXPECT_THROW(test::RenderCpu(mesh, cam, lighting, material, opt), std::invalid_argument);
+  opt.ssaa = 1;
+  opt.keepDepth = false;
+  EXPECT_TRUE(test::RenderCpu(mesh, cam, lighting, material, opt).depth.empty());
+}

@@ -49,6 +49,7 @@ struct Frame
   float* Rgb = nullptr;
   uint8_t* Covered = nullptr;
   uint16_t* Coverage = nullptr;
+  float* Depth = nullptr; ///< the frame's depth (RenderOptions::keepDepth), or nullptr
 
   Vec3f NormalOf(int64_t v) const
   {

@@ -234,6 +234,10 @@ private:
         }
       }
       this->Stage.Finish(state); // e.g. the band's pixels still queued for shading
+      if (F.Depth)
+      {
+        std::copy(state.bandDepth, state.bandDepth + (last - first), F.Depth + first);
+      }
       // The band's covered pixels, counted while it is in cache, for the stats.
       for (size_t i = first; i < last; ++i)
       {

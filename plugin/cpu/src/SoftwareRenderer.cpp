@@ -209,6 +209,7 @@ private:
   std::vector<float> Rgb;
   std::vector<uint8_t> Covered;
   std::vector<uint16_t> Coverage;
+  std::vector<float> Depth;
   Image Output;
 };
 
@@ -313,9 +314,15 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh,
   {
     this->Coverage.clear(); // no stale counts from an earlier frame in the image
   }
+  if (F.Opt.keepDepth)
+  {
+    this->Depth.swap(image.depth); // the last frame's buffer, as Rgb's
+    this->Depth.resize(pixels);
+  }
   F.Rgb = this->Rgb.data();
   F.Covered = this->Covered.data();
   F.Coverage = this->Coverage.data();
+  F.Depth = F.Opt.keepDepth ? this->Depth.data() : nullptr;
 
   render::ScanTrace trace;
   trace.row = F.Opt.traceRow;
@@ -384,11 +391,20 @@ void SoftwareRenderer::Internals::ResolveImage()
     image.rgb.swap(this->Rgb);
     image.covered.swap(this->Covered);
     image.coverage.swap(this->Coverage);
+    if (F.Opt.keepDepth)
+    {
+      image.depth.swap(this->Depth);
+    }
+    else
+    {
+      image.depth.clear();
+    }
   }
   else
   {
     render::DownsampleBox(this->Rgb, this->Covered, F.Width, F.Height, F.Opt.ssaa, image);
     image.coverage.clear();
+    image.depth.clear();
   }
 }
 

@@ -111,6 +111,10 @@ std::string ValidateOptions(const RenderOptions& options)
   {
     return "auto mode's max error must be in [0.01, 255] (1/255 units)";
   }
+  if (options.keepDepth && options.ssaa != 1)
+  {
+    return "depth output needs supersampling 1 (a pixel's samples have several depths)";
+  }
   if (!IsFinite(options.background))
   {
     return "background colour is not finite";

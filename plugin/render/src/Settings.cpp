@@ -169,6 +169,19 @@ void RenderRows(std::vector<SettingRow>& t)
     t.push_back(r);
   }
   {
+    SettingRow r = Row("backend", "Backend", "Backend", G::Render, K::Choice);
+    r.choices = { { "gpu", "GPU" }, { "cpu", "CPU" } };
+    r.doc = "who draws the mapper's pixels: the GLSL shaders, or the CPU renderer handing "
+            "colour and depth to OpenGL (no GPU needed; the CLI's --backend chooses likewise)";
+    r.frontEnds = kParaView | kMapper;
+    r.metavar = "B";
+    r.set = [](Settings& s, const SettingValue& v) {
+      s.backend = v.numbers[0] == 0 ? Backend::GPU : Backend::CPU;
+    };
+    r.get = [](const Settings& s) { return Number(s.backend == Backend::GPU ? 0 : 1); };
+    t.push_back(r);
+  }
+  {
     SettingRow r = Row("scan", "ScanConversion", "Scan Conversion", G::Render, K::Choice);
     r.choices = ChoicesOf(kScanConversions);
     r.doc = "per-row spans (default), or the lecture's incremental DDA: edges stepped row to "

@@ -27,6 +27,10 @@ struct Image
   std::vector<float> rgb;         ///< 3 per pixel, linear unless displayApplied
   std::vector<uint8_t> covered;   ///< 1 where a surface was drawn
   std::vector<uint16_t> coverage; ///< per-pixel polygon count (countCoverage only)
+  /// Per pixel, the drawn surface's normalized device depth z/w in [-1, 1]
+  /// (OpenGL's convention; +inf where nothing was drawn), when
+  /// RenderOptions::keepDepth asked for it (CPU, no supersampling).
+  std::vector<float> depth;
 
   /// `rgb` holds display values already, of `appliedDisplay`.
   bool displayApplied = false;

@@ -189,6 +189,10 @@ struct RenderOptions
   /// resolution) in RenderStats::trace: the span ends and every pixel's
   /// interpolated attributes (CPU; the explorer's scanline inspector).
   int traceRow = -1;
+  /// Keep the frame's depth (Image::depth): what a caller needs to merge
+  /// the image into a depth-tested framebuffer (the VTK mapper's CPU
+  /// backend). CPU only, without supersampling.
+  bool keepDepth = false;
 };
 
 /// One span of a traced row: its ends (the edge crossings x_4, x_5 of

@@ -13,6 +13,7 @@
 
 #include "shadinglab/model/Shading.h"
 #include "shadinglab/render/Options.h"
+#include "shadinglab/render/Renderer.h"
 
 #include <functional>
 #include <string>
@@ -71,6 +72,10 @@ struct Settings
   NormalSettings normals;
   ColorBySettings color;
   InputSettings input;
+  /// Who draws a vtkShadingLabPolyDataMapper's (and ParaView's ShadingLab
+  /// Surface's) pixels: OpenGL shaders, or the CPU renderer handing its
+  /// colour and depth to OpenGL (plugin/gl/CpuBackend.h).
+  Backend backend = Backend::GPU;
 };
 
 enum class SettingGroup

@@ -1,0 +1,204 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "CpuBackend.h"
+
+#include "PolyDataMesh.h"
+#include "VtkCamera.h"
+#include "VtkLights.h"
+#include "shadinglab_glsl.h"
+
+#include <vtkOpenGLQuadHelper.h>
+#include <vtk_glew.h> // GL_DEPTH_TEST, GL_TRUE
+#include <vtkOpenGLRenderWindow.h>
+#include <vtkOpenGLShaderCache.h>
+#include <vtkOpenGLState.h>
+#include <vtkPolyData.h>
+#include <vtkRenderer.h>
+#include <vtkScalarsToColors.h>
+#include <vtkShaderProgram.h>
+
+#include <chrono>
+#include <stdexcept>
+
+namespace shadinglab::gl
+{
+
+namespace
+{
+
+/// Entries of the colour map sampled from a VTK lookup table: ParaView's
+/// default table has 256, and its transfer functions are smooth at that
+/// resolution (the GL path's colour texture has 256 texels too).
+constexpr int kLookupSamples = 256;
+
+} // namespace
+
+CpuBackend::CpuBackend() = default;
+
+CpuBackend::~CpuBackend() = default;
+
+void CpuBackend::ReleaseGraphicsResources(vtkWindow* window)
+{
+  if (this->Quad)
+  {
+    this->Quad->ReleaseGraphicsResources(window);
+    this->Quad.reset();
+  }
+  this->ColorTexture->ReleaseGraphicsResources(window);
+  this->DepthTexture->ReleaseGraphicsResources(window);
+}
+
+std::string CpuBackend::Draw(
+  vtkRenderer* ren, const CpuDrawInputs& inputs, const render::Settings& settings)
+{
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  if (!window || !inputs.polydata)
+  {
+    return "no OpenGL render window to hand the image to";
+  }
+  int width = 0, height = 0, x = 0, y = 0;
+  ren->GetTiledSizeAndOrigin(&width, &height, &x, &y);
+  if (width < 1 || height < 1)
+  {
+    return "empty viewport";
+  }
+  // The mesh, converted when the input (or the array coloured by) changes:
+  // a camera move re-renders without converting (the renderer's own
+  // caches keep the normals and the closed-mesh test by content).
+  std::string scalars;
+  if (inputs.lookupTable && inputs.scalarName)
+  {
+    scalars = std::string(inputs.scalarsOnCells ? "CELLS:" : "POINTS:") + inputs.scalarName +
+      ":" + std::to_string(inputs.scalarComponent);
+  }
+  if (inputs.polydata != this->From || inputs.polydata->GetMTime() != this->FromTime ||
+    scalars != this->FromScalars)
+  {
+    try
+    {
+      if (scalars.empty())
+      {
+        this->Mesh = render::MeshFromPolyData(inputs.polydata, this->Frame);
+      }
+      else
+      {
+        render::ScalarField field;
+        field.name = inputs.scalarName;
+        field.association = inputs.scalarsOnCells ? render::ScalarField::Association::Cells
+                                                  : render::ScalarField::Association::Points;
+        field.component = inputs.scalarComponent;
+        double range[2];
+        this->Mesh = render::MeshFromPolyData(inputs.polydata, this->Frame, field, range);
+      }
+    }
+    catch (const std::invalid_argument& e)
+    {
+      return e.what();
+    }
+    this->From = inputs.polydata;
+    this->FromTime = inputs.polydata->GetMTime();
+    this->FromScalars = scalars;
+    ++this->ConversionCount;
+  }
+  render::Scene scene;
+  scene.mesh = &this->Mesh;
+  scene.camera = render::CameraFromVtk(ren->GetActiveCamera());
+  render::ToLocal(this->Frame, scene.camera);
+  scene.lighting =
+    render::LightingFromVtk(ren, settings.lightIntensity, settings.lightSolidAngle);
+  render::ToLocal(this->Frame, scene.lighting);
+  scene.material = settings.material;
+  if (inputs.albedo)
+  {
+    scene.material.diffuseColor = { inputs.albedo[0], inputs.albedo[1], inputs.albedo[2] };
+  }
+  if (!scalars.empty())
+  {
+    // The lookup table, sampled at its bins' centres over its range.
+    const double* range = inputs.lookupTable->GetRange();
+    this->Map.colors.resize(kLookupSamples);
+    this->Map.rangeMin = range[0];
+    this->Map.rangeMax = range[1];
+    for (int k = 0; k < kLookupSamples; ++k)
+    {
+      double rgb[3];
+      inputs.lookupTable->GetColor(
+        range[0] + (k + 0.5) / kLookupSamples * (range[1] - range[0]), rgb);
+      this->Map.colors[k] = Vec3<float>(static_cast<float>(rgb[0]), static_cast<float>(rgb[1]),
+        static_cast<float>(rgb[2]));
+    }
+    scene.colorMap = &this->Map;
+  }
+  render::RenderOptions options = settings.render;
+  options.width = width;
+  options.height = height;
+  options.ssaa = 1;
+  options.keepDepth = true;
+  options.traceRow = -1;
+  const render::Image* image = nullptr;
+  try
+  {
+    image = &this->Renderer.Render(scene, options, &this->Stats);
+  }
+  catch (const std::exception& e)
+  {
+    return e.what();
+  }
+
+  // The hand-over: colour (display values, alpha = covered) and depth,
+  // bottom row first as OpenGL stores textures.
+  const auto start = std::chrono::steady_clock::now();
+  const std::vector<uint8_t> rgb = image->ToRGB8(options.display);
+  const size_t pixels = static_cast<size_t>(width) * height;
+  this->Rgba.resize(4 * pixels);
+  this->Depth.resize(pixels);
+  for (int j = 0; j < height; ++j)
+  {
+    const size_t src = static_cast<size_t>(height - 1 - j) * width;
+    const size_t dst = static_cast<size_t>(j) * width;
+    for (int i = 0; i < width; ++i)
+    {
+      const size_t s = src + i, d = dst + i;
+      this->Rgba[4 * d] = rgb[3 * s];
+      this->Rgba[4 * d + 1] = rgb[3 * s + 1];
+      this->Rgba[4 * d + 2] = rgb[3 * s + 2];
+      this->Rgba[4 * d + 3] = image->covered[s] ? 255 : 0;
+      this->Depth[d] = image->covered[s] ? image->depth[s] : 1.0f;
+    }
+  }
+  this->ColorTexture->SetContext(window);
+  this->DepthTexture->SetContext(window);
+  if (!this->ColorTexture->Create2DFromRaw(width, height, 4, VTK_UNSIGNED_CHAR, this->Rgba.data()) ||
+    !this->DepthTexture->Create2DFromRaw(width, height, 1, VTK_FLOAT, this->Depth.data()))
+  {
+    return "could not upload the image as textures";
+  }
+  if (!this->Quad)
+  {
+    this->Quad = std::make_unique<vtkOpenGLQuadHelper>(
+      window, nullptr, sl_cpu_handover_fs_glsl, "");
+  }
+  else
+  {
+    window->GetShaderCache()->ReadyShaderProgram(this->Quad->Program);
+  }
+  if (!this->Quad->Program || !this->Quad->Program->GetCompiled())
+  {
+    return "the hand-over shader did not compile";
+  }
+  vtkOpenGLState* state = window->GetState();
+  vtkOpenGLState::ScopedglEnableDisable depthTest(state, GL_DEPTH_TEST);
+  state->vtkglEnable(GL_DEPTH_TEST);
+  state->vtkglDepthMask(GL_TRUE);
+  this->ColorTexture->Activate();
+  this->DepthTexture->Activate();
+  this->Quad->Program->SetUniformi("slCpuColor", this->ColorTexture->GetTextureUnit());
+  this->Quad->Program->SetUniformi("slCpuDepth", this->DepthTexture->GetTextureUnit());
+  this->Quad->Render();
+  this->ColorTexture->Deactivate();
+  this->DepthTexture->Deactivate();
+  this->HandOverMs =
+    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  return "";
+}
+
+} // namespace shadinglab::gl

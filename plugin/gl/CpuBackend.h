@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The mapper's CPU backend: one vtkShadingLabPolyDataMapper's input drawn by
+// the software renderer (plugin/cpu) for the renderer's viewport size,
+// camera and lights, then handed to OpenGL as colour and depth
+// (glsl/sl_cpu_handover_fs.glsl), so that other actors, annotations and
+// compositing see an ordinary depth-tested surface.
+#pragma once
+
+#include "shadinglab/cpu/SoftwareRenderer.h"
+#include "shadinglab/render/ColorMap.h"
+#include "shadinglab/render/Settings.h"
+
+#include <vtkNew.h>
+#include <vtkTextureObject.h>
+#include <vtkType.h>
+
+#include <memory>
+#include <vector>
+
+class vtkActor;
+class vtkOpenGLQuadHelper;
+class vtkPolyData;
+class vtkRenderer;
+class vtkScalarsToColors;
+class vtkWindow;
+
+namespace shadinglab::gl
+{
+
+/// What of the mapper the CPU draw needs besides its settings.
+struct CpuDrawInputs
+{
+  vtkPolyData* polydata = nullptr;  ///< with the normals the mapper prepared
+  const double* albedo = nullptr;   ///< rho without scalar colouring (RGB)
+  /// Colour by data: the point or cell array's name and component (-1:
+  /// magnitude) and the lookup table over its range; nullptr: no mapping.
+  const char* scalarName = nullptr;
+  bool scalarsOnCells = false;
+  int scalarComponent = -1;
+  vtkScalarsToColors* lookupTable = nullptr;
+};
+
+class CpuBackend
+{
+public:
+  CpuBackend();
+  ~CpuBackend();
+
+  /// Renders and hands over; returns "" or a one-line reason the CPU could
+  /// not draw (the caller then draws with OpenGL).
+  std::string Draw(vtkRenderer* ren, const CpuDrawInputs& inputs, const render::Settings& settings);
+  void ReleaseGraphicsResources(vtkWindow* window);
+  /// The last frame's renderer statistics (times, counts).
+  const render::RenderStats& LastStats() const { return this->Stats; }
+  /// Milliseconds of the last hand-over (texture uploads and the quad).
+  double LastHandOverMilliseconds() const { return this->HandOverMs; }
+  /// Times the mesh was converted (a camera move does not convert it).
+  int Conversions() const { return this->ConversionCount; }
+
+private:
+  cpu::SoftwareRenderer Renderer;
+  render::Mesh Mesh;
+  render::WorldFrame Frame;
+  render::ColorMap Map;
+  vtkPolyData* From = nullptr;
+  vtkMTimeType FromTime = 0;
+  std::string FromScalars;
+  int ConversionCount = 0;
+  render::RenderStats Stats;
+  double HandOverMs = 0;
+  std::vector<unsigned char> Rgba;
+  std::vector<float> Depth;
+  std::unique_ptr<vtkOpenGLQuadHelper> Quad;
+  vtkNew<vtkTextureObject> ColorTexture;
+  vtkNew<vtkTextureObject> DepthTexture;
+};
+
+} // namespace shadinglab::gl

@@ -134,6 +134,10 @@ std::string CpuBackend::Draw(
   options.ssaa = 1;
   options.keepDepth = true;
   options.traceRow = -1;
+  // Fast Phong as asked, the GL path's quadratic: the CPU renderer's own
+  // switch to exact Phong on small triangles is a speed choice of the
+  // command line, and would make the backends' pictures differ.
+  options.fastPhongFallback = false;
   const render::Image* image = nullptr;
   try
   {

@@ -966,3 +966,54 @@ TEST(GpuParityGLTest, CpuBackendIsDepthCorrectAgainstNativeActors)
   MapperScene planeOnly(nothing, settings, cam, sl::Vec3d(0.4, 0.6, 1.0), 240, 180, planeActor);
   EXPECT_GT(greenPixels(Grab(planeOnly.window)), g + 1000);
 }
+
+// A closed mesh wound inward (a marching-cubes isosurface can come out so)
+// without normals: its made normals point inward, every face is a back
+// face, and two-sided lighting flips the normals once, outward. Phong on
+// the GPU once flipped them twice (a comment in the fragment shader spelt
+// VTK's normal tag, which VTK substituted a second time) and drew it black.
+TEST(GpuParityGLTest, InwardWoundMeshIsLitOnBothBackends)
+{
+  if (!HaveGpu())
+  {
+    GTEST_SKIP() << "no X display with OpenGL";
+  }
+  vtkSmartPointer<vtkPolyData> torus;
+  torus.TakeReference(sl::datasets::MakeTorus(1.0, 0.4, 48, 24));
+  torus->GetPointData()->SetNormals(nullptr);
+  auto inward = vtkSmartPointer<vtkPolyData>::New();
+  inward->DeepCopy(torus);
+  for (vtkIdType c = 0; c < inward->GetPolys()->GetNumberOfCells(); ++c)
+  {
+    inward->GetPolys()->ReverseCellAtId(c);
+  }
+  const render::Camera cam = Camera();
+  for (const auto mode : { render::ShadingMode::Phong, render::ShadingMode::Gouraud,
+         render::ShadingMode::FastPhong, render::ShadingMode::Flat })
+  {
+    SCOPED_TRACE(render::ShadingModeName(mode));
+    render::Settings settings;
+    settings.material = BlinnPhong();
+    settings.render.mode = mode;
+    settings.render.fastPhongFallback = false;
+    settings.normals.featureAngle = 180.0;
+    MapperScene outwardGpu(torus, settings, cam, sl::Vec3d(0.4, 0.6, 1.0), 240, 180);
+    MapperScene inwardGpu(inward, settings, cam, sl::Vec3d(0.4, 0.6, 1.0), 240, 180);
+    settings.backend = render::Backend::CPU;
+    MapperScene inwardCpu(inward, settings, cam, sl::Vec3d(0.4, 0.6, 1.0), 240, 180);
+    const auto a = Grab(outwardGpu.window), b = Grab(inwardGpu.window), c = Grab(inwardCpu.window);
+    const auto sameAsOutward = Compare(a, b), parity = Compare(c, b);
+    EXPECT_GT(sameAsOutward.pixels, 5000);
+    if (mode == render::ShadingMode::Phong || mode == render::ShadingMode::Gouraud)
+    {
+      // (Flat and fast Phong light at the provoking vertex, the last one:
+      // reversing the winding moves it. Their pictures then differ in
+      // detail, not in brightness.)
+      EXPECT_LE(sameAsOutward.mean, kMeanThreshold);
+      EXPECT_LE(sameAsOutward.p99, kP99Threshold);
+    }
+    EXPECT_LE(sameAsOutward.mean, 3.0); // lit as the outward torus, not black
+    EXPECT_LE(parity.mean, kMeanThreshold);
+    EXPECT_LE(parity.p99, kP99Threshold);
+  }
+}

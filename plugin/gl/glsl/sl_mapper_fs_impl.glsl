@@ -60,8 +60,10 @@
   }
 #else
   {
-    // Phong: the interpolated normal, renormalized and
-    // flipped for back faces by VTK's //VTK::Normal::Impl.
+    // Phong: the interpolated normal, renormalized and flipped for back
+    // faces by VTK's normal implementation tag above. (This comment must
+    // not spell the tag: VTK substitutes every occurrence, and a copy here
+    // flipped back faces twice, drawing inward-wound meshes black.)
     vec3 slP = vertexVC.xyz;
     vec3 slV = slCameraParallel == 1 ? vec3(0.0, 0.0, 1.0) : normalize(-slP);
     slColor = Shade(slRho, slP, normalVCVSOutput, slV);

@@ -1,0 +1,70 @@
+# pvbatch frame times of ParaView's own Surface against ShadingLab Surface
+# on each backend: a sphere of ~1,000,000 triangles coloured by Elevation,
+# 1920x1080, the camera turning 2 degrees a frame; per configuration the
+# median of FRAMES frames after one warm-up frame, all configurations
+# interleaved in one process and the whole set repeated RUNS times.
+#
+#   pvbatch --force-offscreen-rendering bench/paraview_backends.py PLUGIN [FRAMES] [RUNS]
+#
+# Prints one line per configuration with every run's median (ms) and the
+# ratio of its median of medians to ParaView's Surface. A benchmark, not a
+# test: on a machine without a GPU the GL numbers are Mesa llvmpipe's.
+import statistics
+import sys
+import time
+
+from paraview.simple import *
+
+plugin = sys.argv[1]
+FRAMES = int(sys.argv[2]) if len(sys.argv) > 2 else 7
+RUNS = int(sys.argv[3]) if len(sys.argv) > 3 else 2
+LoadPlugin(plugin, remote=False, ns=globals())
+
+# ThetaResolution x PhiResolution x 2 triangles, about 1.0M.
+sphere = Sphere(ThetaResolution=1000, PhiResolution=500)
+elevation = Elevation(Input=sphere, LowPoint=[0, 0, -0.5], HighPoint=[0, 0, 0.5])
+view = CreateView('RenderView')
+view.ViewSize = [1920, 1080]
+view.OrientationAxesVisibility = 0
+rep = Show(elevation, view)
+ColorBy(rep, ('POINTS', 'Elevation'))
+ResetCamera(view)
+camera = view.GetActiveCamera()
+elevation.UpdatePipeline()
+triangles = elevation.GetDataInformation().GetNumberOfCells()
+
+CONFIGS = [('ParaView Surface', None, None, None)]
+for backend in ('GPU', 'CPU'):
+    for mode, model in (('Flat', 'Blinn-Phong'), ('Gouraud', 'Blinn-Phong'),
+                        ('Phong', 'Blinn-Phong'), ('Phong', 'Cook-Torrance')):
+        CONFIGS.append(('ShadingLab %s %s/%s' % (backend, mode, model), backend, mode, model))
+
+
+def frame_times(backend, mode, model):
+    if backend is None:
+        rep.Representation = 'Surface'
+    else:
+        rep.Representation = 'ShadingLab Surface'
+        rep.Backend = backend
+        rep.ShadingMode = mode
+        rep.ReflectanceModel = model
+    Render(view)  # warm-up: shaders, buffers, the mesh's conversion
+    times = []
+    for _ in range(FRAMES):
+        camera.Azimuth(2)
+        start = time.perf_counter()
+        Render(view)
+        times.append(1000 * (time.perf_counter() - start))
+    return statistics.median(times)
+
+
+medians = {label: [] for label, *_ in CONFIGS}
+for run in range(RUNS):
+    for label, backend, mode, model in CONFIGS:
+        medians[label].append(frame_times(backend, mode, model))
+reference = statistics.median(medians['ParaView Surface'])
+print('%d triangles, 1920x1080, median of %d frames, %d runs' % (triangles, FRAMES, RUNS))
+for label, *_ in CONFIGS:
+    m = statistics.median(medians[label])
+    print('%-42s %s ms  (x%.2f of ParaView Surface)'
+          % (label, ' '.join('%7.1f' % t for t in medians[label]), m / reference))

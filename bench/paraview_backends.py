@@ -4,7 +4,10 @@
 # median of FRAMES frames after one warm-up frame, all configurations
 # interleaved in one process and the whole set repeated RUNS times.
 #
-#   pvbatch --force-offscreen-rendering bench/paraview_backends.py PLUGIN [FRAMES] [RUNS]
+#   pvbatch --force-offscreen-rendering bench/paraview_backends.py PLUGIN [FRAMES] [RUNS] [THETA]
+#
+# THETA (default 1000) sets the sphere's resolution: THETA x THETA/2 x 2
+# triangles (316: ~100,000, where Auto's threshold sits).
 #
 # Prints one line per configuration with every run's median (ms) and the
 # ratio of its median of medians to ParaView's Surface. A benchmark, not a
@@ -18,10 +21,11 @@ from paraview.simple import *
 plugin = sys.argv[1]
 FRAMES = int(sys.argv[2]) if len(sys.argv) > 2 else 7
 RUNS = int(sys.argv[3]) if len(sys.argv) > 3 else 2
+THETA = int(sys.argv[4]) if len(sys.argv) > 4 else 1000
 LoadPlugin(plugin, remote=False, ns=globals())
 
-# ThetaResolution x PhiResolution x 2 triangles, about 1.0M.
-sphere = Sphere(ThetaResolution=1000, PhiResolution=500)
+# ThetaResolution x PhiResolution x 2 triangles (1000: about 1.0M).
+sphere = Sphere(ThetaResolution=THETA, PhiResolution=THETA // 2)
 elevation = Elevation(Input=sphere, LowPoint=[0, 0, -0.5], HighPoint=[0, 0, 0.5])
 view = CreateView('RenderView')
 view.ViewSize = [1920, 1080]

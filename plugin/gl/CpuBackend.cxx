@@ -4,6 +4,7 @@
 #include "PolyDataMesh.h"
 #include "VtkCamera.h"
 #include "VtkLights.h"
+#include "shadinglab/render/Display.h"
 #include "shadinglab_glsl.h"
 
 #include <vtkOpenGLQuadHelper.h>
@@ -16,7 +17,10 @@
 #include <vtkScalarsToColors.h>
 #include <vtkShaderProgram.h>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
+#include <iterator>
 #include <stdexcept>
 
 namespace shadinglab::gl
@@ -148,31 +152,64 @@ std::string CpuBackend::Draw(
     return e.what();
   }
 
-  // The hand-over: colour (display values, alpha = covered) and depth,
+  // The hand-over: colour (display values, alpha = covered) and depth of
+  // the rectangle the surface covers (most of a view is background),
   // bottom row first as OpenGL stores textures.
   const auto start = std::chrono::steady_clock::now();
-  const std::vector<uint8_t> rgb = image->ToRGB8(options.display);
-  const size_t pixels = static_cast<size_t>(width) * height;
-  this->Rgba.resize(4 * pixels);
-  this->Depth.resize(pixels);
+  int i0 = width, i1 = -1, j0 = height, j1 = -1;
   for (int j = 0; j < height; ++j)
   {
-    const size_t src = static_cast<size_t>(height - 1 - j) * width;
-    const size_t dst = static_cast<size_t>(j) * width;
-    for (int i = 0; i < width; ++i)
+    const uint8_t* row = &image->covered[static_cast<size_t>(j) * width];
+    const uint8_t* first = std::find(row, row + width, uint8_t(1));
+    if (first == row + width)
+    {
+      continue;
+    }
+    const int last = static_cast<int>(width - 1 - (std::find(std::make_reverse_iterator(row + width),
+      std::make_reverse_iterator(row), uint8_t(1)) - std::make_reverse_iterator(row + width)));
+    i0 = std::min(i0, static_cast<int>(first - row));
+    i1 = std::max(i1, last);
+    j0 = std::min(j0, j);
+    j1 = std::max(j1, j);
+  }
+  if (i1 < i0)
+  {
+    this->HandOverMs = 0;
+    return ""; // nothing of the surface in view
+  }
+  const int w = i1 - i0 + 1, h = j1 - j0 + 1;
+  const size_t pixels = static_cast<size_t>(w) * h;
+  this->Rgba.resize(4 * pixels);
+  this->Depth.resize(pixels);
+  const bool applied = image->displayApplied;
+  for (int r = 0; r < h; ++r)
+  {
+    // Texture row r is image row j1 - r (the image's row 0 is the top).
+    const size_t src = static_cast<size_t>(j1 - r) * width + i0;
+    const size_t dst = static_cast<size_t>(r) * w;
+    for (int i = 0; i < w; ++i)
     {
       const size_t s = src + i, d = dst + i;
-      this->Rgba[4 * d] = rgb[3 * s];
-      this->Rgba[4 * d + 1] = rgb[3 * s + 1];
-      this->Rgba[4 * d + 2] = rgb[3 * s + 2];
-      this->Rgba[4 * d + 3] = image->covered[s] ? 255 : 0;
-      this->Depth[d] = image->covered[s] ? image->depth[s] : 1.0f;
+      if (!image->covered[s])
+      {
+        this->Rgba[4 * d + 3] = 0;
+        this->Depth[d] = 1.0f;
+        continue;
+      }
+      // As Image::ToRGB8: the display transform, then rounding to 8 bits.
+      Vec3<float> c(image->rgb[3 * s], image->rgb[3 * s + 1], image->rgb[3 * s + 2]);
+      c = render::ApplyDisplay(applied ? render::DisplayTransform::Clamp : options.display, c);
+      this->Rgba[4 * d] = static_cast<unsigned char>(std::lround(c.x * 255.0f));
+      this->Rgba[4 * d + 1] = static_cast<unsigned char>(std::lround(c.y * 255.0f));
+      this->Rgba[4 * d + 2] = static_cast<unsigned char>(std::lround(c.z * 255.0f));
+      this->Rgba[4 * d + 3] = 255;
+      this->Depth[d] = image->depth[s];
     }
   }
   this->ColorTexture->SetContext(window);
   this->DepthTexture->SetContext(window);
-  if (!this->ColorTexture->Create2DFromRaw(width, height, 4, VTK_UNSIGNED_CHAR, this->Rgba.data()) ||
-    !this->DepthTexture->Create2DFromRaw(width, height, 1, VTK_FLOAT, this->Depth.data()))
+  if (!this->ColorTexture->Create2DFromRaw(w, h, 4, VTK_UNSIGNED_CHAR, this->Rgba.data()) ||
+    !this->DepthTexture->Create2DFromRaw(w, h, 1, VTK_FLOAT, this->Depth.data()))
   {
     return "could not upload the image as textures";
   }
@@ -190,6 +227,10 @@ std::string CpuBackend::Draw(
     return "the hand-over shader did not compile";
   }
   vtkOpenGLState* state = window->GetState();
+  // The quad covers the rectangle: a viewport of its size at its place in
+  // the renderer's (OpenGL's y up: image row j1 is the rectangle's bottom).
+  vtkOpenGLState::ScopedglViewport viewport(state);
+  state->vtkglViewport(x + i0, y + (height - 1 - j1), w, h);
   vtkOpenGLState::ScopedglEnableDisable depthTest(state, GL_DEPTH_TEST);
   state->vtkglEnable(GL_DEPTH_TEST);
   state->vtkglDepthMask(GL_TRUE);

@@ -15,6 +15,7 @@
 #include "shadinglab_glsl_defines.h"
 
 #include <vtkActor.h>
+#include <vtkRenderWindow.h>
 #include <vtkCellData.h>
 #include <vtkExecutive.h>
 #include <vtkScalarsToColors.h>
@@ -36,6 +37,7 @@
 #include <vtkTypeInt64Array.h>
 
 #include <algorithm>
+#include <cctype>
 #include <array>
 #include <cmath>
 #include <cstdlib>
@@ -78,6 +80,9 @@ struct vtkShadingLabPolyDataMapper::Internals
   /// Backend CPU: the software renderer and its hand-over to OpenGL.
   shadinglab::gl::CpuBackend Cpu;
   std::string CpuFailure; ///< the last reason the CPU could not draw (said once)
+  std::string BackendChoice = "gpu"; ///< the last render's backend and why
+  std::string GlRenderer;            ///< GL_RENDERER of RendererOf
+  const vtkRenderWindow* RendererOf = nullptr;
 };
 
 vtkStandardNewMacro(vtkShadingLabPolyDataMapper);
@@ -401,10 +406,63 @@ vtkPolyData* vtkShadingLabPolyDataMapper::PrepareInput(vtkPolyData* input)
   return input;
 }
 
+bool vtkShadingLabPolyDataMapper::ChooseCpu(vtkRenderer* ren)
+{
+  Internals& in = *this->Internal;
+  switch (in.Settings.backend)
+  {
+    case sl::render::MapperBackend::GPU:
+      in.BackendChoice = "gpu";
+      return false;
+    case sl::render::MapperBackend::CPU:
+      in.BackendChoice = "cpu";
+      return true;
+    case sl::render::MapperBackend::Auto:
+      break;
+  }
+  // The context's renderer string, read once per window (the context is
+  // current while a mapper renders).
+  if (in.RendererOf != ren->GetRenderWindow())
+  {
+    // VTK's capability report: "OpenGL renderer string:  <name>".
+    const char* report = ren->GetRenderWindow()->ReportCapabilities();
+    const std::string text = report ? report : "";
+    const std::string key = "OpenGL renderer string:";
+    const size_t at = text.find(key);
+    in.GlRenderer.clear();
+    if (at != std::string::npos)
+    {
+      const size_t begin = text.find_first_not_of(' ', at + key.size());
+      const size_t end = text.find('\n', at);
+      in.GlRenderer = begin == std::string::npos ? "" : text.substr(begin, end - begin);
+    }
+    in.RendererOf = ren->GetRenderWindow();
+  }
+  std::string lower = in.GlRenderer;
+  std::transform(lower.begin(), lower.end(), lower.begin(),
+    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  const bool software = lower.find("llvmpipe") != std::string::npos ||
+    lower.find("softpipe") != std::string::npos || lower.find("swr") != std::string::npos;
+  vtkPolyData* input = this->GetInput();
+  const long long polygons = input ? static_cast<long long>(input->GetNumberOfPolys()) : 0;
+  const bool cpu = software && polygons >= sl::render::kAutoCpuMinPolygons;
+  std::ostringstream why;
+  why << (cpu ? "cpu" : "gpu") << ": OpenGL renderer '" << in.GlRenderer << "' is "
+      << (software ? "a software rasterizer" : "hardware") << ", " << polygons << " polygons"
+      << (software ? (cpu ? " >= " : " < ") : "") << (software ? std::to_string(sl::render::kAutoCpuMinPolygons) : "");
+  in.BackendChoice = why.str();
+  return cpu;
+}
+
+const std::string& vtkShadingLabPolyDataMapper::GetBackendChoice() const
+{
+  return this->Internal->BackendChoice;
+}
+
 void vtkShadingLabPolyDataMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
 {
-  const bool cpu = this->Internal->Settings.backend == sl::render::Backend::CPU &&
-    !ren->GetSelector() && !act->HasTranslucentPolygonalGeometry();
+  const bool cpu = this->ChooseCpu(ren) && !ren->GetSelector() &&
+    !act->HasTranslucentPolygonalGeometry();
   if (!cpu || !this->RenderPieceOnCpu(ren, act))
   {
     this->Superclass::RenderPiece(ren, act);

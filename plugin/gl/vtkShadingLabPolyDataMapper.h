@@ -121,6 +121,9 @@ public:
   double GetCpuRenderMilliseconds() const;
   double GetCpuHandOverMilliseconds() const;
   int GetCpuMeshConversions() const;
+  /// The last render's backend and, for Auto, why ("cpu: OpenGL renderer
+  /// 'llvmpipe ...' is a software rasterizer, 996000 polygons >= 100000").
+  const std::string& GetBackendChoice() const;
   void ReleaseGraphicsResources(vtkWindow* window) override;
 
   ///@{
@@ -173,6 +176,9 @@ private:
   /// The input with the normals the settings ask for (made here when it
   /// has none, or on request; none in flat mode): what both backends draw.
   vtkPolyData* PrepareInput(vtkPolyData* input);
+  /// Whether this render goes to the CPU (the Backend setting; Auto
+  /// decides here and says why in GetBackendChoice).
+  bool ChooseCpu(vtkRenderer* ren);
   /// Backend CPU; false (having said why once) when it could not draw.
   bool RenderPieceOnCpu(vtkRenderer* ren, vtkActor* act);
 

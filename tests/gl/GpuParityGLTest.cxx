@@ -880,14 +880,14 @@ TEST(GpuParityGLTest, CpuBackendDrawsWhatTheCpuRendererDraws)
     opt.height = 180;
     const auto ref =
       test::RenderCpu(mesh, cam, lights.Cast<float>(), settings.material.Cast<float>(), opt);
-    settings.backend = render::Backend::CPU;
+    settings.backend = render::MapperBackend::CPU;
     MapperScene cpu(torus, settings, cam, toLight, opt.width, opt.height);
     const auto onCpu = Grab(cpu.window);
     const auto same = Compare(ref, onCpu);
     EXPECT_GT(same.pixels, 5000);
     EXPECT_LE(same.mean, 0.05); // the same frame, through 8 bits and a texture
     EXPECT_LE(same.p99, 1.0);
-    settings.backend = render::Backend::GPU;
+    settings.backend = render::MapperBackend::GPU;
     MapperScene gpu(torus, settings, cam, toLight, opt.width, opt.height);
     const auto parity = Compare(Grab(gpu.window), onCpu);
     EXPECT_LE(parity.mean, kMeanThreshold);
@@ -948,10 +948,10 @@ TEST(GpuParityGLTest, CpuBackendIsDepthCorrectAgainstNativeActors)
     }
     return n;
   };
-  settings.backend = render::Backend::GPU;
+  settings.backend = render::MapperBackend::GPU;
   MapperScene gpu(sphere, settings, cam, sl::Vec3d(0.4, 0.6, 1.0), 240, 180, planeActor);
   const auto onGpu = Grab(gpu.window);
-  settings.backend = render::Backend::CPU;
+  settings.backend = render::MapperBackend::CPU;
   MapperScene cpu(sphere, settings, cam, sl::Vec3d(0.4, 0.6, 1.0), 240, 180, planeActor);
   const auto onCpu = Grab(cpu.window);
   const int64_t g = greenPixels(onGpu), c = greenPixels(onCpu);
@@ -999,7 +999,7 @@ TEST(GpuParityGLTest, InwardWoundMeshIsLitOnBothBackends)
     settings.normals.featureAngle = 180.0;
     MapperScene outwardGpu(torus, settings, cam, sl::Vec3d(0.4, 0.6, 1.0), 240, 180);
     MapperScene inwardGpu(inward, settings, cam, sl::Vec3d(0.4, 0.6, 1.0), 240, 180);
-    settings.backend = render::Backend::CPU;
+    settings.backend = render::MapperBackend::CPU;
     MapperScene inwardCpu(inward, settings, cam, sl::Vec3d(0.4, 0.6, 1.0), 240, 180);
     const auto a = Grab(outwardGpu.window), b = Grab(inwardGpu.window), c = Grab(inwardCpu.window);
     const auto sameAsOutward = Compare(a, b), parity = Compare(c, b);
@@ -1015,5 +1015,108 @@ TEST(GpuParityGLTest, InwardWoundMeshIsLitOnBothBackends)
     EXPECT_LE(sameAsOutward.mean, 3.0); // lit as the outward torus, not black
     EXPECT_LE(parity.mean, kMeanThreshold);
     EXPECT_LE(parity.p99, kP99Threshold);
+  }
+}
+
+// Two renderers side by side in one window, the left drawn by the GPU
+// backend and the right by the CPU backend: the hand-over lands in its own
+// renderer's viewport, and the halves agree within the parity thresholds.
+TEST(GpuParityGLTest, CpuBackendDrawsIntoItsOwnViewport)
+{
+  if (!HaveGpu())
+  {
+    GTEST_SKIP() << "no X display with OpenGL";
+  }
+  auto torus = WithExactNormals(sl::datasets::MakeTorus(1.0, 0.4, 48, 24));
+  const render::Camera cam = Camera();
+  auto window = vtkSmartPointer<vtkRenderWindow>::New();
+  window->SetOffScreenRendering(1);
+  window->SetMultiSamples(0);
+  window->SetSize(480, 180);
+  std::vector<vtkSmartPointer<vtkShadingLabPolyDataMapper>> mappers;
+  for (int side = 0; side < 2; ++side)
+  {
+    render::Settings settings;
+    settings.material = BlinnPhong();
+    settings.backend = side == 0 ? render::MapperBackend::GPU : render::MapperBackend::CPU;
+    auto mapper = vtkSmartPointer<vtkShadingLabPolyDataMapper>::New();
+    mapper->SetInputData(torus);
+    mapper->SetSettings(settings);
+    vtkNew<vtkActor> actor;
+    actor->SetMapper(mapper);
+    actor->GetProperty()->SetDiffuseColor(0.9, 0.8, 0.7);
+    vtkNew<vtkRenderer> ren;
+    ren->SetViewport(0.5 * side, 0, 0.5 * side + 0.5, 1);
+    ren->AddActor(actor);
+    ren->SetBackground(0.32, 0.34, 0.43);
+    AddDirectionalLight(ren, 0.4, 0.6, 1.0);
+    SetCamera(ren, cam);
+    window->AddRenderer(ren);
+    mappers.push_back(mapper);
+  }
+  window->Render();
+  const render::Image both = Grab(window);
+  render::Image half[2];
+  for (int side = 0; side < 2; ++side)
+  {
+    half[side].width = 240;
+    half[side].height = 180;
+    half[side].displayApplied = true;
+    half[side].appliedDisplay = both.appliedDisplay;
+    for (int j = 0; j < 180; ++j)
+    {
+      for (int i = 0; i < 240; ++i)
+      {
+        const size_t s = static_cast<size_t>(j) * 480 + 240 * side + i;
+        half[side].covered.push_back(both.covered[s]);
+        for (int c = 0; c < 3; ++c)
+        {
+          half[side].rgb.push_back(both.rgb[3 * s + c]);
+        }
+      }
+    }
+  }
+  const auto d = Compare(half[0], half[1]);
+  EXPECT_GT(d.pixels, 5000);
+  EXPECT_LE(d.mean, kMeanThreshold);
+  EXPECT_LE(d.p99, kP99Threshold);
+  EXPECT_EQ(mappers[1]->GetCpuMeshConversions(), 1);
+  EXPECT_GT(mappers[1]->GetCpuHandOverMilliseconds(), 0.0);
+}
+
+// Backend Auto: the CPU where OpenGL is a software rasterizer and the mesh
+// has at least kAutoCpuMinPolygons polygons, the GPU otherwise; the choice
+// is reported with its reason, and the big mesh's picture is the CPU
+// backend's.
+TEST(GpuParityGLTest, AutoBackendChoosesTheCpuOnASoftwareRasterizerForLargeMeshes)
+{
+  if (!HaveGpu())
+  {
+    GTEST_SKIP() << "no X display with OpenGL";
+  }
+  vtkSmartPointer<vtkPolyData> small, large;
+  small.TakeReference(sl::datasets::MakeUVSphere(48, 24));
+  large.TakeReference(sl::datasets::MakeUVSphere(400, 200));
+  ASSERT_GE(large->GetNumberOfPolys(), sl::render::kAutoCpuMinPolygons);
+  ASSERT_LT(small->GetNumberOfPolys(), sl::render::kAutoCpuMinPolygons);
+  render::Settings settings;
+  settings.material = BlinnPhong();
+  settings.backend = render::MapperBackend::Auto;
+  const render::Camera cam = Camera();
+  MapperScene a(small, settings, cam, sl::Vec3d(0.4, 0.6, 1.0), 240, 180);
+  MapperScene b(large, settings, cam, sl::Vec3d(0.4, 0.6, 1.0), 240, 180);
+  const std::string smallChoice = a.mapper->GetBackendChoice();
+  const std::string largeChoice = b.mapper->GetBackendChoice();
+  std::printf("auto, small: %s\nauto, large: %s\n", smallChoice.c_str(), largeChoice.c_str());
+  EXPECT_EQ(smallChoice.rfind("gpu: OpenGL renderer '", 0), 0u) << smallChoice;
+  const bool software = largeChoice.find("a software rasterizer") != std::string::npos;
+  EXPECT_EQ(largeChoice.rfind(software ? "cpu: " : "gpu: ", 0), 0u) << largeChoice;
+  EXPECT_EQ(b.mapper->GetCpuMeshConversions(), software ? 1 : 0);
+  if (software)
+  {
+    settings.backend = render::MapperBackend::CPU;
+    MapperScene cpu(large, settings, cam, sl::Vec3d(0.4, 0.6, 1.0), 240, 180);
+    const auto d = Compare(Grab(cpu.window), Grab(b.window));
+    EXPECT_EQ(d.mean, 0.0);
   }
 }

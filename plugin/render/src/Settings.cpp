@@ -170,15 +170,16 @@ void RenderRows(std::vector<SettingRow>& t)
   }
   {
     SettingRow r = Row("backend", "Backend", "Backend", G::Render, K::Choice);
-    r.choices = { { "gpu", "GPU" }, { "cpu", "CPU" } };
-    r.doc = "who draws the mapper's pixels: the GLSL shaders, or the CPU renderer handing "
-            "colour and depth to OpenGL (no GPU needed; the CLI's --backend chooses likewise)";
+    r.choices = { { "gpu", "GPU" }, { "cpu", "CPU" }, { "auto", "Auto" } };
+    r.doc = "who draws the mapper's pixels: the GLSL shaders, the CPU renderer handing colour "
+            "and depth to OpenGL (no GPU needed), or auto: CPU where OpenGL is a software "
+            "rasterizer and the mesh has 100,000 polygons or more";
     r.frontEnds = kParaView | kMapper;
     r.metavar = "B";
     r.set = [](Settings& s, const SettingValue& v) {
-      s.backend = v.numbers[0] == 0 ? Backend::GPU : Backend::CPU;
+      s.backend = static_cast<MapperBackend>(static_cast<int>(v.numbers[0]));
     };
-    r.get = [](const Settings& s) { return Number(s.backend == Backend::GPU ? 0 : 1); };
+    r.get = [](const Settings& s) { return Number(static_cast<int>(s.backend)); };
     t.push_back(r);
   }
   {

@@ -54,6 +54,22 @@ struct ColorBySettings
   std::string range = "auto";           ///< "auto" (the data's) or "MIN,MAX"
 };
 
+/// Who draws a mapper's pixels (Settings::backend).
+enum class MapperBackend
+{
+  GPU, ///< the GLSL shaders
+  CPU, ///< the CPU renderer, its colour and depth handed to OpenGL
+  /// CPU where OpenGL is a software rasterizer (Mesa's llvmpipe, softpipe,
+  /// swr) and the mesh is large enough for the CPU path to be faster
+  /// there (kAutoCpuMinPolygons); GPU otherwise.
+  Auto
+};
+
+/// Auto's mesh size: below it a software rasterizer draws the GL path
+/// faster than the CPU path's fixed hand-over (a 1080p texture pair).
+/// Measured by bench/paraview_backends.py (docs/paraview.md).
+inline constexpr long long kAutoCpuMinPolygons = 100000;
+
 /// Every setting of a surface's shading: one struct, passed whole.
 struct Settings
 {
@@ -75,7 +91,7 @@ struct Settings
   /// Who draws a vtkShadingLabPolyDataMapper's (and ParaView's ShadingLab
   /// Surface's) pixels: OpenGL shaders, or the CPU renderer handing its
   /// colour and depth to OpenGL (plugin/gl/CpuBackend.h).
-  Backend backend = Backend::GPU;
+  MapperBackend backend = MapperBackend::GPU;
 };
 
 enum class SettingGroup

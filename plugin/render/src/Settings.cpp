@@ -173,7 +173,7 @@ void RenderRows(std::vector<SettingRow>& t)
     r.choices = { { "gpu", "GPU" }, { "cpu", "CPU" }, { "auto", "Auto" } };
     r.doc = "who draws the mapper's pixels: the GLSL shaders, the CPU renderer handing colour "
             "and depth to OpenGL (no GPU needed), or auto: CPU where OpenGL is a software "
-            "rasterizer and the mesh has 100,000 polygons or more";
+            "rasterizer and the mesh has 30,000 polygons or more";
     r.frontEnds = kParaView | kMapper;
     r.metavar = "B";
     r.set = [](Settings& s, const SettingValue& v) {

@@ -65,10 +65,13 @@ enum class MapperBackend
   Auto
 };
 
-/// Auto's mesh size: below it a software rasterizer draws the GL path
-/// faster than the CPU path's fixed hand-over (a 1080p texture pair).
-/// Measured by bench/paraview_backends.py (docs/paraview.md).
-inline constexpr long long kAutoCpuMinPolygons = 100000;
+/// Auto's mesh size. On llvmpipe (bench/paraview_backends.py, pvbatch,
+/// 1920x1080, 2 cores, median of 7 frames x 3 runs, docs/paraview.md) the
+/// two backends tie at ~10,000 triangles (Phong 79 ms CPU, 76-83 ms GPU: the
+/// CPU path's hand-over costs what llvmpipe saves) and the CPU is ahead from
+/// ~30,000 on (31,680: Phong 76 against 84-88 ms, Cook-Torrance 79 against
+/// 99) and further ahead the larger the mesh (996,000: 108 against 190).
+inline constexpr long long kAutoCpuMinPolygons = 30000;
 
 /// Every setting of a surface's shading: one struct, passed whole.
 struct Settings

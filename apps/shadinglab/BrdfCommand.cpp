@@ -74,11 +74,9 @@ std::vector<double> ParseAngles(const Arguments& args, const std::string& name,
 int RunBrdf(int argc, char** argv)
 {
   std::vector<std::string> valued = { "theta-l", "theta-v", "phi", "term" };
-  for (const auto& o : MaterialOptions())
-  {
-    valued.push_back(o);
-  }
-  const Arguments args(argc, argv, valued, { "help" });
+  std::vector<std::string> flags = { "help" };
+  AddSettingFlags(valued, flags, render::SettingGroup::Material);
+  const Arguments args(argc, argv, valued, flags);
   if (args.Has("help"))
   {
     std::cout << kBrdfHelp << MaterialHelp();
@@ -149,7 +147,7 @@ int RunBrdf(int argc, char** argv)
             value = EvaluateBrdf(material, material.diffuseColor, N, L, V);
             break;
           case Term::F:
-            value = F_RGB(VoH, material.eta, material.k);
+            value = material.Fresnel(VoH);
             break;
           case Term::D:
           {

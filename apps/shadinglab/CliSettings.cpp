@@ -57,16 +57,6 @@ ReadOptions ReadOptionsFromArguments(const Arguments& args)
   return options;
 }
 
-const std::vector<std::string>& MaterialOptions()
-{
-  static const std::vector<std::string> options = [] {
-    std::vector<std::string> valued, flags;
-    AddSettingFlags(valued, flags, render::SettingGroup::Material);
-    return valued;
-  }();
-  return options;
-}
-
 std::string MaterialHelp()
 {
   return "Material options:\n" + render::CliHelp(render::SettingGroup::Material) +
@@ -131,7 +121,15 @@ void ApplyMaterialArguments(
     }
   }
   render::NormalizeLobeWeights(m);
-  const std::string problem = ValidateMaterial(m);
+  if (!settings.nkFile.empty())
+  {
+    const std::string unread = render::ReadNkFile(settings);
+    if (!unread.empty())
+    {
+      throw UsageError(unread);
+    }
+  }
+  const std::string problem = render::ValidateSettings(settings);
   if (!problem.empty())
   {
     throw UsageError("invalid material: " + problem);

@@ -28,8 +28,6 @@ void ApplySettingArguments(const Arguments& args, render::SettingGroup group,
 /// reads a mesh file; throws UsageError.
 ReadOptions ReadOptionsFromArguments(const Arguments& args);
 
-/// Options every material-taking command accepts (see MaterialHelp()).
-const std::vector<std::string>& MaterialOptions();
 std::string MaterialHelp();
 
 /// Builds and validates the material from --model/--material/--m/... options.

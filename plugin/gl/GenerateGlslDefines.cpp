@@ -55,6 +55,7 @@ int main(int argc, char** argv)
   define("SL_NEUTRAL_DESATURATION", sl::render::kNeutralDesaturation);
   glsl << "#define SL_MAX_LOBES " << sl::kMaxLobes << "\n";
   glsl << "#define SL_MAX_LIGHTS " << sl::kMaxLights << "\n";
+  glsl << "#define SL_SPECTRAL_SAMPLES " << sl::kSpectralSamples << "\n";
 
   FILE* out = std::fopen(argv[1], "w");
   if (!out)

@@ -111,7 +111,7 @@ namespace
 auto ModifyingPart(const sl::render::Settings& s)
 {
   const sl::Material<double>& m = s.material;
-  return std::make_tuple(m.model, m.ks > 0, m.lobeCount, m.IsConductor(), s.render.mode,
+  return std::make_tuple(m.model, m.ks > 0, m.lobeCount, m.IsConductor(), m.spectralCount > 0, s.render.mode,
     s.render.interpolation, s.render.display, s.render.maxError, s.normals.weighting, s.normals.featureAngle,
     s.normals.recompute);
 }
@@ -315,6 +315,7 @@ std::string vtkShadingLabPolyDataMapper::Variant(vtkRenderer* ren) const
     << "#define SL_SPECULAR " << (specular ? 1 : 0) << "\n"
     << "#define SL_LOBE_COUNT " << std::max(1, std::min(m.lobeCount, sl::kMaxLobes)) << "\n"
     << "#define SL_CONDUCTOR " << (m.IsConductor() ? 1 : 0) << "\n"
+    << "#define SL_SPECTRAL " << (m.spectralCount > 0 ? 1 : 0) << "\n"
     << "#define SL_HEADLIGHT " << (headlightOnly ? 1 : 0) << "\n"
     << "#define SL_DISPLAY " << static_cast<int>(this->Internal->Settings.render.display) << "\n"
     << "#define SL_INTERP " << ((this->Internal->Settings.render.interpolation == sl::render::InterpolationSpace::Perspective) ? "smooth" : "noperspective") << "\n";
@@ -748,6 +749,23 @@ void vtkShadingLabPolyDataMapper::SetMapperShaderParameters(
   const float viewport[4] = { static_cast<float>(vx), static_cast<float>(vy), static_cast<float>(vw),
     static_cast<float>(vh) };
   block.insert(block.end(), viewport, viewport + 4);
+  float spectralEta[sl::kSpectralSamples], spectralK[sl::kSpectralSamples],
+    spectralWeight[3 * sl::kSpectralSamples];
+  for (int i = 0; i < sl::kSpectralSamples; ++i)
+  {
+    spectralEta[i] = static_cast<float>(m.spectralEta[i]);
+    spectralK[i] = static_cast<float>(m.spectralK[i]);
+    for (int c = 0; c < 3; ++c)
+    {
+      spectralWeight[3 * i + c] = static_cast<float>(m.spectralWeight[i][c]);
+    }
+  }
+  if (m.spectralCount > 0)
+  {
+    block.insert(block.end(), spectralEta, spectralEta + sl::kSpectralSamples);
+    block.insert(block.end(), spectralK, spectralK + sl::kSpectralSamples);
+    block.insert(block.end(), spectralWeight, spectralWeight + 3 * sl::kSpectralSamples);
+  }
 
   std::vector<float>& last = this->Internal->LastUniforms[program];
   if (last == block)
@@ -776,6 +794,13 @@ void vtkShadingLabPolyDataMapper::SetMapperShaderParameters(
   program->SetUniform1fv("slLobeWeight", sl::kMaxLobes, weights);
   program->SetUniform1fv("slLobeM", sl::kMaxLobes, ms);
   program->SetUniform4f("slViewport", viewport);
+  if (m.spectralCount > 0)
+  {
+    program->SetUniform1fv("slSpectralEta", sl::kSpectralSamples, spectralEta);
+    program->SetUniform1fv("slSpectralK", sl::kSpectralSamples, spectralK);
+    program->SetUniform3fv(
+      "slSpectralWeight", sl::kSpectralSamples, reinterpret_cast<float(*)[3]>(spectralWeight));
+  }
 }
 
 void vtkShadingLabPolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)

@@ -117,6 +117,20 @@ vec3 F_RGB(float cosTheta_i, vec3 eta, vec3 k)
     F_Conductor(cosTheta_i, eta.z, k.z));
 }
 
+// Fresnel per wavelength reduced to linear sRGB (docs/model.md eq. 7.3):
+// F_rgb = sum_i w_i F(cos theta_i; eta_i, k_i). The same as F_Spectral in
+// Fresnel.h.
+vec3 F_Spectral(float cosTheta_i, float eta[SL_SPECTRAL_SAMPLES], float k[SL_SPECTRAL_SAMPLES],
+  vec3 weight[SL_SPECTRAL_SAMPLES])
+{
+  vec3 F = vec3(0.0);
+  for (int i = 0; i < SL_SPECTRAL_SAMPLES; ++i)
+  {
+    F += weight[i] * F_Conductor(cosTheta_i, eta[i], k[i]);
+  }
+  return F;
+}
+
 // Rs of Cook & Torrance 1982 (jacobian 1) or Walter et al. 2007 (jacobian 4).
 float Fs_CookTorrance(float F, float D, float G, float NoL, float NoV, float jacobian)
 {

@@ -10,6 +10,7 @@
 //   SL_SPECULAR     0 drops the specular term (ks = 0)
 //   SL_LOBE_COUNT   Beckmann mixture size (1..4)
 //   SL_CONDUCTOR    1 when any k > 0 (complex-index Fresnel)
+//   SL_SPECTRAL     1: Fresnel per wavelength (eq. 7.3) instead of per channel
 //   SL_HEADLIGHT    1 when the only light is a headlight: L = +z in view
 //                   coordinates, a constant the compiler folds
 
@@ -30,6 +31,13 @@ uniform float slLobeWeight[SL_MAX_LOBES];
 uniform float slLobeM[SL_MAX_LOBES];
 uniform vec3 slEta;
 uniform vec3 slK;
+#if SL_SPECTRAL
+// Fresnel per wavelength (docs/model.md eq. 7.3): eta, k at the samples'
+// wavelengths and their CIE/D65 weights to linear sRGB.
+uniform float slSpectralEta[SL_SPECTRAL_SAMPLES];
+uniform float slSpectralK[SL_SPECTRAL_SAMPLES];
+uniform vec3 slSpectralWeight[SL_SPECTRAL_SAMPLES];
+#endif
 uniform float slJacobian;
 
 // Direction to the light and its irradiance factor at P (view coordinates).
@@ -118,7 +126,9 @@ vec3 EvaluateBrdf(vec3 diffuseColor, vec3 N, vec3 L, vec3 V)
   float VoH = max(dot(V, H), 0.0);
   float D = D_BeckmannMixture(NoH, slLobeWeight, slLobeM, SL_LOBE_COUNT);
   float G = G_CookTorrance(NoH, NoV, NoL, VoH);
-#if SL_CONDUCTOR
+#if SL_SPECTRAL
+  vec3 F = F_Spectral(VoH, slSpectralEta, slSpectralK, slSpectralWeight);
+#elif SL_CONDUCTOR
   vec3 F = F_RGB(VoH, slEta, slK);
 #else
   vec3 F = vec3(F_Dielectric(VoH, slEta.x), F_Dielectric(VoH, slEta.y), F_Dielectric(VoH, slEta.z));

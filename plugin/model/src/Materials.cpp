@@ -65,6 +65,19 @@ std::vector<MaterialPreset> MakePresets()
     presets.push_back({ "glass",
       "Schott N-BK7 Sellmeier dispersion at 650/550/450 nm (refractiveindex.info, CC0)", m });
   }
+  {
+    Material<double> m;
+    m.model = ReflectanceModel::CookTorrance;
+    m.kd = 0.0;
+    m.ks = 1.0;
+    // Hale & Querry 1973 (refractiveindex.info, CC0) at 650/550/450 nm;
+    // k < 1e-8 there, a dielectric.
+    m.eta = { 1.331, 1.333, 1.337 };
+    m.lobes[0] = { 1.0, 0.05 };
+    presets.push_back({ "water",
+      "Hale & Querry 1973, Appl. Opt. 12, 555: n at 650/550/450 nm (refractiveindex.info, CC0)",
+      m });
+  }
   presets.push_back({ "gold",
     "Johnson & Christy 1972, Phys. Rev. B 6, 4370: samples at 1.88/2.26/2.75 eV "
     "(659/549/451 nm) for R/G/B",

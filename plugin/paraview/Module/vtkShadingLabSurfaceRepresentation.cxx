@@ -253,7 +253,8 @@ void vtkShadingLabSurfaceRepresentation::UpdateSettings()
     settings.material = sl::FindMaterialPreset(settings.preset)->material;
   }
   sl::render::NormalizeLobeWeights(settings.material);
-  in.Problem = sl::ValidateMaterial(settings.material);
+  sl::render::ResolveSpectral(settings); // the preset's data, after the preset's material
+  in.Problem = sl::render::ValidateSettings(settings);
   if (!in.Problem.empty())
   {
     vtkErrorMacro("ShadingLab material: " << in.Problem << " (keeping the last valid material)");

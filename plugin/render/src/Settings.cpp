@@ -2,6 +2,8 @@
 // The settings table: one row a setting (Settings.h says what reads it).
 #include "shadinglab/render/Settings.h"
 
+#include <fstream>
+
 #include "shadinglab/render/ColorMap.h"
 
 #include "shadinglab/model/Materials.h"
@@ -10,6 +12,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
+#include <fstream>
 #include <sstream>
 
 namespace shadinglab::render
@@ -568,6 +571,29 @@ void MaterialRows(std::vector<SettingRow>& t)
     t.push_back(r);
   }
   {
+    SettingRow r = Row("spectral", "Spectral", "Spectral Fresnel", G::Material, K::Flag);
+    r.doc = "Cook-Torrance's F per wavelength from measured n and k (a preset's, or --nk's), "
+            "integrated under D65 against the CIE 1931 observer to linear sRGB with 16 "
+            "samples (docs/model.md section 7); replaces eta and k";
+    r.frontEnds = kCli | kParaView | kMapper | kExplorer;
+    r.set = [](Settings& s, const SettingValue& v) { s.spectral = v.numbers[0] != 0; };
+    r.get = [](const Settings& s) { return Number(s.spectral ? 1 : 0); };
+    t.push_back(r);
+  }
+  {
+    SettingRow r = Row("nk", "", "Optical Data File", G::Material, K::Text);
+    r.doc = "a refractiveindex.info YAML file (tabulated nk, tabulated n, or Sellmeier "
+            "formula 2) covering 380-780 nm: the material's n and k for --spectral";
+    r.frontEnds = kCli;
+    r.metavar = "FILE.yml";
+    r.set = [](Settings& s, const SettingValue& v) {
+      s.nkFile = v.text;
+      s.nk.reset();
+    };
+    r.get = [](const Settings& s) { return SettingValue{ {}, s.nkFile }; };
+    t.push_back(r);
+  }
+  {
     SettingRow r = Row("variant", "SpecularVariant", "Specular Variant", G::Material, K::Choice);
     r.choices = { { "1982", "Cook-Torrance 1982" }, { "walter", "Walter 2007" } };
     r.doc = "Cook-Torrance denominator: (N.L)(N.V) as Cook & Torrance 1982 and the lecture, or "
@@ -737,7 +763,10 @@ std::string ParseSetting(
   return {};
 }
 
-std::string ApplySetting(
+namespace
+{
+
+std::string ApplyRow(
   Settings& settings, const SettingRow& row, const SettingValue& value, const std::string& prefix)
 {
   const std::string name = prefix + row.key;
@@ -800,6 +829,81 @@ std::string ApplySetting(
     }
   }
   row.set(settings, value);
+  return {};
+}
+
+} // namespace
+
+std::string ApplySetting(
+  Settings& settings, const SettingRow& row, const SettingValue& value, const std::string& prefix)
+{
+  const std::string problem = ApplyRow(settings, row, value, prefix);
+  ResolveSpectral(settings); // a missing data source is ValidateSettings' to report
+  return problem;
+}
+
+std::string ResolveSpectral(Settings& settings)
+{
+  settings.material.spectralCount = 0;
+  if (!settings.spectral)
+  {
+    return {};
+  }
+  const Dispersion* data = settings.nk ? settings.nk.get() : PresetDispersion(settings.preset);
+  if (!data)
+  {
+    return settings.nkFile.empty()
+      ? "spectral Fresnel needs measured optical data: --material gold, silver, copper, "
+        "aluminium, glass or water, or --nk FILE.yml"
+      : "spectral Fresnel: --nk " + settings.nkFile + " has not been read";
+  }
+  return SetSpectral(settings.material, *data);
+}
+
+std::string ValidateSettings(const Settings& settings)
+{
+  std::string problem = ValidateMaterial(settings.material);
+  if (problem.empty() && settings.spectral)
+  {
+    Settings copy = settings;
+    problem = ResolveSpectral(copy);
+  }
+  return problem;
+}
+
+std::string ReadNkFile(Settings& settings)
+{
+  settings.nk.reset();
+  if (settings.nkFile.empty())
+  {
+    return {};
+  }
+  std::ifstream in(settings.nkFile, std::ios::binary);
+  if (!in)
+  {
+    return "--nk " + settings.nkFile + ": cannot open the file";
+  }
+  // The largest refractiveindex.info file is ~1 MB; 16 MB is no such file.
+  constexpr std::streamsize kMaxNkFileBytes = 16 << 20;
+  std::string text(kMaxNkFileBytes + 1, '\0');
+  in.read(&text[0], kMaxNkFileBytes + 1);
+  text.resize(static_cast<size_t>(in.gcount()));
+  if (static_cast<std::streamsize>(text.size()) > kMaxNkFileBytes)
+  {
+    return "--nk " + settings.nkFile + ": larger than 16 MB, not an optical-constants file";
+  }
+  if (text.find('\0') != std::string::npos)
+  {
+    return "--nk " + settings.nkFile + ": binary data, not a YAML file";
+  }
+  auto data = std::make_shared<Dispersion>();
+  const std::string problem = ParseDispersion(text, "--nk " + settings.nkFile, *data);
+  if (!problem.empty())
+  {
+    return problem;
+  }
+  settings.nk = data;
+  ResolveSpectral(settings);
   return {};
 }
 

@@ -150,4 +150,22 @@ SL_INLINE Vec3<T> F_RGB(T cosTheta_i, const Vec3<T>& eta, const Vec3<T>& k)
     F_Conductor(cosTheta_i, eta.z, k.z) };
 }
 
+/**
+ * Fresnel per wavelength reduced to linear sRGB (docs/model.md eq. 7.3):
+ *   F_rgb = sum_i w_i F(cos theta_i; eta(lambda_i), k(lambda_i)),
+ * w_i the CIE 1931 observer under D65 over sample i's 5 nm rows, through
+ * the XYZ to linear sRGB matrix (eq. 7.2; SpectralBasisD65 in Spectrum.h).
+ * The lecture: "F depends on wavelength ... eta_lambda".
+ */
+template <typename T>
+SL_INLINE Vec3<T> F_Spectral(T cosTheta_i, const T* eta, const T* k, const Vec3<T>* weight, int count)
+{
+  Vec3<T> F;
+  for (int i = 0; i < count; ++i)
+  {
+    F += weight[i] * F_Conductor(cosTheta_i, eta[i], k[i]);
+  }
+  return F;
+}
+
 } // namespace shadinglab

@@ -53,7 +53,7 @@ inline constexpr ReflectanceModelRow kReflectanceModels[] = {
     "ambient kd ks shininess albedo specular" },
   // F colours the specular term: no specular colour (eq. 1.5-1.8).
   { ReflectanceModel::CookTorrance, "cook-torrance", "Cook-Torrance", "COOK_TORRANCE",
-    "ambient kd ks m w eta k variant albedo" },
+    "ambient kd ks m w eta k variant spectral albedo" },
   { ReflectanceModel::LommelSeeliger, "lommel-seeliger", "Lommel-Seeliger", "LOMMEL_SEELIGER",
     "ambient kd albedo" },
 };
@@ -110,6 +110,15 @@ struct Material
   Vec3<T> k{ T(0), T(0), T(0) };
   SpecularVariant variant = SpecularVariant::CookTorrance1982;
 
+  /// Fresnel per wavelength (docs/model.md eq. 7.3): with spectralCount > 0
+  /// F = sum_i spectralWeight[i] F(cos, spectralEta[i], spectralK[i])
+  /// replaces the RGB eta and k. Filled by SetSpectral (Spectrum.h) from
+  /// measured data; 0 is the three-sample RGB material.
+  int spectralCount = 0;
+  T spectralEta[kSpectralSamples] = {};
+  T spectralK[kSpectralSamples] = {};
+  Vec3<T> spectralWeight[kSpectralSamples] = {};
+
   template <typename U>
   Material<U> Cast() const
   {
@@ -130,10 +139,25 @@ struct Material
     out.eta = Vec3<U>(eta);
     out.k = Vec3<U>(k);
     out.variant = variant;
+    out.spectralCount = spectralCount;
+    for (int i = 0; i < kSpectralSamples; ++i)
+    {
+      out.spectralEta[i] = static_cast<U>(spectralEta[i]);
+      out.spectralK[i] = static_cast<U>(spectralK[i]);
+      out.spectralWeight[i] = Vec3<U>(spectralWeight[i]);
+    }
     return out;
   }
 
   bool IsConductor() const { return k.x > T(0) || k.y > T(0) || k.z > T(0); }
+
+  /// F at cos(theta_i) = L.H: per wavelength when spectral, else per channel.
+  SL_INLINE Vec3<T> Fresnel(T cosTheta_i) const
+  {
+    return spectralCount > 0
+      ? F_Spectral(cosTheta_i, spectralEta, spectralK, spectralWeight, spectralCount)
+      : F_RGB(cosTheta_i, eta, k);
+  }
 };
 
 /**
@@ -339,7 +363,7 @@ SL_INLINE Vec3<T> EvaluateBrdf(
       const T D = D_BeckmannMixture(NoH, material.lobes, material.lobeCount);
       const T G = G_CookTorrance(NoH, NoV, NoL, VoH);
       // F is evaluated at theta_i = acos(L.H) (eq. 1.8); L.H = V.H.
-      const Vec3<T> F = F_RGB(VoH, material.eta, material.k);
+      const Vec3<T> F = material.Fresnel(VoH);
       const T DG = Fs_CookTorrance(T(1), D, G, NoL, NoV, material.variant);
       f = diffuse + F * (material.ks * DG);
       break;

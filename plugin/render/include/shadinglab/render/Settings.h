@@ -12,10 +12,12 @@
 #pragma once
 
 #include "shadinglab/model/Shading.h"
+#include "shadinglab/model/Spectrum.h"
 #include "shadinglab/render/Options.h"
 #include "shadinglab/render/Renderer.h"
 
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -88,6 +90,14 @@ struct Settings
   double lightSolidAngle = kPi<double>;
   Material<double> material;
   std::string preset; ///< the preset `material` was started from ("" custom)
+  /// Fresnel per wavelength (docs/model.md section 7) from the measured
+  /// data of `nk` or else of the preset; ApplySetting keeps
+  /// material.spectral* in step (ResolveSpectral).
+  bool spectral = false;
+  /// A refractiveindex.info file given by the user (--nk): its path, and
+  /// its data once a front end has read it (ReadNkFile).
+  std::string nkFile;
+  std::shared_ptr<const Dispersion> nk;
   NormalSettings normals;
   ColorBySettings color;
   InputSettings input;
@@ -187,6 +197,19 @@ std::string FormatSetting(const SettingRow& row, const SettingValue& value);
 std::string DefaultText(const SettingRow& row);
 /// "[0.01, 255]", "flat | gouraud | ...", for help and docs.
 std::string RangeText(const SettingRow& row);
+
+/// Fills or clears settings.material.spectral* from `spectral`, `nk` and
+/// `preset` (ApplySetting calls it after every change). Returns "" or why
+/// spectral Fresnel has no data (no preset with measured data, no --nk).
+std::string ResolveSpectral(Settings& settings);
+
+/// ValidateMaterial, and whether `spectral` has the data it needs: the one
+/// check every front end makes before drawing. "" or a one-line error.
+std::string ValidateSettings(const Settings& settings);
+
+/// Reads and parses settings.nkFile into settings.nk (and resolves).
+/// Returns "" or a one-line error naming the file.
+std::string ReadNkFile(Settings& settings);
 
 /// Whether every setting of the table has the same value in `a` and `b`.
 bool SameSettings(const Settings& a, const Settings& b);

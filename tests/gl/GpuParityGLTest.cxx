@@ -3,6 +3,8 @@
 // and mode; images compared over pixels both cover. Needs an X server with
 // OpenGL (label "gl"; scripts/test runs ctest under Xvfb with llvmpipe).
 #include "AnalyticMeshes.h"
+#include "shadinglab/model/Materials.h"
+#include "shadinglab/model/Spectrum.h"
 #include "shadinglab/gl/GpuRenderer.h"
 #include "PolyDataMesh.h"
 #include "shadinglab/cpu/SoftwareRenderer.h"
@@ -208,6 +210,15 @@ std::vector<std::pair<std::string, sl::Material<double>>> ParityMaterials()
   m.k = { 3.7, 2.45, 1.9 };
   m.variant = sl::SpecularVariant::Walter2007;
   out.emplace_back("ct-conductor", m);
+  // Fresnel per wavelength (eq. 7.3): measured gold and N-BK7 glass.
+  for (const char* preset : { "gold", "glass" })
+  {
+    sl::Material<double> spectral = sl::FindMaterialPreset(preset)->material;
+    spectral.kd = 0.2;
+    spectral.ks = 0.8;
+    EXPECT_EQ(sl::SetSpectral(spectral, *sl::PresetDispersion(preset)), "");
+    out.emplace_back(std::string("ct-spectral-") + preset, spectral);
+  }
   return out;
 }
 

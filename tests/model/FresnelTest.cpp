@@ -210,33 +210,3 @@ TEST(FresnelTest, FloatAgreesWithDouble)
   }
 }
 
-TEST(FresnelTest, SpectralSamplesReduceToRGB)
-{
-  const double c = std::cos(40 * kDeg);
-  // A flat spectrum equals the single-index Fresnel in every channel.
-  std::vector<sl::SpectralIndexSample> flat;
-  for (double w = 400; w <= 700; w += 10)
-  {
-    flat.push_back({ w, 1.5, 0.0 });
-  }
-  sl::Vec3d rgb;
-  ASSERT_TRUE(sl::F_SpectralToRGB(c, flat, rgb));
-  for (int k = 0; k < 3; ++k)
-  {
-    EXPECT_NEAR(rgb[k], sl::F_Dielectric(c, 1.5), 1e-15);
-  }
-  // Dispersion: each band averages its own samples (blue < 490 <= green < 590 <= red).
-  const std::vector<sl::SpectralIndexSample> bands = { { 450, 1.60, 0 }, { 470, 1.58, 0 },
-    { 550, 1.52, 0 }, { 650, 1.50, 0 } };
-  ASSERT_TRUE(sl::F_SpectralToRGB(c, bands, rgb));
-  EXPECT_NEAR(rgb.z, 0.5 * (sl::F_Dielectric(c, 1.60) + sl::F_Dielectric(c, 1.58)), 1e-15);
-  EXPECT_NEAR(rgb.y, sl::F_Dielectric(c, 1.52), 1e-15);
-  EXPECT_NEAR(rgb.x, sl::F_Dielectric(c, 1.50), 1e-15);
-  // A band without samples takes the nearest sample; none in range: false.
-  const std::vector<sl::SpectralIndexSample> green = { { 550, 1.52, 0 } };
-  ASSERT_TRUE(sl::F_SpectralToRGB(c, green, rgb));
-  EXPECT_EQ(rgb.x, rgb.y);
-  EXPECT_EQ(rgb.z, rgb.y);
-  const std::vector<sl::SpectralIndexSample> infrared = { { 1200, 1.5, 0 } };
-  EXPECT_FALSE(sl::F_SpectralToRGB(c, infrared, rgb));
-}

@@ -200,59 +200,6 @@ std::string ValidateMaterial(const Material<double>& m)
   return {};
 }
 
-bool F_SpectralToRGB(
-  double cosTheta_i, const std::vector<SpectralIndexSample>& samples, Vec3<double>& rgb)
-{
-  // Band edges in nm: blue [380, 490), green [490, 590), red [590, 780].
-  const double lower[3] = { 590.0, 490.0, 380.0 };
-  const double upper[3] = { 780.0, 590.0, 490.0 };
-  const double centre[3] = { 650.0, 540.0, 440.0 };
-  double sum[3] = { 0, 0, 0 };
-  int count[3] = { 0, 0, 0 };
-  bool any = false;
-  for (const auto& s : samples)
-  {
-    if (!(s.wavelength >= 380.0 && s.wavelength <= 780.0))
-    {
-      continue;
-    }
-    any = true;
-    const double F = F_Conductor(cosTheta_i, s.eta, s.k);
-    for (int c = 0; c < 3; ++c)
-    {
-      const bool inBand = s.wavelength >= lower[c] &&
-        (s.wavelength < upper[c] || (c == 0 && s.wavelength <= upper[c]));
-      if (inBand)
-      {
-        sum[c] += F;
-        ++count[c];
-      }
-    }
-  }
-  if (!any)
-  {
-    return false;
-  }
-  for (int c = 0; c < 3; ++c)
-  {
-    if (count[c] > 0)
-    {
-      rgb[c] = sum[c] / count[c];
-      continue;
-    }
-    double best = std::numeric_limits<double>::infinity();
-    for (const auto& s : samples)
-    {
-      if (s.wavelength >= 380.0 && s.wavelength <= 780.0 &&
-        std::abs(s.wavelength - centre[c]) < best)
-      {
-        best = std::abs(s.wavelength - centre[c]);
-        rgb[c] = F_Conductor(cosTheta_i, s.eta, s.k);
-      }
-    }
-  }
-  return true;
-}
 
 } // namespace shadinglab
 

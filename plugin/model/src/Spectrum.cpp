@@ -423,10 +423,13 @@ Vec3<double> XYZToLab(const Vec3<double>& xyz)
 
 double DeltaE2000(const Vec3<double>& rgbA, const Vec3<double>& rgbB)
 {
+  return DeltaE2000Lab(XYZToLab(LinearSRGBToXYZ(rgbA)), XYZToLab(LinearSRGBToXYZ(rgbB)));
+}
+
+double DeltaE2000Lab(const Vec3<double>& lab1, const Vec3<double>& lab2)
+{
   // Sharma, Wu & Dalal 2005, eq. 1-22 (kL = kC = kH = 1).
   constexpr double deg = kPi<double> / 180.0;
-  const Vec3<double> lab1 = XYZToLab(LinearSRGBToXYZ(rgbA));
-  const Vec3<double> lab2 = XYZToLab(LinearSRGBToXYZ(rgbB));
   const double C1 = std::hypot(lab1.y, lab1.z), C2 = std::hypot(lab2.y, lab2.z);
   const double Cbar7 = std::pow(0.5 * (C1 + C2), 7.0);
   const double G = 0.5 * (1.0 - std::sqrt(Cbar7 / (Cbar7 + std::pow(25.0, 7.0))));

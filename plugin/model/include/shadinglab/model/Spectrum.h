@@ -80,6 +80,8 @@ Vec3<double> XYZToLab(const Vec3<double>& xyz);
 /// CIEDE2000 colour difference of two linear sRGB colours (Sharma, Wu &
 /// Dalal 2005, Color Res. Appl. 30(1); docs/model.md eq. 7.4).
 double DeltaE2000(const Vec3<double>& rgbA, const Vec3<double>& rgbB);
+/// The same between two CIELAB colours (L*, a*, b*).
+double DeltaE2000Lab(const Vec3<double>& lab1, const Vec3<double>& lab2);
 
 /// Fills material.spectral* from the dispersion (eq. 7.3): eta and k at the
 /// basis's wavelengths and its weights. Returns "" or a one-line error.

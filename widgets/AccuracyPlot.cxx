@@ -9,6 +9,7 @@
 #include <QtCharts/QLegendMarker>
 #include <QtCharts/QLineSeries>
 #include <QtCharts/QLogValueAxis>
+#include <QtCharts/QValueAxis>
 #include <QtCharts/QScatterSeries>
 
 #include <QApplication>
@@ -181,8 +182,24 @@ QChartView* MakeLogLogChart(const LogLogPanel& panel)
 {
   auto* chart = new QChart;
   StyleChart(chart, QString::fromStdString(panel.title));
-  QLogValueAxis* x = LogAxis(panel.xTitle);
-  QLogValueAxis* y = LogAxis(panel.yTitle);
+  QAbstractAxis* x = nullptr;
+  QAbstractAxis* y = nullptr;
+  if (panel.linear)
+  {
+    auto* lx = new QValueAxis;
+    auto* ly = new QValueAxis;
+    lx->setTitleText(QString::fromStdString(panel.xTitle));
+    ly->setTitleText(QString::fromStdString(panel.yTitle));
+    lx->setLabelFormat("%g");
+    ly->setLabelFormat("%g");
+    x = lx;
+    y = ly;
+  }
+  else
+  {
+    x = LogAxis(panel.xTitle);
+    y = LogAxis(panel.yTitle);
+  }
   chart->addAxis(x, Qt::AlignBottom);
   chart->addAxis(y, Qt::AlignLeft);
   double xlo = 1e300, xhi = 0, yhi = std::max(0.0, panel.referenceY);
@@ -195,7 +212,7 @@ QChartView* MakeLogLogChart(const LogLogPanel& panel)
       yhi = std::max(yhi, line.y[i]);
     }
   }
-  const double floor = yhi * kLogFloorFraction;
+  const double floor = panel.linear ? 0.0 : yhi * kLogFloorFraction;
   double ylo = yhi;
   auto add = [&](QLineSeries* series)
   {
@@ -226,7 +243,14 @@ QChartView* MakeLogLogChart(const LogLogPanel& panel)
     series->append(xhi, panel.referenceY);
     add(series);
   }
-  if (xlo <= xhi && ylo > 0)
+  if (panel.linear && xlo <= xhi)
+  {
+    x->setRange(xlo, xhi);
+    y->setRange(0.0, yhi > 0 ? 1.1 * yhi : 1.0);
+    static_cast<QValueAxis*>(x)->applyNiceNumbers();
+    static_cast<QValueAxis*>(y)->applyNiceNumbers();
+  }
+  else if (xlo <= xhi && ylo > 0)
   {
     x->setRange(xlo, xhi);
     y->setRange(std::pow(10.0, std::floor(std::log10(ylo))), std::pow(10.0, std::ceil(std::log10(yhi))));
@@ -239,8 +263,8 @@ QChartView* MakeLogLogChart(const LogLogPanel& panel)
 
 } // namespace
 
-std::string WriteLogLogPlot(
-  const std::vector<LogLogPanel>& panels, const std::string& title, const std::string& path)
+std::string WriteLogLogPlot(const std::vector<LogLogPanel>& panels, const std::string& title,
+  const std::string& path, int columns)
 {
   const std::unique_ptr<QApplication> app = EnsureApplication();
   std::vector<QChartView*> charts;
@@ -248,7 +272,7 @@ std::string WriteLogLogPlot(
   {
     charts.push_back(MakeLogLogChart(panel));
   }
-  return WritePage(title, charts, 1, path);
+  return WritePage(title, charts, columns, path);
 }
 
 std::string WriteAccuracyPlot(const std::vector<std::string>& groups,

@@ -35,12 +35,15 @@ struct LogLogPanel
   /// A horizontal reference line (e.g. 1/255, the visible step) when > 0.
   double referenceY = 0;
   std::string referenceName;
+  /// Linear axes instead (x from its smallest value, y from 0): for
+  /// quantities such as an angle and a colour difference.
+  bool linear = false;
 };
 
 /// Panels of lines on log-log axes, side by side, to a PNG; "" or a
 /// one-line error. As WriteAccuracyPlot, without a display if need be.
-std::string WriteLogLogPlot(
-  const std::vector<LogLogPanel>& panels, const std::string& title, const std::string& path);
+std::string WriteLogLogPlot(const std::vector<LogLogPanel>& panels, const std::string& title,
+  const std::string& path, int columns = 1);
 
 /// One panel per group (e.g. per shape) in a grid; returns "" or a one-line
 /// error. Creates a QApplication if none exists (offscreen without DISPLAY).

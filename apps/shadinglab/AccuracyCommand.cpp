@@ -37,6 +37,8 @@ const char* kAccuracyHelp =
   "Then the lecture's incremental scan (forward differences, docs/model.md eq. 2.11)\n"
   "against exact interpolation over spans of 16 to 8192 pixels, in float and double:\n"
   "DIR/scan.csv, a section of DIR/accuracy.md and DIR/scan.png.\n"
+  "Then three-sample RGB metals against their spectra (CIEDE2000 over incidence angle,\n"
+  "docs/model.md section 7): DIR/spectral.csv, a section of DIR/accuracy.md, DIR/spectral.png.\n"
   "  --quick        a subset (sphere, torus; 3 and 2 levels) for CI: well under a minute\n"
   "  --size WxH     image size (default 320x240)\n"
   "  --frames N     frames timed per configuration, median reported (default 5)\n"
@@ -48,13 +50,6 @@ const char* kAccuracyHelp =
 constexpr int kMaxFrames = 51;
 /// Study image sides: up to 1920x1080, the size of the README's speed tables.
 constexpr int kMaxStudySide = 1920;
-
-std::string Fmt(double v, int digits = 3)
-{
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
-  return buf;
-}
 
 void WriteTable(const std::vector<StudyRow>& rows, const std::string& path)
 {
@@ -387,6 +382,7 @@ int RunAccuracy(int argc, char** argv)
   std::cout << summary << "\n";
   WritePlot(rows, options, dir);
   std::cout << WriteScanStudy(dir) << "\n";
+  std::cout << WriteSpectralStudy(dir) << "\n";
   std::cout << "wrote " << rows.size() << " configurations to " << dir.string() << "\n";
   return 0;
 }

@@ -8,6 +8,8 @@
 #include "shadinglab/render/AutoMode.h"
 #include "shadinglab/render/Renderer.h"
 
+#include <cstdio>
+#include <filesystem>
 #include <functional>
 #include <string>
 #include <vector>
@@ -82,5 +84,18 @@ std::vector<AutoCase> ValidateAutoMode(
 /// Marks the rows no other row of the same shape and backend beats in both
 /// frame time and mean error (1/255).
 void MarkParetoFront(std::vector<StudyRow>& rows);
+
+/// A number with `digits` significant digits, for tables.
+inline std::string Fmt(double v, int digits = 3)
+{
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+  return buf;
+}
+
+/// Three-sample RGB metals against their spectra (SpectralStudy.cpp):
+/// spectral.csv, a section of accuracy.md, spectral.png (with Qt); returns
+/// the summary line.
+std::string WriteSpectralStudy(const std::filesystem::path& dir);
 
 } // namespace shadinglab::cli

@@ -118,6 +118,23 @@ TEST(SpectrumTest, PresetsAreTheirTabulatedData)
   EXPECT_EQ(sl::PresetDispersion("aluminum"), sl::PresetDispersion("aluminium"));
 }
 
+// The metal presets' RGB n and k are RgbFromDispersion's fit to their
+// spectra (to the 4 digits Materials.cpp writes).
+TEST(SpectrumTest, MetalPresetsAreTheFitToTheirSpectra)
+{
+  for (const char* preset : { "gold", "copper", "silver", "aluminium" })
+  {
+    sl::Vec3d eta, k;
+    sl::RgbFromDispersion(*sl::PresetDispersion(preset), sl::RgbChoice::Fitted, eta, k);
+    const sl::Material<double>& m = sl::FindMaterialPreset(preset)->material;
+    for (int c = 0; c < 3; ++c)
+    {
+      EXPECT_NEAR(m.eta[c], eta[c], 1e-3 * eta[c]) << preset << " channel " << c;
+      EXPECT_NEAR(m.k[c], k[c], 1e-3 * k[c]) << preset << " channel " << c;
+    }
+  }
+}
+
 // A perfect reflector under D65 is white, (1, 1, 1), for every sample
 // count: the weights of each count sum to the white point.
 TEST(SpectrumTest, PerfectReflectorIsWhite)

@@ -581,7 +581,7 @@ void MaterialRows(std::vector<SettingRow>& t)
     t.push_back(r);
   }
   {
-    SettingRow r = Row("nk", "", "Optical Data File", G::Material, K::Text);
+    SettingRow r = Row("nk", "OpticalDataFile", "Optical Data File", G::Material, K::Text);
     r.doc = "a refractiveindex.info YAML file (tabulated nk, tabulated n, or Sellmeier "
             "formula 2) covering 380-780 nm: the material's n and k for --spectral";
     r.frontEnds = kCli;

@@ -202,8 +202,20 @@ write('exo_truncated.e', sphere[:len(sphere) // 2])
 at = sphere.find(b'TRIANGLE') + 12  # connect1's type, vsize, then its 64-bit begin (CDF-2)
 begin = struct.unpack('>Q', sphere[at + 8:at + 16])[0]
 write('exo_node_out_of_range.e', sphere[:begin] + struct.pack('>i', 1000000) + sphere[begin + 4:])
+# Optical data (refractiveindex.info YAML, for --nk): empty, an
+# unsupported formula, a truncated row, outside the visible range, a
+# Sellmeier pole at 500 nm, negative k, NaN.
+write('nk_empty.yml', '')
+write('nk_formula3.yml', 'DATA:\n  - type: formula 3\n    coefficients: 0 1 2 3\n')
+write('nk_truncated.yml', 'DATA:\n  - type: tabulated nk\n    data: |\n        0.3 1.5 0\n        0.8 1.')
+write('nk_infrared.yml', 'DATA:\n  - type: tabulated nk\n    data: |\n        1.0 1.5 0\n        2.0 1.5 0\n')
+write('nk_pole.yml', 'DATA:\n  - type: formula 2\n    wavelength_range: 0.3 2.5\n'
+      '    coefficients: 0 1 0.25 0 0 0 0\n')
+write('nk_negative_k.yml', 'DATA:\n  - type: tabulated nk\n    data: |\n        0.3 1.5 -1\n        0.8 1.5 0\n')
+write('nk_nan.yml', 'DATA:\n  - type: tabulated nk\n    data: |\n        0.3 nan 0\n        0.8 1.5 0\n')
 # Random bytes with every extension.
 noise = bytes((i * 131 + 7) % 256 for i in range(512))
-for ext in ['obj', 'off', 'ply', 'vtk', 'stl', 'vtp', 'vtu', 'vtm', 'pvd', 'vts', 'vtr', 'vti', 'e']:
+for ext in ['obj', 'off', 'ply', 'vtk', 'stl', 'vtp', 'vtu', 'vtm', 'pvd', 'vts', 'vtr', 'vti', 'e',
+            'yml']:
     write('random.' + ext, noise)
 print(len(os.listdir(out)), 'files in', out)

@@ -25,6 +25,14 @@ commands = [
     ['render', '{in}', '--backend', 'cpu', '--mode', 'auto', '--max-error', '1', '--size',
      '64x48', '--out', '{work}/a.png'],
 ]
+# Every corpus file as the optical data of --nk too (a valid mesh drawn).
+mesh = os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', '..', 'datasets',
+                    'icosphere_1.vtp')
+commands += [
+    ['brdf', '--spectral', '--nk', '{in}', '--term', 'F', '--theta-l', '0'],
+    ['render', mesh, '--backend', 'cpu', '--model', 'cook-torrance', '--spectral', '--nk', '{in}',
+     '--size', '32x24', '--out', '{work}/s.png'],
+]
 programs = [(cli, command) for command in commands]
 if gui:
     programs.append((gui, ['--scene', 'modes', '{in}', '--screenshot', '{work}/g.png']))

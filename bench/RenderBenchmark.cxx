@@ -12,6 +12,7 @@
 // hidden back faces off in BM_Cpu (both meshes are closed), to compare.
 #include "AnalyticMeshes.h"
 #include "PolyDataMesh.h"
+#include "shadinglab/model/Spectrum.h"
 #include "shadinglab/cpu/SoftwareRenderer.h"
 #include "shadinglab/render/AutoMode.h"
 #include "shadinglab/model/Materials.h"
@@ -158,6 +159,12 @@ void BM_CpuCookTorrance(benchmark::State& state)
     " threads=" + std::to_string(opt.threads));
 }
 
+/// Spectral Fresnel (16 wavelengths, docs/model.md eq. 7.3) against the
+/// three-sample RGB material, frame by frame in alternating pairs (as
+/// AlternateOneAndTwoThreads): Phong/Cook-Torrance gold, 1920x1080,
+/// range(1) threads. `ratio` is the median of spectral / RGB over the pairs.
+void BM_CpuSpectral(benchmark::State& state);
+
 /// Times run(1) and run(2) in alternating pairs (which goes first
 /// alternates too), so both see the same moments of a noisy machine: a
 /// BM_Cpu row's 1- and 2-thread runs are seconds apart, and these VMs'
@@ -172,8 +179,17 @@ void BM_CpuCookTorrance(benchmark::State& state)
 /// two-thread frame more, as it needs both cores at once). Under steady
 /// load no frame is undisturbed, so it is no steadier than `scaling`
 /// (docs/performance.md, "Two threads against one").
+/// The counters' names: run(1)'s median, run(2)'s, their paired ratio
+/// run(1)/run(2), and the ratio of the fastest frames.
+struct PairNames
+{
+  const char* first = "ms_1_thread";
+  const char* second = "ms_2_threads";
+  const char* ratio = "scaling";
+  const char* ratioBest = "scaling_best";
+};
 template<typename Run>
-void AlternateOneAndTwoThreads(benchmark::State& state, Run&& run)
+void AlternateOneAndTwoThreads(benchmark::State& state, Run&& run, const PairNames& names = {})
 {
   run(1); // steady state, as in BM_Cpu
   run(2);
@@ -204,12 +220,12 @@ void AlternateOneAndTwoThreads(benchmark::State& state, Run&& run)
   {
     ratios.push_back(ms[1][k] > 0 ? ms[0][k] / ms[1][k] : 0.0);
   }
-  state.counters["ms_1_thread"] = median(ms[0]);
-  state.counters["ms_2_threads"] = median(ms[1]);
-  state.counters["scaling"] = median(ratios);
+  state.counters[names.first] = median(ms[0]);
+  state.counters[names.second] = median(ms[1]);
+  state.counters[names.ratio] = median(ratios);
   if (!ms[0].empty() && !ms[1].empty())
   {
-    state.counters["scaling_best"] = *std::min_element(ms[0].begin(), ms[0].end()) /
+    state.counters[names.ratioBest] = *std::min_element(ms[0].begin(), ms[0].end()) /
       *std::min_element(ms[1].begin(), ms[1].end());
   }
 }
@@ -252,6 +268,30 @@ void BM_CpuThreadScaling(benchmark::State& state)
     : variant == 4                   ? std::string("phong/cook-torrance")
                      : std::string("cook-torrance ") + kCookTorranceVariantNames[variant - 5];
   state.SetLabel(name + ", 1 and 2 threads alternating");
+}
+
+void BM_CpuSpectral(benchmark::State& state)
+{
+  const Scene& scene = GetScene(static_cast<int>(state.range(0)));
+  sl::Material<double> rgb = sl::FindMaterialPreset("gold")->material;
+  sl::Material<double> spectral = rgb;
+  sl::SetSpectral(spectral, *sl::PresetDispersion("gold"));
+  render::RenderOptions opt;
+  opt.width = kWidth;
+  opt.height = kHeight;
+  opt.mode = render::ShadingMode::Phong;
+  opt.threads = static_cast<int>(state.range(1));
+  const render::Scene scenes[2] = {
+    { &scene.mesh, scene.camera, Headlight(scene.camera), spectral },
+    { &scene.mesh, scene.camera, Headlight(scene.camera), rgb } };
+  cpu::SoftwareRenderer renderers[2];
+  AlternateOneAndTwoThreads(state,
+    [&](int which) {
+      benchmark::DoNotOptimize(renderers[which - 1].Render(scenes[which - 1], opt).rgb.data());
+    },
+    PairNames{ "ms_spectral", "ms_rgb", "ratio", "ratio_best" });
+  state.SetLabel("phong/cook-torrance gold, spectral (16) against RGB, threads=" +
+    std::to_string(opt.threads));
 }
 
 /// What this machine gives two threads, measured as BM_CpuThreadScaling
@@ -455,6 +495,29 @@ void BM_ShadingLabGL(benchmark::State& state)
     sl::ReflectanceModelName(material.model) + " llvmpipe");
 }
 
+/// The GL path's spectral Fresnel (a 16-sample loop per light per pixel)
+/// against RGB: Phong/Cook-Torrance gold, range(1) 0 RGB, 1 spectral.
+void BM_ShadingLabGLSpectral(benchmark::State& state)
+{
+  if (!std::getenv("DISPLAY"))
+  {
+    state.SkipWithError("no DISPLAY: run under scripts/with-xvfb");
+    return;
+  }
+  const Scene& scene = GetScene(static_cast<int>(state.range(0)));
+  const bool spectral = state.range(1) != 0;
+  vtkNew<vtkShadingLabPolyDataMapper> mapper;
+  mapper->SetInputData(scene.polydata);
+  mapper->SetSetting("mode", "phong");
+  mapper->SetSetting("material", "gold");
+  mapper->SetSetting("spectral", spectral ? "on" : "off");
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  TimeFrames(state, scene, actor);
+  state.SetLabel(std::string("shadinglab-gl phong/cook-torrance gold ") +
+    (spectral ? "spectral (16)" : "RGB") + " llvmpipe");
+}
+
 /// {mode, model}: every shading mode with Blinn-Phong, and Cook-Torrance per pixel.
 constexpr int kBlinnPhong = static_cast<int>(sl::ReflectanceModel::BlinnPhong);
 constexpr int kCookTorrance = static_cast<int>(sl::ReflectanceModel::CookTorrance);
@@ -644,6 +707,14 @@ BENCHMARK(BM_CpuHalfOutside)
 BENCHMARK(BM_Cpu)->Apply(CpuArgs)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_CpuCookTorrance)
   ->ArgsProduct({ { 0, 1 }, { 0, 1, 2 }, { 1, 2 } })
+  ->Unit(benchmark::kMillisecond)
+  ->UseRealTime();
+BENCHMARK(BM_CpuSpectral)
+  ->ArgsProduct({ { 0, 1 }, { 2 } })
+  ->Unit(benchmark::kMillisecond)
+  ->UseManualTime();
+BENCHMARK(BM_ShadingLabGLSpectral)
+  ->ArgsProduct({ { 0, 1 }, { 0, 1 } })
   ->Unit(benchmark::kMillisecond)
   ->UseRealTime();
 BENCHMARK(BM_MachineScaling)->DenseRange(0, 1)->Unit(benchmark::kMillisecond)->UseManualTime();

@@ -2,6 +2,7 @@
 #include "MaterialEditor.h"
 
 #include "shadinglab/model/Materials.h"
+#include "shadinglab/model/Spectrum.h"
 #include "SettingControls.h"
 #include "shadinglab/render/Settings.h"
 
@@ -13,6 +14,7 @@
 #include <QSlider>
 
 #include <cmath>
+#include <string_view>
 
 namespace shadinglab::widgets
 {
@@ -29,6 +31,7 @@ MaterialEditor::MaterialEditor(QWidget* parent)
   , Model(new QComboBox(this))
   , Variant(new QComboBox(this))
   , Lobes(new QComboBox(this))
+  , Spectrum(new QComboBox(this))
 {
   auto* form = new QFormLayout(this);
   this->Form = form;
@@ -52,6 +55,14 @@ MaterialEditor::MaterialEditor(QWidget* parent)
   this->Lobes->addItem("1 Beckmann lobe");
   this->Lobes->addItem("2 lobes (mixture)");
   form->addRow("Roughness", this->Lobes);
+  this->Spectrum->addItem("RGB: eta, k per channel");
+  for (const char* name : { "gold", "silver", "copper", "aluminium", "glass", "water" })
+  {
+    this->Spectrum->addItem(QString("spectral: %1 (measured)").arg(name), QString(name));
+  }
+  this->Spectrum->setToolTip("F per wavelength from measured n and k, 16 samples under D65 "
+                             "(docs/model.md section 7), or three RGB samples");
+  form->addRow("Fresnel", this->Spectrum);
   this->AddRow("kd", "kd", 0.0, 1.0, false, &this->Value.kd);
   this->AddRow("ks", "ks", 0.0, 1.0, false, &this->Value.ks);
   this->AddRow("shininess", "shininess n", 1.0, 1000.0, true, &this->Value.shininess);
@@ -103,6 +114,18 @@ MaterialEditor::MaterialEditor(QWidget* parent)
   connect(this->Variant, QOverload<int>::of(&QComboBox::activated), this, [this](int index) {
     this->Value.variant =
       index == 1 ? SpecularVariant::Walter2007 : SpecularVariant::CookTorrance1982;
+    this->Emit();
+  });
+  connect(this->Spectrum, QOverload<int>::of(&QComboBox::activated), this, [this](int index) {
+    const Dispersion* data = index > 0
+      ? PresetDispersion(this->Spectrum->itemData(index).toString().toStdString())
+      : nullptr;
+    this->Value.spectralCount = 0;
+    if (data)
+    {
+      SetSpectral(this->Value, *data);
+    }
+    this->Refresh();
     this->Emit();
   });
   connect(this->Lobes, QOverload<int>::of(&QComboBox::activated), this, [this](int index) {
@@ -230,6 +253,10 @@ void MaterialEditor::Refresh()
   this->Model->setCurrentIndex(this->Model->findData(static_cast<int>(this->Value.model)));
   this->Variant->setCurrentIndex(this->Value.variant == SpecularVariant::Walter2007 ? 1 : 0);
   this->Lobes->setCurrentIndex(std::clamp(this->Value.lobeCount, 1, 2) - 1);
+  if (this->Value.spectralCount == 0)
+  {
+    this->Spectrum->setCurrentIndex(0);
+  }
   this->ShowModelParameters();
   this->Updating = false;
 }
@@ -246,13 +273,18 @@ void MaterialEditor::ShowModelParameters()
   };
   show(this->Variant, ModelUsesParameter(model, "variant"));
   show(this->Lobes, ModelUsesParameter(model, "m"));
+  show(this->Spectrum, ModelUsesParameter(model, "spectral"));
+  const bool spectral = this->Value.spectralCount > 0;
   for (const Row& row : this->Rows)
   {
     // The second lobe's roughness and the first lobe's weight mean
     // something only in a mixture of two.
     const bool secondLobe = row.label.contains("lobe 2") || row.label.contains("weight lobe");
+    // With a measured spectrum, F does not read the RGB eta and k.
+    const bool rgbIndex = std::string_view(row.key) == "eta" || std::string_view(row.key) == "k";
     show(row.line,
-      ModelUsesParameter(model, row.key) && (!secondLobe || this->Value.lobeCount == 2));
+      ModelUsesParameter(model, row.key) && (!secondLobe || this->Value.lobeCount == 2) &&
+        !(spectral && rgbIndex));
   }
 }
 

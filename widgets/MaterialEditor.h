@@ -65,6 +65,9 @@ private:
   QComboBox* Model;
   QComboBox* Variant;
   QComboBox* Lobes;
+  /// Fresnel per wavelength (docs/model.md section 7): "RGB" or a measured
+  /// spectrum (a preset's data) through SetSpectral.
+  QComboBox* Spectrum;
   std::vector<Row> Rows;
   QFormLayout* Form = nullptr;
   bool Updating = false;

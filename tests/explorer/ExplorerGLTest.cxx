@@ -22,6 +22,7 @@
 #include <vtkPolyData.h>
 
 #include <QApplication>
+#include <QComboBox>
 #include <QMimeData>
 #include <QMouseEvent>
 #include <QSlider>
@@ -269,9 +270,27 @@ void ExplorerGLTest::MaterialEditorShowsTheModelsParameters()
   m.lobes[1].m = 0.5;
   editor.SetMaterial(m);
   QVERIFY(shown("m (lobe 2)") && shown("weight lobe 1"));
+  // Fresnel per wavelength: the spectrum control (Cook-Torrance only)
+  // fills the material's spectral samples, and the RGB eta and k, which F
+  // no longer reads, are hidden; back to RGB shows them again.
+  auto* spectrum = editor.findChildren<QComboBox*>().last();
+  QVERIFY(spectrum->isVisibleTo(&editor));
+  const int goldIndex = spectrum->findData(QString("gold"));
+  QVERIFY(goldIndex > 0);
+  int changed = 0;
+  QObject::connect(&editor, &widgets::MaterialEditor::materialChanged,
+    [&changed](const Material<double>&) { ++changed; });
+  QMetaObject::invokeMethod(spectrum, "activated", Q_ARG(int, goldIndex));
+  QCOMPARE(editor.GetMaterial().spectralCount, kSpectralSamples);
+  QVERIFY(changed >= 1);
+  QVERIFY(!shown("eta R") && !shown("k B") && shown("m (lobe 1)"));
+  QMetaObject::invokeMethod(spectrum, "activated", Q_ARG(int, 0));
+  QCOMPARE(editor.GetMaterial().spectralCount, 0);
+  QVERIFY(shown("eta R") && shown("k B"));
   m.model = ReflectanceModel::LommelSeeliger;
   editor.SetMaterial(m);
   QVERIFY(shown("kd") && !shown("ks") && !shown("eta R") && !shown("m (lobe 2)"));
+  QVERIFY(!spectrum->isVisibleTo(&editor));
 }
 
 void ExplorerGLTest::EveryScreenshotIsDrawn()

@@ -111,7 +111,7 @@ namespace
 auto ModifyingPart(const sl::render::Settings& s)
 {
   const sl::Material<double>& m = s.material;
-  return std::make_tuple(m.model, m.ks > 0, m.lobeCount, m.IsConductor(), m.spectralCount > 0, s.render.mode,
+  return std::make_tuple(m.model, m.ks > 0, m.lobeCount, m.IsConductor(), m.spectralCount > 0, s.render.polarizer >= 0, s.render.mode,
     s.render.interpolation, s.render.display, s.render.maxError, s.normals.weighting, s.normals.featureAngle,
     s.normals.recompute);
 }
@@ -316,6 +316,7 @@ std::string vtkShadingLabPolyDataMapper::Variant(vtkRenderer* ren) const
     << "#define SL_LOBE_COUNT " << std::max(1, std::min(m.lobeCount, sl::kMaxLobes)) << "\n"
     << "#define SL_CONDUCTOR " << (m.IsConductor() ? 1 : 0) << "\n"
     << "#define SL_SPECTRAL " << (m.spectralCount > 0 ? 1 : 0) << "\n"
+    << "#define SL_ANALYSER " << (this->Internal->Settings.render.polarizer >= 0 ? 1 : 0) << "\n"
     << "#define SL_HEADLIGHT " << (headlightOnly ? 1 : 0) << "\n"
     << "#define SL_DISPLAY " << static_cast<int>(this->Internal->Settings.render.display) << "\n"
     << "#define SL_INTERP " << ((this->Internal->Settings.render.interpolation == sl::render::InterpolationSpace::Perspective) ? "smooth" : "noperspective") << "\n";
@@ -760,6 +761,10 @@ void vtkShadingLabPolyDataMapper::SetMapperShaderParameters(
       spectralWeight[3 * i + c] = static_cast<float>(m.spectralWeight[i][c]);
     }
   }
+  const double theta = 2.0 * settings.render.polarizer * sl::kPi<double> / 180.0;
+  const float analyser[2] = { static_cast<float>(std::cos(theta)),
+    static_cast<float>(std::sin(theta)) };
+  block.insert(block.end(), analyser, analyser + 2);
   if (m.spectralCount > 0)
   {
     block.insert(block.end(), spectralEta, spectralEta + sl::kSpectralSamples);
@@ -794,6 +799,10 @@ void vtkShadingLabPolyDataMapper::SetMapperShaderParameters(
   program->SetUniform1fv("slLobeWeight", sl::kMaxLobes, weights);
   program->SetUniform1fv("slLobeM", sl::kMaxLobes, ms);
   program->SetUniform4f("slViewport", viewport);
+  if (settings.render.polarizer >= 0)
+  {
+    program->SetUniform2f("slAnalyser", analyser);
+  }
   if (m.spectralCount > 0)
   {
     program->SetUniform1fv("slSpectralEta", sl::kSpectralSamples, spectralEta);

@@ -248,6 +248,10 @@ struct FastPhongStage : StageBase
           const float RoV = 2.0f * cl * NoV - LoV[l];
           I += irradiance[l] * BrdfFromCosines<Model>(F.Mat, color, NoH[l], RoV, tablePower) * cl;
         }
+        if (F.Lights.analyser.on)
+        {
+          I *= 0.5f; // no Fresnel term: unpolarized, half passes (eq. 8.4)
+        }
         const size_t pix = static_cast<size_t>(j) * W + i;
         covered[pix] = 1;
         rgb[3 * pix] = I.x;

@@ -231,6 +231,18 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh,
   F.Lights = lighting;
   F.Mat = material;
   F.Opt = options;
+  F.Lights.analyser = {};
+  if (options.polarizer >= 0.0)
+  {
+    // The analyser's axes are the image's (eq. 8.3), in the camera's space.
+    const render::CameraBasis basis = render::BasisOf(camera);
+    const double theta = 2.0 * options.polarizer * kPi<double> / 180.0;
+    F.Lights.analyser.on = true;
+    F.Lights.analyser.cos2Theta = static_cast<float>(std::cos(theta));
+    F.Lights.analyser.sin2Theta = static_cast<float>(std::sin(theta));
+    F.Lights.analyser.right = Vec3<float>(basis.right);
+    F.Lights.analyser.up = Vec3<float>(basis.up);
+  }
   const int ssaa = F.Opt.ssaa;
   F.Width = F.Opt.width * ssaa;
   F.Height = F.Opt.height * ssaa;

@@ -111,6 +111,38 @@ float F_Conductor(float cosTheta_i, float eta, float k)
   return 0.5 * (Rs + Rp);
 }
 
+// Rs and Rp of a conductor (k = 0: a dielectric): F_ConductorSP in
+// Fresnel.h (docs/model.md eq. 8.1).
+void F_ConductorSP(float cosTheta_i, float eta, float k, out float Rs, out float Rp)
+{
+  cosTheta_i = clamp(cosTheta_i, 0.0, 1.0);
+  float cos2Theta_i = cosTheta_i * cosTheta_i;
+  float sin2Theta_i = max(0.0, 1.0 - cos2Theta_i);
+  float t0 = eta * eta - k * k - sin2Theta_i;
+  float etaK2 = eta * eta * k * k;
+  float a2plusb2 = sqrt(t0 * t0 + 4.0 * etaK2);
+  float sum = a2plusb2 + abs(t0);
+  float a = sqrt(t0 >= 0.0 ? 0.5 * sum : 2.0 * etaK2 / max(sum, SL_TINY_DENOMINATOR));
+  float t1 = a2plusb2 + cos2Theta_i;
+  float t2 = 2.0 * cosTheta_i * a;
+  Rs = (t1 - t2) / max(t1 + t2, SL_TINY_DENOMINATOR);
+  float t3 = cos2Theta_i * a2plusb2 + sin2Theta_i * sin2Theta_i;
+  float t4 = t2 * sin2Theta_i;
+  Rp = Rs * (t3 - t4) / (t3 + t4);
+}
+
+// A = (Rs + Rp) / 2 and B = (Rs - Rp) / 2 per channel (eq. 8.2): F_RGB_SP.
+void F_RGB_SP(float cosTheta_i, vec3 eta, vec3 k, out vec3 A, out vec3 B)
+{
+  for (int c = 0; c < 3; ++c)
+  {
+    float Rs, Rp;
+    F_ConductorSP(cosTheta_i, eta[c], k[c], Rs, Rp);
+    A[c] = 0.5 * (Rs + Rp);
+    B[c] = 0.5 * (Rs - Rp);
+  }
+}
+
 vec3 F_RGB(float cosTheta_i, vec3 eta, vec3 k)
 {
   return vec3(F_Conductor(cosTheta_i, eta.x, k.x), F_Conductor(cosTheta_i, eta.y, k.y),
@@ -130,6 +162,23 @@ vec3 F_Spectral(float cosTheta_i, float eta[SL_SPECTRAL_SAMPLES], float k[SL_SPE
   }
   return F;
 }
+
+#if SL_SPECTRAL
+// The same per wavelength, weighted as F_Spectral: F_Spectral_SP.
+void F_Spectral_SP(float cosTheta_i, float eta[SL_SPECTRAL_SAMPLES], float k[SL_SPECTRAL_SAMPLES],
+  vec3 weight[SL_SPECTRAL_SAMPLES], out vec3 A, out vec3 B)
+{
+  A = vec3(0.0);
+  B = vec3(0.0);
+  for (int i = 0; i < SL_SPECTRAL_SAMPLES; ++i)
+  {
+    float Rs, Rp;
+    F_ConductorSP(cosTheta_i, eta[i], k[i], Rs, Rp);
+    A += weight[i] * (0.5 * (Rs + Rp));
+    B += weight[i] * (0.5 * (Rs - Rp));
+  }
+}
+#endif
 
 // Rs of Cook & Torrance 1982 (jacobian 1) or Walter et al. 2007 (jacobian 4).
 float Fs_CookTorrance(float F, float D, float G, float NoL, float NoV, float jacobian)

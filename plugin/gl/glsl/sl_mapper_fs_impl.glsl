@@ -57,6 +57,9 @@
       float slRoV = 2.0 * slNoL * slNoV - dot(slL, slV0);
       slColor += slIrr * BrdfFromCosines(slRho, slNoH, slRoV) * slNoL;
     }
+#if SL_ANALYSER
+    slColor *= 0.5; // no Fresnel term: unpolarized, half passes the analyser
+#endif
   }
 #else
   {

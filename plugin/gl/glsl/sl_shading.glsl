@@ -11,6 +11,7 @@
 //   SL_LOBE_COUNT   Beckmann mixture size (1..4)
 //   SL_CONDUCTOR    1 when any k > 0 (complex-index Fresnel)
 //   SL_SPECTRAL     1: Fresnel per wavelength (eq. 7.3) instead of per channel
+//   SL_ANALYSER     1: a linear polarizer in front of the camera (eq. 8.3-8.4)
 //   SL_HEADLIGHT    1 when the only light is a headlight: L = +z in view
 //                   coordinates, a constant the compiler folds
 
@@ -39,6 +40,11 @@ uniform float slSpectralK[SL_SPECTRAL_SAMPLES];
 uniform vec3 slSpectralWeight[SL_SPECTRAL_SAMPLES];
 #endif
 uniform float slJacobian;
+#if SL_ANALYSER
+// cos 2 theta, sin 2 theta of the analyser's axis from the image's x axis
+// (view coordinates: x right, y up).
+uniform vec2 slAnalyser;
+#endif
 
 // Direction to the light and its irradiance factor at P (view coordinates).
 bool LightIncidence(int j, vec3 P, out vec3 L, out vec3 irradiance)
@@ -106,6 +112,9 @@ vec3 EvaluateBrdf(vec3 diffuseColor, vec3 N, vec3 L, vec3 V)
   bool above = NoL > 0.0 && NoV > 0.0;
 #if SL_MODEL == SL_MODEL_LOMMEL_SEELIGER
   vec3 f = diffuseColor * (slKd * Fd_LommelSeeliger(NoL, NoV));
+#if SL_ANALYSER
+  f *= 0.5; // unpolarized: half passes the analyser
+#endif
   return above ? f : vec3(0.0);
 #elif SL_MODEL != SL_MODEL_COOK_TORRANCE || !SL_SPECULAR
 #if SL_MODEL == SL_MODEL_PHONG
@@ -118,6 +127,9 @@ vec3 EvaluateBrdf(vec3 diffuseColor, vec3 N, vec3 L, vec3 V)
   float RoV = 0.0, NoH = 0.0;
 #endif
   vec3 f = BrdfFromCosines(diffuseColor, NoH, RoV);
+#if SL_ANALYSER
+  f *= 0.5; // no Fresnel term: unpolarized, half passes the analyser
+#endif
   return above ? f : vec3(0.0);
 #else
   vec3 diffuse = diffuseColor * (slKd * Fd_Lambert());
@@ -134,6 +146,26 @@ vec3 EvaluateBrdf(vec3 diffuseColor, vec3 N, vec3 L, vec3 V)
   vec3 F = vec3(F_Dielectric(VoH, slEta.x), F_Dielectric(VoH, slEta.y), F_Dielectric(VoH, slEta.z));
 #endif
   float DG = Fs_CookTorrance(1.0, D, G, NoL, NoV, slJacobian);
+#if SL_ANALYSER
+  // Through the analyser (eq. 8.4; EvaluateBrdf in Shading.h): the
+  // specular Stokes vector (A, B, 0, 0) in the frame of s = L x V, at
+  // angle phi from the image's x axis; the diffuse term passes by half.
+  vec3 A, B;
+#if SL_SPECTRAL
+  F_Spectral_SP(VoH, slSpectralEta, slSpectralK, slSpectralWeight, A, B);
+#else
+  F_RGB_SP(VoH, slEta, slK, A, B);
+#endif
+  vec3 sAxis = cross(L, V);
+  float r2 = dot(sAxis.xy, sAxis.xy);
+  bool oblique = r2 > SL_TINY_DENOMINATOR;
+  float inv = 1.0 / max(r2, SL_TINY_DENOMINATOR);
+  float cos2Phi = oblique ? (sAxis.x * sAxis.x - sAxis.y * sAxis.y) * inv : 1.0;
+  float sin2Phi = oblique ? 2.0 * sAxis.x * sAxis.y * inv : 0.0;
+  float cos2Delta = slAnalyser.x * cos2Phi + slAnalyser.y * sin2Phi;
+  F = 0.5 * (A + B * cos2Delta);
+  diffuse *= 0.5;
+#endif
   vec3 f = diffuse + F * (slKs * DG);
   return above ? f : vec3(0.0);
 #endif
@@ -141,7 +173,11 @@ vec3 EvaluateBrdf(vec3 diffuseColor, vec3 N, vec3 L, vec3 V)
 
 vec3 Shade(vec3 diffuseColor, vec3 P, vec3 N, vec3 V)
 {
+#if SL_ANALYSER
+  vec3 result = 0.5 * slAmbient; // unpolarized ambient light
+#else
   vec3 result = slAmbient;
+#endif
   for (int j = 0; j < SL_LIGHT_COUNT; ++j)
   {
     vec3 L, irradiance;

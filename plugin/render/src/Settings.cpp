@@ -240,6 +240,19 @@ void RenderRows(std::vector<SettingRow>& t)
     t.push_back(r);
   }
   {
+    SettingRow r = Row("polarizer", "Polarizer", "Polarizer (deg, -1 none)", G::Render, K::Real);
+    r.min = -1;
+    r.max = 180;
+    r.doc = "an analyser in front of the camera: a linear polarizer whose transmission axis is "
+            "DEG from the image's x axis (counter-clockwise; Cook-Torrance's Fresnel term "
+            "polarizes, diffuse light passes by half; docs/model.md section 8); -1: none";
+    r.frontEnds = kCli | kParaView | kMapper;
+    r.metavar = "DEG";
+    r.set = [](Settings& s, const SettingValue& v) { s.render.polarizer = v.numbers[0]; };
+    r.get = [](const Settings& s) { return Number(s.render.polarizer); };
+    t.push_back(r);
+  }
+  {
     SettingRow r = Row("fast-phong-as-is", "FastPhongAsIs", "Fast Phong As Is", G::Render, K::Flag);
     r.doc = "fast-phong with its quadratics even on triangles too small for them to pay (CPU; "
             "default: exact Phong there, said on stderr)";

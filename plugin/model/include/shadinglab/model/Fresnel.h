@@ -99,18 +99,16 @@ void F_DielectricPolarized(T cosTheta_i, T eta, T& Rs, T& Rp)
  * k = 0 it is F_Dielectric, total internal reflection for eta < 1
  * included (a = 0 there: Rs = Rp = 1).
  *
+ * F_ConductorSP gives Rs and Rp themselves (the polarized reflectances,
+ * docs/model.md eq. 8.1); F_Conductor their mean.
+ *
  * @param cosTheta_i L.H, clamped to [0, 1].
  * @param eta real part of the relative index (> 0).
  * @param k extinction coefficient (>= 0).
  */
 template <typename T>
-SL_INLINE T F_Conductor(T cosTheta_i, T eta, T k)
+SL_INLINE void F_ConductorSP(T cosTheta_i, T eta, T k, T& Rs, T& Rp)
 {
-  const auto dielectric = k == T(0);
-  if (AllOf(dielectric))
-  {
-    return F_Dielectric(cosTheta_i, eta);
-  }
   cosTheta_i = Clamp(cosTheta_i, T(0), T(1));
   const T cos2Theta_i = cosTheta_i * cosTheta_i;
   const T sin2Theta_i = Max(T(0), T(1) - cos2Theta_i);
@@ -121,17 +119,31 @@ SL_INLINE T F_Conductor(T cosTheta_i, T eta, T k)
   // absorption); there the same value is 2 eta^2 k^2 / (a^2 + b^2 - t0).
   // Both denominators are >= a^2 + b^2 > 0.
   const T sum = a2plusb2 + Abs(t0);
-  const T a = Sqrt(Select(t0 >= T(0), T(0.5) * sum, T(2) * etaK2 / sum));
+  const T a = Sqrt(Select(t0 >= T(0), T(0.5) * sum, T(2) * etaK2 / Max(sum, T(kTinyDenominator<ScalarOf<T>>))));
   const T t1 = a2plusb2 + cos2Theta_i;
   const T t2 = T(2) * cosTheta_i * a;
   // t1 + t2 >= a^2 + b^2 >= 2 eta k > 0 for a conductor. It vanishes only
-  // for a k = 0 lane of a batch of mixed materials at eta = 1 and grazing
-  // incidence, where t1 - t2 = 0 too and the limit is Rs = 0.
-  const T Rs = (t1 - t2) / Max(t1 + t2, T(kTinyDenominator<ScalarOf<T>>));
+  // for k = 0 at eta = 1 and grazing incidence, where t1 - t2 = 0 too and
+  // the limit is Rs = 0.
+  Rs = (t1 - t2) / Max(t1 + t2, T(kTinyDenominator<ScalarOf<T>>));
   // t3 + t4 > 0: cos ti and sin ti are never both 0.
   const T t3 = cos2Theta_i * a2plusb2 + sin2Theta_i * sin2Theta_i;
   const T t4 = t2 * sin2Theta_i;
-  const T Rp = Rs * (t3 - t4) / (t3 + t4);
+  Rp = Rs * (t3 - t4) / (t3 + t4);
+}
+
+/// F = (Rs + Rp) / 2 of F_ConductorSP; a dielectric (k = 0) through
+/// F_Dielectric, which also handles the invisible interface eta = 1.
+template <typename T>
+SL_INLINE T F_Conductor(T cosTheta_i, T eta, T k)
+{
+  const auto dielectric = k == T(0);
+  if (AllOf(dielectric))
+  {
+    return F_Dielectric(cosTheta_i, eta);
+  }
+  T Rs, Rp;
+  F_ConductorSP(cosTheta_i, eta, k, Rs, Rp);
   return T(0.5) * (Rs + Rp);
 }
 
@@ -166,6 +178,40 @@ SL_INLINE Vec3<T> F_Spectral(T cosTheta_i, const T* eta, const T* k, const Vec3<
     F += weight[i] * F_Conductor(cosTheta_i, eta[i], k[i]);
   }
   return F;
+}
+
+/**
+ * The s- and p-reflectances per channel (per wavelength when spectral,
+ * weighted as F_Spectral): A = (Rs + Rp) / 2 = F and B = (Rs - Rp) / 2,
+ * the first two entries of the Fresnel Mueller matrix (docs/model.md
+ * eq. 8.2). Unpolarized light reflects as the Stokes vector (A, B, 0, 0)
+ * in the frame whose first axis is s, perpendicular to the plane of
+ * incidence.
+ */
+template <typename T>
+SL_INLINE void F_RGB_SP(T cosTheta_i, const Vec3<T>& eta, const Vec3<T>& k, Vec3<T>& A, Vec3<T>& B)
+{
+  for (int c = 0; c < 3; ++c)
+  {
+    T Rs, Rp;
+    F_ConductorSP(cosTheta_i, eta[c], k[c], Rs, Rp);
+    A[c] = T(0.5) * (Rs + Rp);
+    B[c] = T(0.5) * (Rs - Rp);
+  }
+}
+
+template <typename T>
+SL_INLINE void F_Spectral_SP(T cosTheta_i, const T* eta, const T* k, const Vec3<T>* weight,
+  int count, Vec3<T>& A, Vec3<T>& B)
+{
+  A = B = Vec3<T>();
+  for (int i = 0; i < count; ++i)
+  {
+    T Rs, Rp;
+    F_ConductorSP(cosTheta_i, eta[i], k[i], Rs, Rp);
+    A += weight[i] * (T(0.5) * (Rs + Rp));
+    B += weight[i] * (T(0.5) * (Rs - Rp));
+  }
 }
 
 } // namespace shadinglab

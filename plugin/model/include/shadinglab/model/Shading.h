@@ -151,6 +151,20 @@ struct Material
 
   bool IsConductor() const { return k.x > T(0) || k.y > T(0) || k.z > T(0); }
 
+  /// A = (Rs + Rp) / 2 and B = (Rs - Rp) / 2 at cos(theta_i) = L.H
+  /// (docs/model.md eq. 8.2), per wavelength when spectral.
+  SL_INLINE void FresnelSP(T cosTheta_i, Vec3<T>& A, Vec3<T>& B) const
+  {
+    if (spectralCount > 0)
+    {
+      F_Spectral_SP(cosTheta_i, spectralEta, spectralK, spectralWeight, spectralCount, A, B);
+    }
+    else
+    {
+      F_RGB_SP(cosTheta_i, eta, k, A, B);
+    }
+  }
+
   /// F at cos(theta_i) = L.H: per wavelength when spectral, else per channel.
   SL_INLINE Vec3<T> Fresnel(T cosTheta_i) const
   {
@@ -212,6 +226,34 @@ struct Light
   }
 };
 
+/**
+ * A linear polarizer in front of the camera, the analyser (docs/model.md
+ * eq. 8.3): what passes of a Stokes vector S in the image's frame is
+ * (S0 + S1 cos 2 theta + S2 sin 2 theta) / 2, theta its transmission axis
+ * from the image's x axis. Lights are unpolarized, diffuse reflection
+ * depolarizes: only the Fresnel term carries polarization.
+ */
+template <typename T>
+struct Analyser
+{
+  bool on = false;
+  T cos2Theta = T(1), sin2Theta = T(0);
+  /// The image's x and y axes in the space the shading is done in.
+  Vec3<T> right{ T(1), T(0), T(0) }, up{ T(0), T(1), T(0) };
+
+  template <typename U>
+  Analyser<U> Cast() const
+  {
+    Analyser<U> out;
+    out.on = on;
+    out.cos2Theta = static_cast<U>(cos2Theta);
+    out.sin2Theta = static_cast<U>(sin2Theta);
+    out.right = Vec3<U>(right);
+    out.up = Vec3<U>(up);
+    return out;
+  }
+};
+
 /// The lights and ambient intensity Ia of one scene.
 template <typename T>
 struct Lighting
@@ -219,6 +261,8 @@ struct Lighting
   Light<T> lights[kMaxLights] = {};
   int lightCount = 1;
   Vec3<T> ambientIntensity{ T(1), T(1), T(1) };
+  /// The analyser in front of the camera (off: the eye sees S0).
+  Analyser<T> analyser;
 
   template <typename U>
   Lighting<U> Cast() const
@@ -230,6 +274,7 @@ struct Lighting
     }
     out.lightCount = lightCount;
     out.ambientIntensity = Vec3<U>(ambientIntensity);
+    out.analyser = analyser.template Cast<U>();
     return out;
   }
 };
@@ -333,7 +378,7 @@ SL_INLINE Vec3<T> BrdfFromCosines(const Material<T>& material, const Vec3<T>& di
 template <typename T>
 SL_INLINE Vec3<T> EvaluateBrdf(
   const Material<T>& material, const Vec3<T>& diffuseColor, const Vec3<T>& N, const Vec3<T>& L,
-  const Vec3<T>& V)
+  const Vec3<T>& V, const Analyser<T>* analyser = nullptr)
 {
   const T NoL = Dot(N, L);
   const T NoV = Dot(N, V);
@@ -363,7 +408,31 @@ SL_INLINE Vec3<T> EvaluateBrdf(
       const T D = D_BeckmannMixture(NoH, material.lobes, material.lobeCount);
       const T G = G_CookTorrance(NoH, NoV, NoL, VoH);
       // F is evaluated at theta_i = acos(L.H) (eq. 1.8); L.H = V.H.
-      const Vec3<T> F = material.Fresnel(VoH);
+      Vec3<T> F;
+      if (analyser && analyser->on)
+      {
+        // Through the analyser (eq. 8.4): the specular reflection of
+        // unpolarized light is (A, B, 0, 0) in the microfacet's s/p frame,
+        // s = L x V (L, V and H lie in its plane of incidence) at angle phi
+        // from the image's x axis; (A + B cos 2(theta - phi)) / 2 passes.
+        // The diffuse term is unpolarized: half passes.
+        Vec3<T> A, B;
+        material.FresnelSP(VoH, A, B);
+        const Vec3<T> sAxis = Cross(L, V);
+        const T c = Dot(sAxis, analyser->right), d = Dot(sAxis, analyser->up);
+        const T r2 = c * c + d * d;
+        // L parallel to V: normal incidence on the facet, Rs = Rp (B = 0).
+        const auto oblique = r2 > T(kTinyDenominator<ScalarOf<T>>);
+        const T inv = T(1) / Max(r2, T(kTinyDenominator<ScalarOf<T>>));
+        const T cos2Phi = Select(oblique, (c * c - d * d) * inv, T(1));
+        const T sin2Phi = Select(oblique, T(2) * c * d * inv, T(0));
+        const T cos2Delta = analyser->cos2Theta * cos2Phi + analyser->sin2Theta * sin2Phi;
+        F = (A + B * cos2Delta) * T(0.5);
+        const T DG = Fs_CookTorrance(T(1), D, G, NoL, NoV, material.variant);
+        f = diffuse * T(0.5) + F * (material.ks * DG);
+        break;
+      }
+      F = material.Fresnel(VoH);
       const T DG = Fs_CookTorrance(T(1), D, G, NoL, NoV, material.variant);
       f = diffuse + F * (material.ks * DG);
       break;
@@ -371,6 +440,11 @@ SL_INLINE Vec3<T> EvaluateBrdf(
     case ReflectanceModel::LommelSeeliger:
       f = diffuseColor * (material.kd * Fd_LommelSeeliger(NoL, NoV));
       break;
+  }
+  if (analyser && analyser->on && material.model != ReflectanceModel::CookTorrance)
+  {
+    // No Fresnel term: these models reflect unpolarized light unpolarized.
+    f *= T(0.5);
   }
   return Select(lit, f, Vec3<T>());
 }
@@ -386,7 +460,9 @@ SL_INLINE Vec3<T> Shade(
   const Material<T>& material, const Lighting<T>& lighting, const Vec3<T>& diffuseColor,
   const Vec3<T>& P, const Vec3<T>& N, const Vec3<T>& V)
 {
-  Vec3<T> result = material.ambient * lighting.ambientIntensity;
+  const Analyser<T>* analyser = lighting.analyser.on ? &lighting.analyser : nullptr;
+  // The ambient light is unpolarized: half passes an analyser.
+  Vec3<T> result = material.ambient * lighting.ambientIntensity * T(analyser ? 0.5 : 1.0);
   for (int j = 0; j < lighting.lightCount; ++j)
   {
     Vec3<T> L, irradiance;
@@ -402,7 +478,8 @@ SL_INLINE Vec3<T> Shade(
       continue;
     }
     // Lanes the light does not reach add 0 (a single value never gets here).
-    result += Select(lit, irradiance * EvaluateBrdf(material, diffuseColor, N, L, V) * NoL, Vec3<T>());
+    result += Select(
+      lit, irradiance * EvaluateBrdf(material, diffuseColor, N, L, V, analyser) * NoL, Vec3<T>());
   }
   return result;
 }

@@ -180,6 +180,10 @@ struct RenderOptions
   /// is ~1/255 (FastPhongTest measures 2.4e-3 at ~23 degrees); at 45 degrees
   /// it is ~5/255 and visible. 180 disables the fallback.
   double fastPhongMaxSpread = 30.0;
+  /// An analyser (linear polarizer) in front of the camera, its transmission
+  /// axis this many degrees from the image's x axis, counter-clockwise
+  /// (docs/model.md eq. 8.3-8.4); < 0: none, the eye sees all the light.
+  double polarizer = -1.0;
   /// fast-phong on the CPU: when the mesh's triangles are too small on
   /// screen for the quadratics to pay (their set-up costs more than the
   /// SIMD Phong pixels it saves), draw exact Phong instead and say so

@@ -23,7 +23,7 @@ constexpr size_t kMaxRows = 10000000;
 const char* kBrdfHelp =
   "usage: shadinglab brdf [--model cook-torrance|lambert|phong|blinn-phong] [material options]\n"
   "                       --theta-l ANGLES [--theta-v ANGLES] [--phi ANGLES]\n"
-  "                       [--term brdf|F|D|G]\n"
+  "                       [--term brdf|F|D|G|Fs|Fp|dolp]\n"
   "\n"
   "Prints CSV 'theta_l,theta_v,phi,r,g,b', one row per angle combination.\n"
   "Angles in degrees: theta_l, theta_v from the normal (0..90), phi the azimuth of V\n"
@@ -34,6 +34,12 @@ const char* kBrdfHelp =
   "  --term F      Fresnel reflectance at cos(theta_i) = L.H (cook-torrance)\n"
   "  --term D      Beckmann D (mixture), without the 1/pi, at alpha = acos(N.H)\n"
   "  --term G      geometric attenuation min(1, Gs, Gm)\n"
+  "  --term Fs     s-polarized reflectance Rs at cos(theta_i) = L.H (docs/model.md eq. 8.1)\n"
+  "  --term Fp     p-polarized reflectance Rp there (0 at Brewster's angle of a dielectric)\n"
+  "  --term dolp   degree of linear polarization of the specular reflection of unpolarized\n"
+  "                light, |Rs - Rp| / (Rs + Rp) (eq. 8.2)\n"
+  "  With --spectral, F, Fs and Fp are per wavelength, reduced to linear sRGB (eq. 7.3),\n"
+  "  and dolp is |B| / A of those colours.\n"
   "\n";
 
 enum class Term
@@ -41,7 +47,10 @@ enum class Term
   Brdf,
   F,
   D,
-  G
+  G,
+  Fs,
+  Fp,
+  DoLP
 };
 
 Vec3<double> DirectionFromAngles(double thetaDeg, double phiDeg)
@@ -110,9 +119,22 @@ int RunBrdf(int argc, char** argv)
   {
     term = Term::G;
   }
+  else if (termName == "Fs")
+  {
+    term = Term::Fs;
+  }
+  else if (termName == "Fp")
+  {
+    term = Term::Fp;
+  }
+  else if (termName == "dolp")
+  {
+    term = Term::DoLP;
+  }
   else
   {
-    throw UsageError("unknown --term '" + termName + "' (expected brdf, F, D or G)");
+    throw UsageError(
+      "unknown --term '" + termName + "' (expected brdf, F, D, G, Fs, Fp or dolp)");
   }
   if (term != Term::Brdf && material.model != ReflectanceModel::CookTorrance)
   {
@@ -159,6 +181,22 @@ int RunBrdf(int argc, char** argv)
           {
             const double G = G_CookTorrance(NoH, NoV, NoL, VoH);
             value = { G, G, G };
+            break;
+          }
+          case Term::Fs:
+          case Term::Fp:
+          case Term::DoLP:
+          {
+            // A = (Rs + Rp) / 2, B = (Rs - Rp) / 2 (eq. 8.2).
+            Vec3<double> A, B;
+            material.FresnelSP(VoH, A, B);
+            for (int c = 0; c < 3; ++c)
+            {
+              value[c] = term == Term::Fs ? A[c] + B[c]
+                : term == Term::Fp        ? A[c] - B[c]
+                : A[c] > 0.0              ? std::abs(B[c]) / A[c]
+                                          : 0.0;
+            }
             break;
           }
         }

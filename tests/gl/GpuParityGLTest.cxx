@@ -298,6 +298,70 @@ TEST(GpuParityGLTest, EveryModeTimesModelBothInterpolationSpaces)
   EXPECT_NE(sphere->GetPointData()->GetNormals(), nullptr);
 }
 
+// An analyser in front of the camera (--polarizer, docs/model.md section 8):
+// the GPU draws what the CPU draws at every angle, for every smooth mode and
+// spectral too; and the CPU's linear frames obey Malus's law, I(0) + I(90)
+// = I(45) + I(135) = the frame without an analyser.
+TEST(GpuParityGLTest, PolarizerMatchesTheCpuAndObeysMalus)
+{
+  if (!HaveGpu())
+  {
+    GTEST_SKIP() << "no X display with OpenGL";
+  }
+  auto torus = WithExactNormals(sl::datasets::MakeTorus(1.0, 0.4, 48, 24));
+  const render::Mesh mesh = render::MeshFromPolyData(torus);
+  sl::Material<double> glass = sl::FindMaterialPreset("glass")->material;
+  glass.kd = 0.3;
+  glass.ks = 0.7;
+  sl::Material<double> gold = sl::FindMaterialPreset("gold")->material;
+  ASSERT_EQ(sl::SetSpectral(gold, *sl::PresetDispersion("gold")), "");
+  sl::gl::GpuRenderer gpuRenderer;
+  sl::cpu::SoftwareRenderer cpuRenderer;
+  const auto lights = Lights(true);
+  for (const auto& [name, material] : { std::make_pair("glass", glass), std::make_pair("spectral gold", gold) })
+  {
+    for (render::ShadingMode mode : { render::ShadingMode::Gouraud, render::ShadingMode::Phong })
+    {
+      render::RenderOptions opt;
+      opt.width = 320;
+      opt.height = 240;
+      opt.mode = mode;
+      const auto none = test::RenderWith(cpuRenderer, mesh, Camera(), lights, material, opt);
+      std::vector<render::Image> analysed;
+      for (double deg : { 0.0, 45.0, 90.0, 135.0 })
+      {
+        opt.polarizer = deg;
+        const auto gpu = test::RenderWith(gpuRenderer, mesh, Camera(), lights, material, opt);
+        analysed.push_back(test::RenderWith(cpuRenderer, mesh, Camera(), lights, material, opt));
+        const auto d = Compare(analysed.back(), gpu);
+        std::printf("polarizer %-13s %-8s %5.0f deg: mean %.3f p99 %.3f over %lld pixels\n", name,
+          render::ShadingModeName(mode), deg, d.mean, d.p99, static_cast<long long>(d.pixels));
+        EXPECT_GT(d.pixels, 5000);
+        EXPECT_LE(d.mean, kMeanThreshold) << name << " " << deg;
+        EXPECT_LE(d.p99, kP99Threshold) << name << " " << deg;
+      }
+      double worst = 0, angleMatters = 0, peak = 0;
+      for (size_t i = 0; i < none.rgb.size(); ++i)
+      {
+        if (!none.covered[i / 3])
+        {
+          continue;
+        }
+        const double sum0 = analysed[0].rgb[i] + analysed[2].rgb[i];
+        const double sum45 = analysed[1].rgb[i] + analysed[3].rgb[i];
+        worst = std::max({ worst, std::abs(sum0 - none.rgb[i]), std::abs(sum45 - none.rgb[i]) });
+        angleMatters = std::max(angleMatters, std::abs(double(analysed[0].rgb[i]) - analysed[2].rgb[i]));
+        peak = std::max(peak, static_cast<double>(none.rgb[i]));
+      }
+      std::printf("Malus %s %s: |I0 + I90 - I|, |I45 + I135 - I| <= %.2e (peak %.3f); "
+                  "|I0 - I90| up to %.3f\n",
+        name, render::ShadingModeName(mode), worst, peak, angleMatters);
+      EXPECT_LE(worst, 1e-5 * std::max(1.0, peak)) << name;
+      EXPECT_GT(angleMatters, 0.01) << name << ": the analyser's angle changes the picture";
+    }
+  }
+}
+
 namespace
 {
 /// Linear image read back from a render window (rows top-down).

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // shadinglab render: one image of a mesh in one shading mode.
 #include "Commands.h"
+#include "PolarizationOutput.h"
 #include "RenderOutput.h"
 #include "SceneArguments.h"
 
@@ -23,6 +24,10 @@ const char* kRenderHelp =
   "  --size WxH          image size (default 1024x768)\n"
   "  --out FILE.png      output image (default out.png)\n"
   "  --stats             print one JSON line of timings and counts\n"
+  "  --output KIND       intensity (default: the picture), or what a polarization camera\n"
+  "                      measures through analysers at 0/45/90/135 degrees (docs/model.md\n"
+  "                      eq. 8.5; CPU renderer): dolp or aop (false colour PNG with a legend),\n"
+  "                      stokes (a .vti of S0, S1, S2 per channel and DoLP, AoP)\n"
   "With --color-by the PNG carries a colour legend at its right edge.\n";
 
 /// Covered pixels with a channel at 255: where the display transform
@@ -42,15 +47,38 @@ long long CountClipped(const render::Image& image, const std::vector<uint8_t>& r
 int RunRender(int argc, char** argv)
 {
   const Stopwatch total;
-  const auto request = SceneFromArguments(argc, argv, kRenderHelp);
+  const auto request = SceneFromArguments(argc, argv, kRenderHelp, { "output" });
   if (request->helpShown)
   {
     return 0;
   }
   const Arguments& args = request->args;
   const render::RenderOptions& options = request->settings.render;
+  const std::string output = args.Get("output", "intensity");
+  const bool polarization = IsPolarizationOutput(output);
+  if (polarization && request->backend == "gpu")
+  {
+    throw UsageError("--output " + output + " is measured on the CPU renderer's linear frames: "
+                     "--backend cpu");
+  }
+  if (polarization && options.polarizer >= 0)
+  {
+    throw UsageError("--output " + output + " turns its own analysers: drop --polarizer");
+  }
   std::string autoNotice;
-  const auto renderer = MakeRenderer(request->backend, "render", autoNotice);
+  const auto renderer =
+    MakeRenderer(polarization ? "cpu" : request->backend, "render", autoNotice);
+  if (polarization)
+  {
+    const std::string path = args.Get("out", output == "stokes" ? "stokes.vti" : "out.png");
+    const double meanDolp =
+      WritePolarizationOutput(*renderer, request->scene, options, output, path);
+    if (args.Has("stats"))
+    {
+      std::printf("{\"output\": \"%s\", \"mean_dolp\": %.6g}\n", output.c_str(), meanDolp);
+    }
+    return 0;
+  }
   render::RenderStats stats;
   const render::Image& image = RenderOrExplain(*renderer, request->scene, options, &stats, "");
   const std::string out = args.Get("out", "out.png");

@@ -1,0 +1,182 @@
+// SPDX-License-Identifier: BSD-3-Clause
+#include "PolarizationOutput.h"
+
+#include "CliArgs.h"
+#include "RenderOutput.h"
+#include "SceneArguments.h"
+
+#include "shadinglab/render/ColorMap.h"
+#include "shadinglab/render/Image.h"
+
+#include <vtkFloatArray.h>
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkXMLImageDataWriter.h>
+
+#include <cmath>
+
+namespace shadinglab::cli
+{
+
+namespace
+{
+
+/// Below this S0 (linear luminance) a pixel carries no light to speak of:
+/// its DoLP is 0 rather than noise over nothing. 1e-6 is 1/3900 of the
+/// smallest non-zero 8-bit step (1/255), far under anything visible.
+constexpr double kMinStokesS0 = 1e-6;
+
+/// A cyclic hue wheel for the angle of polarization: -90 and +90 degrees
+/// are the same axis and the same colour (Wilkie & Weidlich 2010 draw AoP
+/// as hue).
+render::ColorMap HueWheel()
+{
+  render::ColorMap map;
+  map.label = "hue wheel (cyclic)";
+  constexpr int kBins = 256;
+  for (int i = 0; i < kBins; ++i)
+  {
+    const double h = 6.0 * i / kBins;
+    const int sector = static_cast<int>(h) % 6;
+    const float f = static_cast<float>(h - std::floor(h));
+    const float up = f, down = 1.0f - f;
+    const Vec3<float> rgb[6] = { { 1, up, 0 }, { down, 1, 0 }, { 0, 1, up }, { 0, down, 1 },
+      { up, 0, 1 }, { 1, 0, down } };
+    map.colors.push_back(rgb[sector] * 0.9f + Vec3<float>(0.05f, 0.05f, 0.05f));
+  }
+  map.rangeMin = -90.0;
+  map.rangeMax = 90.0;
+  return map;
+}
+
+} // namespace
+
+bool IsPolarizationOutput(const std::string& kind)
+{
+  if (kind == "intensity")
+  {
+    return false;
+  }
+  if (kind == "dolp" || kind == "aop" || kind == "stokes")
+  {
+    return true;
+  }
+  throw UsageError("--output must be intensity, dolp, aop or stokes (got '" + kind + "')");
+}
+
+double WritePolarizationOutput(render::Renderer& renderer, const render::Scene& scene,
+  const render::RenderOptions& options, const std::string& kind, const std::string& path)
+{
+  // eq. 8.5: I(theta) = (S0 + S1 cos 2 theta + S2 sin 2 theta) / 2, so
+  // S0 = I0 + I90, S1 = I0 - I90, S2 = I45 - I135.
+  render::Image frames[4];
+  for (int a = 0; a < 4; ++a)
+  {
+    render::RenderOptions analysed = options;
+    analysed.polarizer = 45.0 * a;
+    frames[a] = RenderOrExplain(renderer, scene, analysed, nullptr, "");
+    if (frames[a].displayApplied)
+    {
+      throw UsageError("--output " + kind + " needs linear frames: --backend cpu");
+    }
+  }
+  const int W = frames[0].width, H = frames[0].height;
+  const size_t n = static_cast<size_t>(W) * H;
+  std::vector<float> s[3] = { std::vector<float>(3 * n), std::vector<float>(3 * n),
+    std::vector<float>(3 * n) };
+  // NaN where no light arrives (S0 <= kMinStokesS0): neither quantity exists.
+  std::vector<float> dolp(n, std::nanf("")), aop(n, std::nanf(""));
+  double dolpSum = 0;
+  long long covered = 0;
+  for (size_t p = 0; p < n; ++p)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const size_t i = 3 * p + c;
+      s[0][i] = frames[0].rgb[i] + frames[2].rgb[i];
+      s[1][i] = frames[0].rgb[i] - frames[2].rgb[i];
+      s[2][i] = frames[1].rgb[i] - frames[3].rgb[i];
+    }
+    const double y0 = render::Luminance(Vec3<double>(s[0][3 * p], s[0][3 * p + 1], s[0][3 * p + 2]));
+    const double y1 = render::Luminance(Vec3<double>(s[1][3 * p], s[1][3 * p + 1], s[1][3 * p + 2]));
+    const double y2 = render::Luminance(Vec3<double>(s[2][3 * p], s[2][3 * p + 1], s[2][3 * p + 2]));
+    if (frames[0].covered[p] && y0 > kMinStokesS0)
+    {
+      dolp[p] = static_cast<float>(std::min(1.0, std::sqrt(y1 * y1 + y2 * y2) / y0));
+      aop[p] = static_cast<float>(0.5 * std::atan2(y2, y1) * 180.0 / kPi<double>);
+      dolpSum += dolp[p];
+      ++covered;
+    }
+  }
+  if (kind == "stokes")
+  {
+    vtkNew<vtkImageData> image;
+    image->SetDimensions(W, H, 1);
+    auto add = [&](const char* name, const std::vector<float>& values, int components) {
+      vtkNew<vtkFloatArray> array;
+      array->SetName(name);
+      array->SetNumberOfComponents(components);
+      array->SetNumberOfTuples(static_cast<vtkIdType>(n));
+      // VTK's image rows go up; ours go down.
+      for (int y = 0; y < H; ++y)
+      {
+        for (int x = 0; x < W; ++x)
+        {
+          const size_t from = static_cast<size_t>(y) * W + x;
+          const vtkIdType to = static_cast<vtkIdType>(H - 1 - y) * W + x;
+          for (int c = 0; c < components; ++c)
+          {
+            array->SetComponent(to, c, values[components * from + c]);
+          }
+        }
+      }
+      image->GetPointData()->AddArray(array);
+    };
+    add("S0", s[0], 3);
+    add("S1", s[1], 3);
+    add("S2", s[2], 3);
+    add("DoLP", dolp, 1);
+    add("AoP", aop, 1);
+    vtkNew<vtkXMLImageDataWriter> writer;
+    writer->SetFileName(path.c_str());
+    writer->SetInputData(image);
+    if (writer->Write() != 1)
+    {
+      throw UsageError("cannot write " + path);
+    }
+    return covered ? dolpSum / covered : 0.0;
+  }
+  render::ColorMap map;
+  // Pixels without light (NaN) in dark grey, apart from every colour of both maps.
+  std::string title;
+  if (kind == "dolp")
+  {
+    render::FindColorMap("viridis", map);
+    map.rangeMin = 0.0;
+    map.rangeMax = 1.0;
+    title = "DoLP";
+  }
+  else
+  {
+    map = HueWheel();
+    title = "AoP (deg from x)";
+  }
+  map.nanColor = Vec3<float>(0.2f, 0.2f, 0.2f);
+  const Vec3<float> bg = options.background;
+  std::vector<uint8_t> rgb8(3 * n);
+  for (size_t p = 0; p < n; ++p)
+  {
+    const bool lit = frames[0].covered[p];
+    const Vec3<float> c = lit ? map.Map(kind == "dolp" ? dolp[p] : aop[p]) : bg;
+    for (int k = 0; k < 3; ++k)
+    {
+      rgb8[3 * p + k] = static_cast<uint8_t>(std::lround(255.0f * std::clamp(c[k], 0.0f, 1.0f)));
+    }
+  }
+  DrawColorLegend(rgb8, W, H, map, title);
+  WritePng(W, H, rgb8, path);
+  return covered ? dolpSum / covered : 0.0;
+}
+
+} // namespace shadinglab::cli

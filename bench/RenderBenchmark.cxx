@@ -162,7 +162,8 @@ void BM_CpuCookTorrance(benchmark::State& state)
 /// Spectral Fresnel (16 wavelengths, docs/model.md eq. 7.3) against the
 /// three-sample RGB material, frame by frame in alternating pairs (as
 /// AlternateOneAndTwoThreads): Phong/Cook-Torrance gold, 1920x1080,
-/// range(1) threads. `ratio` is the median of spectral / RGB over the pairs.
+/// range(1) threads; range(2) 1: an analyser instead of the spectrum.
+/// `ratio` is the median of spectral (or polarized) / RGB over the pairs.
 void BM_CpuSpectral(benchmark::State& state);
 
 /// Times run(1) and run(2) in alternating pairs (which goes first
@@ -273,6 +274,7 @@ void BM_CpuThreadScaling(benchmark::State& state)
 void BM_CpuSpectral(benchmark::State& state)
 {
   const Scene& scene = GetScene(static_cast<int>(state.range(0)));
+  const bool polarized = state.range(2) != 0;
   sl::Material<double> rgb = sl::FindMaterialPreset("gold")->material;
   sl::Material<double> spectral = rgb;
   sl::SetSpectral(spectral, *sl::PresetDispersion("gold"));
@@ -281,16 +283,24 @@ void BM_CpuSpectral(benchmark::State& state)
   opt.height = kHeight;
   opt.mode = render::ShadingMode::Phong;
   opt.threads = static_cast<int>(state.range(1));
+  // range(2) = 1: RGB gold through an analyser at 30 degrees against RGB
+  // gold without (the polarized specular term's cost, eq. 8.4).
+  render::RenderOptions analysed = opt;
+  analysed.polarizer = 30.0;
   const render::Scene scenes[2] = {
-    { &scene.mesh, scene.camera, Headlight(scene.camera), spectral },
+    { &scene.mesh, scene.camera, Headlight(scene.camera), polarized ? rgb : spectral },
     { &scene.mesh, scene.camera, Headlight(scene.camera), rgb } };
+  const render::RenderOptions options[2] = { polarized ? analysed : opt, opt };
   cpu::SoftwareRenderer renderers[2];
   AlternateOneAndTwoThreads(state,
     [&](int which) {
-      benchmark::DoNotOptimize(renderers[which - 1].Render(scenes[which - 1], opt).rgb.data());
+      benchmark::DoNotOptimize(
+        renderers[which - 1].Render(scenes[which - 1], options[which - 1]).rgb.data());
     },
-    PairNames{ "ms_spectral", "ms_rgb", "ratio", "ratio_best" });
-  state.SetLabel("phong/cook-torrance gold, spectral (16) against RGB, threads=" +
+    polarized ? PairNames{ "ms_polarized", "ms_rgb", "ratio", "ratio_best" }
+              : PairNames{ "ms_spectral", "ms_rgb", "ratio", "ratio_best" });
+  state.SetLabel(std::string("phong/cook-torrance gold, ") +
+    (polarized ? "through an analyser" : "spectral (16)") + " against RGB, threads=" +
     std::to_string(opt.threads));
 }
 
@@ -710,7 +720,7 @@ BENCHMARK(BM_CpuCookTorrance)
   ->Unit(benchmark::kMillisecond)
   ->UseRealTime();
 BENCHMARK(BM_CpuSpectral)
-  ->ArgsProduct({ { 0, 1 }, { 2 } })
+  ->ArgsProduct({ { 0, 1 }, { 2 }, { 0, 1 } })
   ->Unit(benchmark::kMillisecond)
   ->UseManualTime();
 BENCHMARK(BM_ShadingLabGLSpectral)

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "CpuPanel.h"
 
+#include "shadinglab/model/Spectrum.h"
+
 #include "shadinglab/render/Display.h"
 
 #include "ViewInteraction.h"
@@ -271,8 +273,10 @@ QImage CpuPanel::HeatMap(const render::Image& reference)
       {
         continue;
       }
-      const double error =
-        std::abs(Luminance(&mine.rgb[3 * o]) - Luminance(&reference.rgb[3 * r]));
+      const double error = this->SpecValue.colourDifference
+        ? DeltaE2000(Vec3<double>(mine.rgb[3 * o], mine.rgb[3 * o + 1], mine.rgb[3 * o + 2]),
+            Vec3<double>(reference.rgb[3 * r], reference.rgb[3 * r + 1], reference.rgb[3 * r + 2]))
+        : std::abs(Luminance(&mine.rgb[3 * o]) - Luminance(&reference.rgb[3 * r]));
       image.setPixelColor(x, y, Inferno(error / scale));
     }
   }
@@ -288,9 +292,11 @@ QImage CpuPanel::HeatMap(const render::Image& reference)
   QFont font = painter.font();
   font.setPixelSize(10);
   painter.setFont(font);
-  painter.drawText(x0 + barW + 3, y0 + 8, QString("%1").arg(scale * 255.0, 0, 'g', 3));
+  const bool dE = this->SpecValue.colourDifference;
+  painter.drawText(
+    x0 + barW + 3, y0 + 8, QString("%1").arg(dE ? scale : scale * 255.0, 0, 'g', 3));
   painter.drawText(x0 + barW + 3, y0 + barH, "0");
-  painter.drawText(x0 - 4, y0 + barH + 12, "/255");
+  painter.drawText(x0 - (dE ? 20 : 4), y0 + barH + 12, dE ? "CIEDE2000" : "/255");
   if (!comparable)
   {
     painter.drawText(8, 16, "reference not rendered yet");

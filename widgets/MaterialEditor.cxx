@@ -60,6 +60,8 @@ MaterialEditor::MaterialEditor(QWidget* parent)
   {
     this->Spectrum->addItem(QString("spectral: %1 (measured)").arg(name), QString(name));
   }
+  // Shown when a scene's material came with a spectrum of its own.
+  this->Spectrum->addItem("spectral (the scene's)", QString());
   this->Spectrum->setToolTip("F per wavelength from measured n and k, 16 samples under D65 "
                              "(docs/model.md section 7), or three RGB samples");
   form->addRow("Fresnel", this->Spectrum);
@@ -117,9 +119,12 @@ MaterialEditor::MaterialEditor(QWidget* parent)
     this->Emit();
   });
   connect(this->Spectrum, QOverload<int>::of(&QComboBox::activated), this, [this](int index) {
-    const Dispersion* data = index > 0
-      ? PresetDispersion(this->Spectrum->itemData(index).toString().toStdString())
-      : nullptr;
+    const std::string name = this->Spectrum->itemData(index).toString().toStdString();
+    if (index > 0 && name.empty())
+    {
+      return; // "the scene's": keep the material's own spectrum
+    }
+    const Dispersion* data = index > 0 ? PresetDispersion(name) : nullptr;
     this->Value.spectralCount = 0;
     if (data)
     {
@@ -256,6 +261,10 @@ void MaterialEditor::Refresh()
   if (this->Value.spectralCount == 0)
   {
     this->Spectrum->setCurrentIndex(0);
+  }
+  else if (this->Spectrum->currentIndex() == 0)
+  {
+    this->Spectrum->setCurrentIndex(this->Spectrum->count() - 1);
   }
   this->ShowModelParameters();
   this->Updating = false;

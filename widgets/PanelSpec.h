@@ -46,8 +46,14 @@ struct PanelSpec
   /// >= 0: the panel displays the per-pixel error |I - I_ref| of its image
   /// against panel `errorReference` as a heat map instead of its image.
   int errorReference = -1;
-  /// The heat map's full scale, in linear intensity.
+  /// The heat map's full scale, in linear intensity (or CIEDE2000 units).
   double errorScale = 16.0 / 255.0;
+  /// The heat map shows the CIEDE2000 colour difference (docs/model.md
+  /// eq. 7.4) instead of the luminance difference.
+  bool colourDifference = false;
+  /// >= 0: an analyser at this angle from the image's x axis in front of
+  /// the panel's camera (RenderOptions::polarizer, docs/model.md eq. 8.3).
+  double polarizer = -1.0;
 };
 
 /// What all panels share: one camera (rotate, zoom or pan in any panel moves

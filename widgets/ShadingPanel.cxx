@@ -201,6 +201,7 @@ render::RenderOptions PanelOptions(const PanelSpec& spec, const ViewState& view,
   options.polygons = spec.polygons;
   options.scan = spec.scan;
   options.scanPrecision = spec.scanPrecision;
+  options.polarizer = spec.polarizer;
   options.width = width;
   options.height = height;
   options.background = view.background;

@@ -206,6 +206,21 @@ QWidget* MainWindow::BuildControls()
       this->ReloadScene();
     }
   });
+  auto* polarizer = new QDoubleSpinBox;
+  polarizer->setObjectName("polarizer");
+  polarizer->setRange(0.0, 180.0);
+  polarizer->setDecimals(0);
+  polarizer->setSingleStep(15.0);
+  polarizer->setValue(this->Options.polarizer);
+  polarizer->setSuffix(" deg");
+  plotForm->addRow("polarization: polarizer", polarizer);
+  connect(polarizer, &QDoubleSpinBox::editingFinished, this, [this, polarizer] {
+    this->Options.polarizer = polarizer->value();
+    if (this->Current.name == "polarization")
+    {
+      this->ReloadScene();
+    }
+  });
   this->ThetaL = MakeSlider(0, 89, 45);
   plotForm->addRow("brdf: light angle", this->ThetaL);
   this->Shininess = MakeSlider(1, 200, 32);

@@ -22,6 +22,11 @@ widgets::PanelSpec Panel(const std::string& title, const PolyPtr& mesh, render::
 Scene Creases(const SceneOptions& options);
 Scene FlatConditions(const SceneOptions& options);
 Scene Scanline(const SceneOptions& options);
+/// The scenes of SceneOptics.cxx and their plots.
+Scene Polarization(const SceneOptions& options);
+Scene SpectralScene(const SceneOptions& options);
+Study PolarizationStudy();
+Study SpectralStudy();
 
 /// flat-conditions: the unit cube or the sphere around it (radius
 /// sqrt(3)/2), and the camera and light `distance` cube sides from the

@@ -270,6 +270,14 @@ Study RunStudy(const Scene& scene, const SceneOptions& options)
   {
     return FlatConditionsStudy(scene, options);
   }
+  if (scene.name == "polarization")
+  {
+    return PolarizationStudy();
+  }
+  if (scene.name == "spectral")
+  {
+    return SpectralStudy();
+  }
   return {};
 }
 

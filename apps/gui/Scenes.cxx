@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The ten scenes. Each is a list of panels and a view; the text cites
+// The scenes. Each is a list of panels and a view; the text cites
 // docs/model.md's equations.
 #include "Scenes.h"
 
@@ -39,6 +39,8 @@ const std::vector<SceneInfo>& SceneList()
     { "moon", "a sphere lit from behind the viewer: Lambert vs Lommel-Seeliger" },
     { "metal", "Cook-Torrance gold and copper vs Phong plastic at grazing light" },
     { "brdf", "the BRDF lobes in the plane of incidence, parameters live" },
+    { "polarization", "a polarizer turned in front of glass and gold: Brewster's angle" },
+    { "spectral", "gold and copper with three RGB samples against their measured spectra" },
   };
   return list;
 }
@@ -474,7 +476,8 @@ Scene MakeScene(const std::string& name, const SceneOptions& options)
     { "orientation", Orientation }, { "shared-vertices", SharedVertices },
     { "silhouette", Silhouette }, { "normals", Normals }, { "creases", Creases },
     { "flat-conditions", FlatConditions }, { "scanline", Scanline }, { "moon", Moon },
-    { "metal", Metal }, { "brdf", Brdf } };
+    { "metal", Metal }, { "brdf", Brdf }, { "polarization", Polarization },
+    { "spectral", SpectralScene } };
   const auto it = makers.find(name);
   if (it == makers.end())
   {

@@ -59,6 +59,8 @@ struct SceneOptions
   /// flat-conditions: the camera's and the light's distance from the
   /// object's centre, in circumradii.
   double distance = 3.0;
+  /// polarization: the analyser's angle from the image's x axis (degrees).
+  double polarizer = 0.0;
 };
 
 struct Scene

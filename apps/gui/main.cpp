@@ -32,6 +32,7 @@ namespace
 const char* kUsage =
   "usage: shadinglab-gui [--scene NAME] [INPUT] [--backend gpu|cpu] [--size WxH]\n"
   "                      [--variant corrugated|isosurface] [--rotation DEG] [--distance R]\n"
+  "                      [--polarizer DEG]\n"
   "                      [--screenshot FILE.png] [--profile FILE.csv] [--color-by ARRAY]\n"
   "                      [--nonlinear-subdivision N]\n"
   "       shadinglab-gui --list-scenes | --version\n"
@@ -131,6 +132,16 @@ int main(int argc, char** argv)
               options.distance <= gui::kMaxConditionsDistance))
         {
           return Fail("--distance must be a number of radii in [1.5, 10000] (got '" + v + "')");
+        }
+      }
+      else if (a == "--polarizer")
+      {
+        const std::string v = value("--polarizer");
+        char* end = nullptr;
+        options.polarizer = std::strtod(v.c_str(), &end);
+        if (*end || !(options.polarizer >= 0.0 && options.polarizer <= 180.0))
+        {
+          return Fail("--polarizer must be an angle in [0, 180] degrees (got '" + v + "')");
         }
       }
       else if (a == "--rotation")

@@ -8,6 +8,7 @@
 #include "ComparisonWidget.h"
 #include "MainWindow.h"
 #include "MaterialEditor.h"
+#include "shadinglab/model/Spectrum.h"
 #include "ShadingPanel.h"
 
 #include "VtkCamera.h"
@@ -137,6 +138,8 @@ private slots:
   void ColourByDataOnBothBackends();
   void MaterialEditorShowsTheModelsParameters();
   void FlatConditionsErrorVanishesForTheCubeOnly();
+  void PolarizationSceneShowsBrewster();
+  void SpectralSceneShowsTheColourDifference();
   void CreasesAveragedCorrugationShadesFlat();
   void ScanlineInspectorShowsTheRenderersNumbers();
 };
@@ -907,6 +910,71 @@ void ExplorerGLTest::FlatConditionsErrorVanishesForTheCubeOnly()
   }
   // The heat maps show it too: the cube's error panel is not blank near.
   QCOMPARE(window->Comparison()->PanelCount(), 6);
+}
+
+namespace
+{
+/// Mean luminance of a panel's covered pixels (display values).
+double MeanLuminance(const render::Image& image)
+{
+  double sum = 0;
+  long n = 0;
+  for (size_t p = 0; p < image.covered.size(); ++p)
+  {
+    if (image.covered[p])
+    {
+      sum += render::Luminance(Vec3<double>(image.rgb[3 * p], image.rgb[3 * p + 1], image.rgb[3 * p + 2]));
+      ++n;
+    }
+  }
+  return n ? sum / n : 0.0;
+}
+} // namespace
+
+// The glass's highlight, near Brewster's angle and s-polarized (vertical in
+// the image), passes a polarizer at 90 degrees and is removed by the crossed
+// one at 0; the plot's DoLP peaks at 1 at its marker, Brewster's angle.
+void ExplorerGLTest::PolarizationSceneShowsBrewster()
+{
+  auto window = Open("polarization", render::Backend::CPU);
+  widgets::ComparisonWidget* view = window->Comparison();
+  QCOMPARE(view->PanelCount(), 4);
+  // --polarizer 0 by default: panel 2 at 0 degrees, panel 3 crossed (90).
+  const double none = MeanLuminance(view->Panel(0)->Snapshot());
+  const double at0 = MeanLuminance(view->Panel(1)->Snapshot());
+  const double at90 = MeanLuminance(view->Panel(2)->Snapshot());
+  QVERIFY2(at90 > 1.5 * at0, qPrintable(QString("%1 vs %2").arg(at90).arg(at0)));
+  QVERIFY(none > at90 && none > at0);
+  const std::string csv = window->PlotCsv();
+  const auto dolp = StudySeries(csv, "glass DoLP");
+  QVERIFY2(dolp.size() == 90, csv.c_str());
+  auto peak = std::max_element(dolp.begin(), dolp.end(),
+    [](const auto& a, const auto& b) { return a.second < b.second; });
+  QVERIFY2(std::abs(peak->first - 57.0) <= 1.0 && peak->second > 0.999,
+    qPrintable(QString("%1: %2").arg(peak->first).arg(peak->second)));
+}
+
+// Gold with three RGB samples against its spectrum: a visible colour
+// difference (the heat map's CIEDE2000 well above 1 where the highlight is).
+void ExplorerGLTest::SpectralSceneShowsTheColourDifference()
+{
+  auto window = Open("spectral", render::Backend::CPU);
+  widgets::ComparisonWidget* view = window->Comparison();
+  QCOMPARE(view->PanelCount(), 5);
+  const render::Image rgb = view->Panel(0)->Snapshot(), spectral = view->Panel(1)->Snapshot();
+  double worst = 0;
+  for (size_t p = 0; p < rgb.covered.size(); ++p)
+  {
+    if (rgb.covered[p] && spectral.covered[p])
+    {
+      worst = std::max(worst,
+        DeltaE2000(Vec3<double>(rgb.rgb[3 * p], rgb.rgb[3 * p + 1], rgb.rgb[3 * p + 2]),
+          Vec3<double>(spectral.rgb[3 * p], spectral.rgb[3 * p + 1], spectral.rgb[3 * p + 2])));
+    }
+  }
+  QVERIFY2(worst > 2.0, qPrintable(QString::number(worst)));
+  const auto n = StudySeries(window->PlotCsv(), "gold n");
+  QCOMPARE(static_cast<int>(n.size()), 81);
 }
 
 // The corrugation with averaged normals shades (nearly) flat across its

@@ -312,7 +312,30 @@ check(difference(gold_spectral, gold_title) > 0.3 and spectral_mean <= 1.0 and
       'Spectral gold differs from RGB gold (%.2f) and matches the standalone renderer '
       '(mean %.3f over %d pixels)' % (difference(gold_spectral, gold_title), spectral_mean,
                                        mask.sum()))
+# A polarizer in front of the camera (docs/model.md section 8): glass lit
+# from the side, its highlight s-polarized; crossed polarizers give
+# different pictures, and -1 (none) gives back the unpolarized one exactly.
 rep.Spectral = 0
+rep.MaterialPreset = 'Glass'
+headlight.Intensity = 0.0
+side = AddLight(view=view)  # from the left, nearly at right angles to the view
+side.Coords = 'Camera'
+side.Position = [-1.0, 0.0, 0.15]
+side.FocalPoint = [0.0, 0.0, 0.0]
+side.Intensity = 3.0
+unpolarized = shot('glass_unpolarized')
+rep.Polarizer = 0
+at0 = shot('glass_polarizer_0')
+rep.Polarizer = 90
+at90 = shot('glass_polarizer_90')
+rep.Polarizer = -1
+again = shot('glass_unpolarized_again')
+check(difference(at0, at90) > 0.3 and difference(unpolarized, at0) > 1 and
+      abs(again - unpolarized).max() == 0,
+      'Polarizer 0 and 90 differ (%.2f), both darker than none (%.2f), -1 restores it (max %d)'
+      % (difference(at0, at90), difference(unpolarized, at0), abs(again - unpolarized).max()))
+RemoveLight(side)
+headlight.Intensity = 1.0
 rep.MaterialPreset = 'Custom'
 custom = shot('preset_custom')
 check(abs(gold_title - gold_kebab).max() == 0 and difference(gold_title, custom) > 5,

@@ -87,32 +87,8 @@ float F_Dielectric(float cosTheta_i, float eta)
 
 // Exact Fresnel of a conductor with complex index eta + i k (Born & Wolf
 // sec. 14.2; docs/model.md eq. 1.9), in real arithmetic: a^2 + b^2 and a
-// with n cos(theta_t) = a + i b. The same terms as F_Conductor in Fresnel.h.
-float F_Conductor(float cosTheta_i, float eta, float k)
-{
-  if (k == 0.0)
-  {
-    return F_Dielectric(cosTheta_i, eta);
-  }
-  cosTheta_i = clamp(cosTheta_i, 0.0, 1.0);
-  float cos2Theta_i = cosTheta_i * cosTheta_i;
-  float sin2Theta_i = max(0.0, 1.0 - cos2Theta_i);
-  float t0 = eta * eta - k * k - sin2Theta_i;
-  float etaK2 = eta * eta * k * k;
-  float a2plusb2 = sqrt(t0 * t0 + 4.0 * etaK2);
-  float sum = a2plusb2 + abs(t0);
-  float a = sqrt(t0 >= 0.0 ? 0.5 * sum : 2.0 * etaK2 / sum);
-  float t1 = a2plusb2 + cos2Theta_i;
-  float t2 = 2.0 * cosTheta_i * a;
-  float Rs = (t1 - t2) / max(t1 + t2, SL_TINY_DENOMINATOR);
-  float t3 = cos2Theta_i * a2plusb2 + sin2Theta_i * sin2Theta_i;
-  float t4 = t2 * sin2Theta_i;
-  float Rp = Rs * (t3 - t4) / (t3 + t4);
-  return 0.5 * (Rs + Rp);
-}
-
-// Rs and Rp of a conductor (k = 0: a dielectric): F_ConductorSP in
-// Fresnel.h (docs/model.md eq. 8.1).
+// with n cos(theta_t) = a + i b: Rs and Rp (eq. 8.1; k = 0 a dielectric),
+// F_ConductorSP in Fresnel.h; F_Conductor below is their mean.
 void F_ConductorSP(float cosTheta_i, float eta, float k, out float Rs, out float Rp)
 {
   cosTheta_i = clamp(cosTheta_i, 0.0, 1.0);
@@ -129,6 +105,17 @@ void F_ConductorSP(float cosTheta_i, float eta, float k, out float Rs, out float
   float t3 = cos2Theta_i * a2plusb2 + sin2Theta_i * sin2Theta_i;
   float t4 = t2 * sin2Theta_i;
   Rp = Rs * (t3 - t4) / (t3 + t4);
+}
+
+float F_Conductor(float cosTheta_i, float eta, float k)
+{
+  if (k == 0.0)
+  {
+    return F_Dielectric(cosTheta_i, eta);
+  }
+  float Rs, Rp;
+  F_ConductorSP(cosTheta_i, eta, k, Rs, Rp);
+  return 0.5 * (Rs + Rp);
 }
 
 // A = (Rs + Rp) / 2 and B = (Rs - Rp) / 2 per channel (eq. 8.2): F_RGB_SP.

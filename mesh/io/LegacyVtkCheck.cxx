@@ -41,11 +41,7 @@ namespace
 
 using namespace legacy_vtk;
 
-/// Largest number of implicit points of a STRUCTURED_POINTS or
-/// RECTILINEAR_GRID: their points are not stored in the file, so the file's
-/// size does not bound them; 2^27 (134M) points is a 512^3 volume, whose
-/// boundary surface is already 1.6M quads.
-constexpr long long kMaxImplicitPoints = 1LL << 27;
+using precheck::kMaxImplicitPoints;
 
 using precheck::kMaxComponents;
 

@@ -17,6 +17,12 @@ namespace shadinglab::precheck
 /// and beyond any mesh this tool renders in its 24 GiB budget; a larger
 /// count is a corrupt header.
 constexpr long long kMaxElementCount = (1LL << 31) - 1;
+/// Largest number of implicit points of an image or rectilinear grid
+/// (legacy STRUCTURED_POINTS / RECTILINEAR_GRID, XML ImageData /
+/// RectilinearGrid): their points are not stored in the file, so the file's
+/// size does not bound them; 2^27 (134M) points is a 512^3 volume, whose
+/// boundary surface is already 1.6M quads.
+constexpr long long kMaxImplicitPoints = 1LL << 27;
 
 /// Components per tuple of an array: VTK writes at most the 9 of a tensor in
 /// practice; 1024 keeps a corrupt count from multiplying a tuple count into

@@ -45,6 +45,7 @@ namespace
 
 using precheck::kMaxComponents;
 using precheck::kMaxElementCount;
+using precheck::kMaxImplicitPoints;
 
 /// Largest uncompressed block of a compressed array: VTK's writer uses
 /// 32 KiB blocks by default and at most 2^31 - 1 bytes (int sizes inside).
@@ -96,6 +97,20 @@ public:
     if (!data)
     {
       this->Fail("no <" + this->Type + "> element");
+    }
+    // The whole extent sizes the reader's output (its update extent): an
+    // image's or rectilinear grid's points are not in the file, so the
+    // file's size does not bound them (fuzzing found a 2e9^3 WholeExtent
+    // over a small Piece make the surface filter ask for exabytes).
+    if (const char* whole = data->GetAttribute("WholeExtent"))
+    {
+      long long points = 0, cells = 0;
+      this->ExtentCounts(whole, points, cells, "WholeExtent");
+      if (this->Type != "StructuredGrid" && points > kMaxImplicitPoints)
+      {
+        this->Fail("WholeExtent=\"" + std::string(whole) + "\" has " + std::to_string(points) +
+          " implicit points, more than " + std::to_string(kMaxImplicitPoints));
+      }
     }
     this->FindAppendedData();
     for (int i = 0; i < data->GetNumberOfNestedElements(); ++i)
@@ -202,7 +217,8 @@ private:
 
   /// A structured piece's Extent="x0 x1 y0 y1 z0 z1": its point and cell
   /// counts, each at most kMaxElementCount.
-  void ExtentCounts(const char* extent, long long& points, long long& cells) const
+  void ExtentCounts(const char* extent, long long& points, long long& cells,
+    const char* what = "Piece Extent") const
   {
     long long e[6];
     const char* p = extent;
@@ -213,7 +229,7 @@ private:
       v = std::strtoll(p, &end, 10);
       if (end == p || errno != 0 || v < -kMaxElementCount || v > kMaxElementCount)
       {
-        this->Fail(std::string("Piece Extent=\"") + extent + "\"");
+        this->Fail(std::string(what) + "=\"" + extent + "\"");
       }
       p = end;
     }
@@ -224,7 +240,8 @@ private:
       const long long d = e[2 * a + 1] - e[2 * a];
       if (d < 0 || points > kMaxElementCount / (d + 1))
       {
-        this->Fail(std::string("Piece Extent=\"") + extent + "\"");
+        this->Fail(std::string(what) + "=\"" + extent + "\": " +
+          (d < 0 ? "decreasing" : "more than " + std::to_string(kMaxElementCount) + " points"));
       }
       points *= d + 1;
       cells *= std::max(d, 1LL);
@@ -241,6 +258,11 @@ private:
     {
       long long structuredCells = 0;
       this->ExtentCounts(extent, points, structuredCells);
+      if (this->Type != "StructuredGrid" && points > kMaxImplicitPoints)
+      {
+        this->Fail("Piece Extent=\"" + std::string(extent) + "\" has " + std::to_string(points) +
+          " implicit points, more than " + std::to_string(kMaxImplicitPoints));
+      }
       cells = structuredCells;
       if (vtkXMLDataElement* e = piece->FindNestedElementWithName("Coordinates"))
       {

@@ -178,6 +178,14 @@ write('vti_huge_extent.vti', IMG % ('0 2000000000 0 2000000000 0 2000000000',
                                     '0 2000000000 0 2000000000 0 2000000000', ''))
 write('vti_short_array.vti', IMG % ('0 2 0 2 0 2', '0 2 0 2 0 2',
                                     '<DataArray type="Float32" Name="s" format="ascii">1 2 3</DataArray>'))
+# A small piece inside a 2e9^3 whole extent: the reader's output is sized by
+# the whole extent (a fuzzer find: the surface filter asked for exabytes).
+write('vti_huge_whole_extent.vti', '<VTKFile type="ImageData" version="1.0"><ImageData '
+      'WholeExtent="0 2000000000 0 2000000000 0 2000000000" Origin="0 0 0" Spacing="1 1 1">'
+      '<Piece Extent="0 2 0 2 0 0"><PointData></PointData></Piece></ImageData></VTKFile>\n')
+write('vti_huge_implicit_piece.vti', '<VTKFile type="ImageData" version="1.0"><ImageData '
+      'WholeExtent="0 1000 0 1000 0 1000" Origin="0 0 0" Spacing="1 1 1">'
+      '<Piece Extent="0 1000 0 1000 0 1000"><PointData></PointData></Piece></ImageData></VTKFile>\n')
 write('vti_garbage_extent.vti', IMG % ('a b c', 'a b c d e f', ''))
 write('vts_no_points.vts', '<VTKFile type="StructuredGrid" version="1.0"><StructuredGrid WholeExtent="0 1 0 1 0 0">'
       '<Piece Extent="0 1 0 1 0 0"></Piece></StructuredGrid></VTKFile>\n')

@@ -56,9 +56,10 @@ MaterialEditor::MaterialEditor(QWidget* parent)
   this->Lobes->addItem("2 lobes (mixture)");
   form->addRow("Roughness", this->Lobes);
   this->Spectrum->addItem("RGB: eta, k per channel");
-  for (const char* name : { "gold", "silver", "copper", "aluminium", "glass", "water" })
+  for (const std::string& name : PresetDispersionNames())
   {
-    this->Spectrum->addItem(QString("spectral: %1 (measured)").arg(name), QString(name));
+    const QString q = QString::fromStdString(name);
+    this->Spectrum->addItem(QString("spectral: %1 (measured)").arg(q), q);
   }
   // Shown when a scene's material came with a spectrum of its own.
   this->Spectrum->addItem("spectral (the scene's)", QString());

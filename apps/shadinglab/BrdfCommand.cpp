@@ -6,6 +6,7 @@
 #include "shadinglab/model/Fresnel.h"
 #include "shadinglab/model/Shading.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <iostream>
@@ -52,6 +53,11 @@ enum class Term
   Fp,
   DoLP
 };
+
+/// --term's spellings.
+const std::pair<const char*, Term> kTerms[] = { { "brdf", Term::Brdf }, { "F", Term::F },
+  { "D", Term::D }, { "G", Term::G }, { "Fs", Term::Fs }, { "Fp", Term::Fp },
+  { "dolp", Term::DoLP } };
 
 Vec3<double> DirectionFromAngles(double thetaDeg, double phiDeg)
 {
@@ -101,41 +107,19 @@ int RunBrdf(int argc, char** argv)
   }
   const Material<double> material = MaterialFromArguments(args);
 
-  Term term = Term::Brdf;
   const std::string termName = args.Get("term", "brdf");
-  if (termName == "brdf")
+  const auto found = std::find_if(std::begin(kTerms), std::end(kTerms),
+    [&](const std::pair<const char*, Term>& t) { return termName == t.first; });
+  if (found == std::end(kTerms))
   {
-    term = Term::Brdf;
+    std::string names;
+    for (const auto& t : kTerms)
+    {
+      names += (names.empty() ? "" : ", ") + std::string(t.first);
+    }
+    throw UsageError("unknown --term '" + termName + "' (expected " + names + ")");
   }
-  else if (termName == "F")
-  {
-    term = Term::F;
-  }
-  else if (termName == "D")
-  {
-    term = Term::D;
-  }
-  else if (termName == "G")
-  {
-    term = Term::G;
-  }
-  else if (termName == "Fs")
-  {
-    term = Term::Fs;
-  }
-  else if (termName == "Fp")
-  {
-    term = Term::Fp;
-  }
-  else if (termName == "dolp")
-  {
-    term = Term::DoLP;
-  }
-  else
-  {
-    throw UsageError(
-      "unknown --term '" + termName + "' (expected brdf, F, D, G, Fs, Fp or dolp)");
-  }
+  const Term term = found->second;
   if (term != Term::Brdf && material.model != ReflectanceModel::CookTorrance)
   {
     throw UsageError("--term " + termName + " is a Cook-Torrance term: use --model cook-torrance");

@@ -82,6 +82,7 @@ struct vtkShadingLabPolyDataMapper::Internals
   std::string CpuFailure; ///< the last reason the CPU could not draw (said once)
   std::string BackendChoice = "gpu"; ///< the last render's backend and why
   std::string GlRenderer;            ///< GL_RENDERER of RendererOf
+  bool SoftwareGl = false;           ///< GlRenderer names a software rasterizer
   const vtkRenderWindow* RendererOf = nullptr;
 };
 
@@ -439,12 +440,13 @@ bool vtkShadingLabPolyDataMapper::ChooseCpu(vtkRenderer* ren)
       in.GlRenderer = begin == std::string::npos ? "" : text.substr(begin, end - begin);
     }
     in.RendererOf = ren->GetRenderWindow();
+    std::string lower = in.GlRenderer;
+    std::transform(lower.begin(), lower.end(), lower.begin(),
+      [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    in.SoftwareGl = lower.find("llvmpipe") != std::string::npos ||
+      lower.find("softpipe") != std::string::npos || lower.find("swr") != std::string::npos;
   }
-  std::string lower = in.GlRenderer;
-  std::transform(lower.begin(), lower.end(), lower.begin(),
-    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  const bool software = lower.find("llvmpipe") != std::string::npos ||
-    lower.find("softpipe") != std::string::npos || lower.find("swr") != std::string::npos;
+  const bool software = in.SoftwareGl;
   vtkPolyData* input = this->GetInput();
   const long long polygons = input ? static_cast<long long>(input->GetNumberOfPolys()) : 0;
   const bool cpu = software && polygons >= sl::render::kAutoCpuMinPolygons;
@@ -750,9 +752,9 @@ void vtkShadingLabPolyDataMapper::SetMapperShaderParameters(
   const float viewport[4] = { static_cast<float>(vx), static_cast<float>(vy), static_cast<float>(vw),
     static_cast<float>(vh) };
   block.insert(block.end(), viewport, viewport + 4);
-  float spectralEta[sl::kSpectralSamples], spectralK[sl::kSpectralSamples],
-    spectralWeight[3 * sl::kSpectralSamples];
-  for (int i = 0; i < sl::kSpectralSamples; ++i)
+  float spectralEta[sl::kSpectralSamples] = {}, spectralK[sl::kSpectralSamples] = {},
+    spectralWeight[3 * sl::kSpectralSamples] = {};
+  for (int i = 0; i < m.spectralCount && i < sl::kSpectralSamples; ++i)
   {
     spectralEta[i] = static_cast<float>(m.spectralEta[i]);
     spectralK[i] = static_cast<float>(m.spectralK[i]);

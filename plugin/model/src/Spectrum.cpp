@@ -2,6 +2,7 @@
 #include "shadinglab/model/Spectrum.h"
 
 #include "shadinglab/model/Fresnel.h"
+#include "shadinglab/model/Materials.h"
 
 #include <algorithm>
 #include <array>
@@ -354,6 +355,22 @@ const Dispersion* PresetDispersion(const std::string& preset)
   }();
   const auto it = table.find(preset == "aluminum" ? "aluminium" : preset);
   return it == table.end() ? nullptr : &it->second;
+}
+
+const std::vector<std::string>& PresetDispersionNames()
+{
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> out;
+    for (const MaterialPreset& preset : MaterialPresets())
+    {
+      if (PresetDispersion(preset.name))
+      {
+        out.push_back(preset.name);
+      }
+    }
+    return out;
+  }();
+  return names;
 }
 
 const SpectralBasis& SpectralBasisD65(int count)

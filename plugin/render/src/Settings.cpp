@@ -2,8 +2,6 @@
 // The settings table: one row a setting (Settings.h says what reads it).
 #include "shadinglab/render/Settings.h"
 
-#include <fstream>
-
 #include "shadinglab/render/ColorMap.h"
 
 #include "shadinglab/model/Materials.h"
@@ -176,7 +174,8 @@ void RenderRows(std::vector<SettingRow>& t)
     r.choices = { { "gpu", "GPU" }, { "cpu", "CPU" }, { "auto", "Auto" } };
     r.doc = "who draws the mapper's pixels: the GLSL shaders, the CPU renderer handing colour "
             "and depth to OpenGL (no GPU needed), or auto: CPU where OpenGL is a software "
-            "rasterizer and the mesh has 30,000 polygons or more";
+            "rasterizer and the mesh has " + std::to_string(kAutoCpuMinPolygons) +
+      " polygons or more";
     r.frontEnds = kParaView | kMapper;
     r.metavar = "B";
     r.set = [](Settings& s, const SettingValue& v) {
@@ -586,8 +585,8 @@ void MaterialRows(std::vector<SettingRow>& t)
   {
     SettingRow r = Row("spectral", "Spectral", "Spectral Fresnel", G::Material, K::Flag);
     r.doc = "Cook-Torrance's F per wavelength from measured n and k (a preset's, or --nk's), "
-            "integrated under D65 against the CIE 1931 observer to linear sRGB with 16 "
-            "samples (docs/model.md section 7); replaces eta and k";
+            "integrated under D65 against the CIE 1931 observer to linear sRGB with " +
+      std::to_string(kSpectralSamples) + " samples (docs/model.md section 7); replaces eta and k";
     r.frontEnds = kCli | kParaView | kMapper | kExplorer;
     r.set = [](Settings& s, const SettingValue& v) { s.spectral = v.numbers[0] != 0; };
     r.get = [](const Settings& s) { return Number(s.spectral ? 1 : 0); };
@@ -865,9 +864,14 @@ std::string ResolveSpectral(Settings& settings)
   const Dispersion* data = settings.nk ? settings.nk.get() : PresetDispersion(settings.preset);
   if (!data)
   {
+    std::string presets;
+    for (const std::string& name : PresetDispersionNames())
+    {
+      presets += (presets.empty() ? "" : ", ") + name;
+    }
     return settings.nkFile.empty()
-      ? "spectral Fresnel needs measured optical data: --material gold, silver, copper, "
-        "aluminium, glass or water, or --nk FILE.yml"
+      ? "spectral Fresnel needs measured optical data: --material " + presets +
+        ", or --nk FILE.yml"
       : "spectral Fresnel: --nk " + settings.nkFile + " has not been read";
   }
   return SetSpectral(settings.material, *data);

@@ -139,8 +139,10 @@ struct Material
     out.eta = Vec3<U>(eta);
     out.k = Vec3<U>(k);
     out.variant = variant;
+    // Only the samples in use: the wide kernel casts the material to
+    // every lane once per pixel queue.
     out.spectralCount = spectralCount;
-    for (int i = 0; i < kSpectralSamples; ++i)
+    for (int i = 0; i < spectralCount && i < kSpectralSamples; ++i)
     {
       out.spectralEta[i] = static_cast<U>(spectralEta[i]);
       out.spectralK[i] = static_cast<U>(spectralK[i]);

@@ -52,6 +52,8 @@ std::string ParseDispersion(const std::string& text, const std::string& name, Di
 /// The measured data behind a preset (gold, silver, copper, aluminium, glass,
 /// water), or nullptr (plastic, custom).
 const Dispersion* PresetDispersion(const std::string& preset);
+/// The presets that have measured data, in the order of MaterialPresets().
+const std::vector<std::string>& PresetDispersionNames();
 
 /**
  * The weights that turn a reflectance spectrum sampled at `wavelength[i]`

@@ -50,6 +50,12 @@ render::ColorMap HueWheel()
   return map;
 }
 
+/// s0 .. s3: one Stokes component, a .vti of its own.
+bool IsStokesComponent(const std::string& kind)
+{
+  return kind.size() == 2 && kind[0] == 's' && kind[1] >= '0' && kind[1] <= '3';
+}
+
 } // namespace
 
 bool IsPolarizationOutput(const std::string& kind)
@@ -58,23 +64,33 @@ bool IsPolarizationOutput(const std::string& kind)
   {
     return false;
   }
-  if (kind == "dolp" || kind == "aop" || kind == "stokes")
+  if (kind == "dolp" || kind == "aop" || kind == "stokes" || IsStokesComponent(kind))
   {
     return true;
   }
-  throw UsageError("--output must be intensity, dolp, aop or stokes (got '" + kind + "')");
+  throw UsageError(
+    "--output must be intensity, s0, s1, s2, s3, stokes, dolp or aop (got '" + kind + "')");
 }
 
 double WritePolarizationOutput(render::Renderer& renderer, const render::Scene& scene,
   const render::RenderOptions& options, const std::string& kind, const std::string& path)
 {
   // eq. 8.5: I(theta) = (S0 + S1 cos 2 theta + S2 sin 2 theta) / 2, so
-  // S0 = I0 + I90, S1 = I0 - I90, S2 = I45 - I135.
-  render::Image frames[4];
-  for (int a = 0; a < 4; ++a)
+  // S0 = I0 + I90, S1 = I0 - I90, S2 = I45 - I135; and through the circular
+  // analyser I_R = (S0 + S3) / 2, so S3 = 2 I_R - S0.
+  const bool numbers = kind == "stokes" || IsStokesComponent(kind);
+  const std::string ext = path.size() >= 4 ? path.substr(path.size() - 4) : std::string();
+  if (numbers != (ext == ".vti"))
+  {
+    throw UsageError("--output " + kind + " writes " + (numbers ? "a .vti" : "a .png") +
+      " file (got --out " + path + ")");
+  }
+  render::Image frames[5];
+  for (int a = 0; a < 5; ++a)
   {
     render::RenderOptions analysed = options;
-    analysed.polarizer = 45.0 * a;
+    analysed.polarizer = a < 4 ? 45.0 * a : 0.0;
+    analysed.circularAnalyser = a == 4;
     frames[a] = RenderOrExplain(renderer, scene, analysed, nullptr, "");
     if (frames[a].displayApplied)
     {
@@ -83,8 +99,8 @@ double WritePolarizationOutput(render::Renderer& renderer, const render::Scene& 
   }
   const int W = frames[0].width, H = frames[0].height;
   const size_t n = static_cast<size_t>(W) * H;
-  std::vector<float> s[3] = { std::vector<float>(3 * n), std::vector<float>(3 * n),
-    std::vector<float>(3 * n) };
+  std::vector<float> s[4] = { std::vector<float>(3 * n), std::vector<float>(3 * n),
+    std::vector<float>(3 * n), std::vector<float>(3 * n) };
   // NaN where no light arrives (S0 <= kMinStokesS0): neither quantity exists.
   std::vector<float> dolp(n, std::nanf("")), aop(n, std::nanf(""));
   double dolpSum = 0;
@@ -97,6 +113,7 @@ double WritePolarizationOutput(render::Renderer& renderer, const render::Scene& 
       s[0][i] = frames[0].rgb[i] + frames[2].rgb[i];
       s[1][i] = frames[0].rgb[i] - frames[2].rgb[i];
       s[2][i] = frames[1].rgb[i] - frames[3].rgb[i];
+      s[3][i] = 2.0f * frames[4].rgb[i] - s[0][i];
     }
     const double y0 = render::Luminance(Vec3<double>(s[0][3 * p], s[0][3 * p + 1], s[0][3 * p + 2]));
     const double y1 = render::Luminance(Vec3<double>(s[1][3 * p], s[1][3 * p + 1], s[1][3 * p + 2]));
@@ -109,7 +126,7 @@ double WritePolarizationOutput(render::Renderer& renderer, const render::Scene& 
       ++covered;
     }
   }
-  if (kind == "stokes")
+  if (kind == "stokes" || IsStokesComponent(kind))
   {
     vtkNew<vtkImageData> image;
     image->SetDimensions(W, H, 1);
@@ -133,11 +150,22 @@ double WritePolarizationOutput(render::Renderer& renderer, const render::Scene& 
       }
       image->GetPointData()->AddArray(array);
     };
-    add("S0", s[0], 3);
-    add("S1", s[1], 3);
-    add("S2", s[2], 3);
-    add("DoLP", dolp, 1);
-    add("AoP", aop, 1);
+    const char* names[4] = { "S0", "S1", "S2", "S3" };
+    if (kind == "stokes")
+    {
+      for (int k = 0; k < 4; ++k)
+      {
+        add(names[k], s[k], 3);
+      }
+      add("DoLP", dolp, 1);
+      add("AoP", aop, 1);
+    }
+    else
+    {
+      const int k = kind[1] - '0';
+      add(names[k], s[k], 3);
+      image->GetPointData()->SetActiveScalars(names[k]);
+    }
     vtkNew<vtkXMLImageDataWriter> writer;
     writer->SetFileName(path.c_str());
     writer->SetInputData(image);

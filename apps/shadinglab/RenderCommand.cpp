@@ -27,7 +27,8 @@ const char* kRenderHelp =
   "  --output KIND       intensity (default: the picture), or what a polarization camera\n"
   "                      measures through analysers at 0/45/90/135 degrees (docs/model.md\n"
   "                      eq. 8.5; CPU renderer): dolp or aop (false colour PNG with a legend),\n"
-  "                      stokes (a .vti of S0, S1, S2 per channel and DoLP, AoP)\n"
+  "                      s0, s1, s2 or s3 (a .vti of that Stokes component per channel),\n"
+  "                      stokes (a .vti of S0..S3 per channel and DoLP, AoP)\n"
   "With --color-by the PNG carries a colour legend at its right edge.\n";
 
 /// Covered pixels with a channel at 255: where the display transform
@@ -70,7 +71,7 @@ int RunRender(int argc, char** argv)
     MakeRenderer(polarization ? "cpu" : request->backend, "render", autoNotice);
   if (polarization)
   {
-    const std::string path = args.Get("out", output == "stokes" ? "stokes.vti" : "out.png");
+    const std::string path = args.Get("out", output == "dolp" || output == "aop" ? "out.png" : output + ".vti");
     const double meanDolp =
       WritePolarizationOutput(*renderer, request->scene, options, output, path);
     if (args.Has("stats"))

@@ -112,7 +112,8 @@ namespace
 auto ModifyingPart(const sl::render::Settings& s)
 {
   const sl::Material<double>& m = s.material;
-  return std::make_tuple(m.model, m.ks > 0, m.lobeCount, m.IsConductor(), m.spectralCount > 0, s.render.polarizer >= 0, s.render.mode,
+  return std::make_tuple(m.model, m.ks > 0, m.lobeCount, m.IsConductor(), m.spectralCount > 0, s.render.polarizer >= 0,
+    s.render.lightPolarizer >= 0, s.render.mode,
     s.render.interpolation, s.render.display, s.render.maxError, s.normals.weighting, s.normals.featureAngle,
     s.normals.recompute);
 }
@@ -318,6 +319,7 @@ std::string vtkShadingLabPolyDataMapper::Variant(vtkRenderer* ren) const
     << "#define SL_CONDUCTOR " << (m.IsConductor() ? 1 : 0) << "\n"
     << "#define SL_SPECTRAL " << (m.spectralCount > 0 ? 1 : 0) << "\n"
     << "#define SL_ANALYSER " << (this->Internal->Settings.render.polarizer >= 0 ? 1 : 0) << "\n"
+    << "#define SL_LIGHT_POLARIZER " << (this->Internal->Settings.render.lightPolarizer >= 0 ? 1 : 0) << "\n"
     << "#define SL_HEADLIGHT " << (headlightOnly ? 1 : 0) << "\n"
     << "#define SL_DISPLAY " << static_cast<int>(this->Internal->Settings.render.display) << "\n"
     << "#define SL_INTERP " << ((this->Internal->Settings.render.interpolation == sl::render::InterpolationSpace::Perspective) ? "smooth" : "noperspective") << "\n";
@@ -711,10 +713,13 @@ void vtkShadingLabPolyDataMapper::SetMapperShaderParameters(
     {
       lightVector[4 * j + c] = static_cast<float>(v[c]);
     }
-    // I_L dw with the model's solid angle convention (dw = pi).
-    irradiance[3 * j] = static_cast<float>(light.intensity.x * light.solidAngle);
-    irradiance[3 * j + 1] = static_cast<float>(light.intensity.y * light.solidAngle);
-    irradiance[3 * j + 2] = static_cast<float>(light.intensity.z * light.solidAngle);
+    // I_L dw with the model's solid angle convention (dw = pi), through
+    // the lights' polarizer when there is one (Shading.h LightPolarizer).
+    const double passed = light.solidAngle *
+      (settings.render.lightPolarizer >= 0 ? sl::kPolarizerTransmittance<double> : 1.0);
+    irradiance[3 * j] = static_cast<float>(light.intensity.x * passed);
+    irradiance[3 * j + 1] = static_cast<float>(light.intensity.y * passed);
+    irradiance[3 * j + 2] = static_cast<float>(light.intensity.z * passed);
   }
   block.insert(block.end(), lightVector, lightVector + 4 * sl::kMaxLights);
   block.insert(block.end(), irradiance, irradiance + 3 * sl::kMaxLights);
@@ -763,10 +768,17 @@ void vtkShadingLabPolyDataMapper::SetMapperShaderParameters(
       spectralWeight[3 * i + c] = static_cast<float>(m.spectralWeight[i][c]);
     }
   }
+  // The analyser's row and the lights' polarizer axis in view coordinates
+  // (x right, y up: the image's axes; Shading.h Analyser, LightPolarizer).
   const double theta = 2.0 * settings.render.polarizer * sl::kPi<double> / 180.0;
-  const float analyser[2] = { static_cast<float>(std::cos(theta)),
-    static_cast<float>(std::sin(theta)) };
-  block.insert(block.end(), analyser, analyser + 2);
+  const bool circular = settings.render.circularAnalyser;
+  const float analyser[3] = { circular ? 0.0f : static_cast<float>(std::cos(theta)),
+    circular ? 0.0f : static_cast<float>(std::sin(theta)), circular ? 1.0f : 0.0f };
+  block.insert(block.end(), analyser, analyser + 3);
+  const double psi = settings.render.lightPolarizer * sl::kPi<double> / 180.0;
+  const float lightPolarizer[3] = { static_cast<float>(std::cos(psi)),
+    static_cast<float>(std::sin(psi)), 0.0f };
+  block.insert(block.end(), lightPolarizer, lightPolarizer + 3);
   if (m.spectralCount > 0)
   {
     block.insert(block.end(), spectralEta, spectralEta + sl::kSpectralSamples);
@@ -803,7 +815,11 @@ void vtkShadingLabPolyDataMapper::SetMapperShaderParameters(
   program->SetUniform4f("slViewport", viewport);
   if (settings.render.polarizer >= 0)
   {
-    program->SetUniform2f("slAnalyser", analyser);
+    program->SetUniform3f("slAnalyser", analyser);
+  }
+  if (settings.render.lightPolarizer >= 0)
+  {
+    program->SetUniform3f("slLightPolarizer", lightPolarizer);
   }
   if (m.spectralCount > 0)
   {

@@ -298,6 +298,24 @@ TEST(GpuParityGLTest, EveryModeTimesModelBothInterpolationSpaces)
   EXPECT_NE(sphere->GetPointData()->GetNormals(), nullptr);
 }
 
+namespace
+{
+/// A dielectric and a spectral conductor for the polarization tests: glass
+/// with a diffuse part (depolarized) and gold from its measured n, k.
+std::pair<sl::Material<double>, sl::Material<double>> PolarizationMaterials()
+{
+  sl::Material<double> glass = sl::FindMaterialPreset("glass")->material;
+  glass.kd = 0.3;
+  glass.ks = 0.7;
+  sl::Material<double> gold = sl::FindMaterialPreset("gold")->material;
+  if (!sl::SetSpectral(gold, *sl::PresetDispersion("gold")).empty())
+  {
+    throw std::runtime_error("gold's measured dispersion does not load");
+  }
+  return { glass, gold };
+}
+} // namespace
+
 // An analyser in front of the camera (--polarizer, docs/model.md section 8):
 // the GPU draws what the CPU draws at every angle, for every smooth mode and
 // spectral too; and the CPU's linear frames obey Malus's law, I(0) + I(90)
@@ -308,13 +326,9 @@ TEST(GpuParityGLTest, PolarizerMatchesTheCpuAndObeysMalus)
   {
     GTEST_SKIP() << "no X display with OpenGL";
   }
-  auto torus = WithExactNormals(sl::datasets::MakeTorus(1.0, 0.4, 48, 24));
-  const render::Mesh mesh = render::MeshFromPolyData(torus);
-  sl::Material<double> glass = sl::FindMaterialPreset("glass")->material;
-  glass.kd = 0.3;
-  glass.ks = 0.7;
-  sl::Material<double> gold = sl::FindMaterialPreset("gold")->material;
-  ASSERT_EQ(sl::SetSpectral(gold, *sl::PresetDispersion("gold")), "");
+  const render::Mesh mesh =
+    render::MeshFromPolyData(WithExactNormals(sl::datasets::MakeTorus(1.0, 0.4, 48, 24)));
+  const auto [glass, gold] = PolarizationMaterials();
   sl::gl::GpuRenderer gpuRenderer;
   sl::cpu::SoftwareRenderer cpuRenderer;
   const auto lights = Lights(true);
@@ -358,6 +372,84 @@ TEST(GpuParityGLTest, PolarizerMatchesTheCpuAndObeysMalus)
         name, render::ShadingModeName(mode), worst, peak, angleMatters);
       EXPECT_LE(worst, 1e-5 * std::max(1.0, peak)) << name;
       EXPECT_GT(angleMatters, 0.01) << name << ": the analyser's angle changes the picture";
+    }
+  }
+}
+
+// A polarizer in front of the lights (--light-polarizer, docs/model.md eq.
+// 8.6), alone and with a linear or circular analyser: the GPU draws what
+// the CPU draws, for a dielectric and a spectral conductor, with lights
+// from the side and a headlight (where the plane of incidence is undefined).
+TEST(GpuParityGLTest, LightPolarizerMatchesTheCpu)
+{
+  if (!HaveGpu())
+  {
+    GTEST_SKIP() << "no X display with OpenGL";
+  }
+  const render::Mesh mesh =
+    render::MeshFromPolyData(WithExactNormals(sl::datasets::MakeTorus(1.0, 0.4, 48, 24)));
+  const auto [glass, gold] = PolarizationMaterials();
+  sl::Lighting<double> headlight;
+  headlight.lightCount = 1;
+  headlight.lights[0].vector = Camera().position;
+  headlight.lights[0].intensity = { 1, 1, 1 };
+  headlight.ambientIntensity = { 1, 1, 1 };
+  sl::gl::GpuRenderer gpuRenderer;
+  sl::cpu::SoftwareRenderer cpuRenderer;
+  struct Analysis
+  {
+    const char* name;
+    double polarizer;
+    bool circular;
+  };
+  const Analysis analyses[] = { { "none", -1, false }, { "linear 90", 90, false },
+    { "linear 30", 30, false }, { "circular", 0, true } };
+  for (const auto& [name, material] :
+    { std::make_pair("glass", glass), std::make_pair("spectral gold", gold) })
+  {
+    for (const auto& [lightsName, lights] :
+      { std::make_pair("side", Lights(true)), std::make_pair("headlight", headlight) })
+    {
+      for (render::ShadingMode mode : { render::ShadingMode::Gouraud, render::ShadingMode::Phong })
+      {
+        std::vector<render::Image> drawn; // GPU, by light polarizer then analysis
+        for (double lightPolarizer : { 0.0, 60.0 })
+        {
+          for (const Analysis& a : analyses)
+          {
+            render::RenderOptions opt;
+            opt.width = 320;
+            opt.height = 240;
+            opt.mode = mode;
+            opt.lightPolarizer = lightPolarizer;
+            opt.polarizer = a.polarizer;
+            opt.circularAnalyser = a.circular;
+            const auto gpu = test::RenderWith(gpuRenderer, mesh, Camera(), lights, material, opt);
+            const auto cpu = test::RenderWith(cpuRenderer, mesh, Camera(), lights, material, opt);
+            const auto d = Compare(cpu, gpu);
+            std::printf("light polarizer %3.0f %-13s %-9s %-7s analyser %-9s: mean %.3f p99 %.3f "
+                        "over %lld pixels\n",
+              lightPolarizer, name, lightsName, render::ShadingModeName(mode), a.name, d.mean, d.p99,
+              static_cast<long long>(d.pixels));
+            EXPECT_GT(d.pixels, 5000);
+            EXPECT_LE(d.mean, kMeanThreshold) << name << " " << lightsName << " " << a.name;
+            EXPECT_LE(d.p99, kP99Threshold) << name << " " << lightsName << " " << a.name;
+            drawn.push_back(gpu);
+          }
+        }
+        // The GPU turns both polarizers: the analyser's angle and the
+        // lights' polarizer each change the picture.
+        auto largest = [](const render::Image& a, const render::Image& b) {
+          double m = 0;
+          for (size_t i = 0; i < a.rgb.size(); ++i)
+          {
+            m = std::max(m, std::abs(double(a.rgb[i]) - b.rgb[i]));
+          }
+          return m;
+        };
+        EXPECT_GT(largest(drawn[1], drawn[2]), 0.01) << name << " " << lightsName << ": analyser";
+        EXPECT_GT(largest(drawn[1], drawn[5]), 0.01) << name << " " << lightsName << ": light";
+      }
     }
   }
 }

@@ -250,7 +250,7 @@ struct FastPhongStage : StageBase
         }
         if (F.Lights.analyser.on)
         {
-          I *= 0.5f; // no Fresnel term: unpolarized, half passes (eq. 8.4)
+          I *= kPolarizerTransmittance<float>; // no Fresnel term: depolarized, half passes (eq. 8.4)
         }
         const size_t pix = static_cast<size_t>(j) * W + i;
         covered[pix] = 1;

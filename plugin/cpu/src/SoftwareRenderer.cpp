@@ -232,16 +232,32 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh,
   F.Mat = material;
   F.Opt = options;
   F.Lights.analyser = {};
-  if (options.polarizer >= 0.0)
+  F.Lights.lightPolarizer = {};
+  if (options.polarizer >= 0.0 || options.lightPolarizer >= 0.0)
   {
-    // The analyser's axes are the image's (eq. 8.3), in the camera's space.
+    // The polarizers' axes are the image's (eq. 8.3, 8.6), in the camera's space.
     const render::CameraBasis basis = render::BasisOf(camera);
-    const double theta = 2.0 * options.polarizer * kPi<double> / 180.0;
-    F.Lights.analyser.on = true;
-    F.Lights.analyser.cos2Theta = static_cast<float>(std::cos(theta));
-    F.Lights.analyser.sin2Theta = static_cast<float>(std::sin(theta));
-    F.Lights.analyser.right = Vec3<float>(basis.right);
-    F.Lights.analyser.up = Vec3<float>(basis.up);
+    if (options.polarizer >= 0.0)
+    {
+      const double theta = 2.0 * options.polarizer * kPi<double> / 180.0;
+      F.Lights.analyser.on = true;
+      F.Lights.analyser.cos2Theta = options.circularAnalyser ? 0.0f : static_cast<float>(std::cos(theta));
+      F.Lights.analyser.sin2Theta = options.circularAnalyser ? 0.0f : static_cast<float>(std::sin(theta));
+      F.Lights.analyser.circular = options.circularAnalyser ? 1.0f : 0.0f;
+      F.Lights.analyser.right = Vec3<float>(basis.right);
+      F.Lights.analyser.up = Vec3<float>(basis.up);
+    }
+    if (options.lightPolarizer >= 0.0)
+    {
+      const double psi = options.lightPolarizer * kPi<double> / 180.0;
+      F.Lights.lightPolarizer.on = true;
+      F.Lights.lightPolarizer.axis = Vec3<float>(basis.right * std::cos(psi) + basis.up * std::sin(psi));
+      F.Lights.lightPolarizer.fallback = Vec3<float>(Cross(basis.right, basis.up));
+      for (auto& light : F.Lights.lights)
+      {
+        light.intensity *= kPolarizerTransmittance<float>;
+      }
+    }
   }
   const int ssaa = F.Opt.ssaa;
   F.Width = F.Opt.width * ssaa;

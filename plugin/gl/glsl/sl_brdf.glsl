@@ -86,25 +86,39 @@ float F_Dielectric(float cosTheta_i, float eta)
 }
 
 // Exact Fresnel of a conductor with complex index eta + i k (Born & Wolf
-// sec. 14.2; docs/model.md eq. 1.9), in real arithmetic: a^2 + b^2 and a
-// with n cos(theta_t) = a + i b: Rs and Rp (eq. 8.1; k = 0 a dielectric),
-// F_ConductorSP in Fresnel.h; F_Conductor below is their mean.
-void F_ConductorSP(float cosTheta_i, float eta, float k, out float Rs, out float Rp)
+// sec. 14.2; docs/model.md eq. 1.9), in real arithmetic: a^2 + b^2, a and
+// b with n cos(theta_t) = a + i b: Rs and Rp (eq. 8.1; k = 0 a dielectric)
+// and C + i D = rs rp* (eq. 8.2), F_ConductorMueller in Fresnel.h;
+// F_Conductor below is the mean of Rs and Rp.
+void F_ConductorMueller(float cosTheta_i, float eta, float k, out float Rs, out float Rp,
+  out float C, out float D)
 {
   cosTheta_i = clamp(cosTheta_i, 0.0, 1.0);
   float cos2Theta_i = cosTheta_i * cosTheta_i;
   float sin2Theta_i = max(0.0, 1.0 - cos2Theta_i);
   float t0 = eta * eta - k * k - sin2Theta_i;
-  float etaK2 = eta * eta * k * k;
-  float a2plusb2 = sqrt(t0 * t0 + 4.0 * etaK2);
+  float etaK = eta * k;
+  float a2plusb2 = sqrt(t0 * t0 + 4.0 * etaK * etaK);
   float sum = a2plusb2 + abs(t0);
-  float a = sqrt(t0 >= 0.0 ? 0.5 * sum : 2.0 * etaK2 / max(sum, SL_TINY_DENOMINATOR));
+  bool positive = t0 >= 0.0;
+  float a = sqrt(positive ? 0.5 * sum : 2.0 * etaK * etaK / max(sum, SL_TINY_DENOMINATOR));
+  float b = positive ? etaK / max(a, SL_TINY_DENOMINATOR) : sqrt(0.5 * sum);
   float t1 = a2plusb2 + cos2Theta_i;
   float t2 = 2.0 * cosTheta_i * a;
   Rs = (t1 - t2) / max(t1 + t2, SL_TINY_DENOMINATOR);
   float t3 = cos2Theta_i * a2plusb2 + sin2Theta_i * sin2Theta_i;
   float t4 = t2 * sin2Theta_i;
-  Rp = Rs * (t3 - t4) / (t3 + t4);
+  float invP = 1.0 / (t3 + t4);
+  Rp = Rs * (t3 - t4) * invP;
+  C = -Rs * (cos2Theta_i * a2plusb2 - sin2Theta_i * sin2Theta_i) * invP;
+  D = Rs * (2.0 * b * cosTheta_i * sin2Theta_i) * invP;
+}
+
+// Rs and Rp alone: F_ConductorSP (the compiler drops C and D).
+void F_ConductorSP(float cosTheta_i, float eta, float k, out float Rs, out float Rp)
+{
+  float C, D;
+  F_ConductorMueller(cosTheta_i, eta, k, Rs, Rp, C, D);
 }
 
 float F_Conductor(float cosTheta_i, float eta, float k)
@@ -118,15 +132,19 @@ float F_Conductor(float cosTheta_i, float eta, float k)
   return 0.5 * (Rs + Rp);
 }
 
-// A = (Rs + Rp) / 2 and B = (Rs - Rp) / 2 per channel (eq. 8.2): F_RGB_SP.
-void F_RGB_SP(float cosTheta_i, vec3 eta, vec3 k, out vec3 A, out vec3 B)
+// Fresnel's Mueller matrix per channel (eq. 8.2): A = (Rs + Rp) / 2,
+// B = (Rs - Rp) / 2, C + i D = rs rp*: F_RGB_Mueller.
+void F_RGB_Mueller(float cosTheta_i, vec3 eta, vec3 k, out vec3 A, out vec3 B, out vec3 C,
+  out vec3 D)
 {
   for (int c = 0; c < 3; ++c)
   {
-    float Rs, Rp;
-    F_ConductorSP(cosTheta_i, eta[c], k[c], Rs, Rp);
+    float Rs, Rp, Cc, Dc;
+    F_ConductorMueller(cosTheta_i, eta[c], k[c], Rs, Rp, Cc, Dc);
     A[c] = 0.5 * (Rs + Rp);
     B[c] = 0.5 * (Rs - Rp);
+    C[c] = Cc;
+    D[c] = Dc;
   }
 }
 
@@ -151,18 +169,23 @@ vec3 F_Spectral(float cosTheta_i, float eta[SL_SPECTRAL_SAMPLES], float k[SL_SPE
 }
 
 #if SL_SPECTRAL
-// The same per wavelength, weighted as F_Spectral: F_Spectral_SP.
-void F_Spectral_SP(float cosTheta_i, float eta[SL_SPECTRAL_SAMPLES], float k[SL_SPECTRAL_SAMPLES],
-  vec3 weight[SL_SPECTRAL_SAMPLES], out vec3 A, out vec3 B)
+// The same per wavelength, weighted as F_Spectral: F_Spectral_Mueller.
+void F_Spectral_Mueller(float cosTheta_i, float eta[SL_SPECTRAL_SAMPLES],
+  float k[SL_SPECTRAL_SAMPLES], vec3 weight[SL_SPECTRAL_SAMPLES], out vec3 A, out vec3 B,
+  out vec3 C, out vec3 D)
 {
   A = vec3(0.0);
   B = vec3(0.0);
+  C = vec3(0.0);
+  D = vec3(0.0);
   for (int i = 0; i < SL_SPECTRAL_SAMPLES; ++i)
   {
-    float Rs, Rp;
-    F_ConductorSP(cosTheta_i, eta[i], k[i], Rs, Rp);
+    float Rs, Rp, Ci, Di;
+    F_ConductorMueller(cosTheta_i, eta[i], k[i], Rs, Rp, Ci, Di);
     A += weight[i] * (0.5 * (Rs + Rp));
     B += weight[i] * (0.5 * (Rs - Rp));
+    C += weight[i] * Ci;
+    D += weight[i] * Di;
   }
 }
 #endif

@@ -58,7 +58,7 @@
       slColor += slIrr * BrdfFromCosines(slRho, slNoH, slRoV) * slNoL;
     }
 #if SL_ANALYSER
-    slColor *= 0.5; // no Fresnel term: unpolarized, half passes the analyser
+    slColor *= SL_POLARIZER_TRANSMITTANCE; // no Fresnel term: depolarized, half passes
 #endif
   }
 #else

@@ -11,7 +11,8 @@
 //   SL_LOBE_COUNT   Beckmann mixture size (1..4)
 //   SL_CONDUCTOR    1 when any k > 0 (complex-index Fresnel)
 //   SL_SPECTRAL     1: Fresnel per wavelength (eq. 7.3) instead of per channel
-//   SL_ANALYSER     1: a linear polarizer in front of the camera (eq. 8.3-8.4)
+//   SL_ANALYSER     1: a polarizer in front of the camera (eq. 8.3-8.4)
+//   SL_LIGHT_POLARIZER 1: a linear polarizer in front of the lights (eq. 8.6)
 //   SL_HEADLIGHT    1 when the only light is a headlight: L = +z in view
 //                   coordinates, a constant the compiler folds
 
@@ -41,9 +42,16 @@ uniform vec3 slSpectralWeight[SL_SPECTRAL_SAMPLES];
 #endif
 uniform float slJacobian;
 #if SL_ANALYSER
-// cos 2 theta, sin 2 theta of the analyser's axis from the image's x axis
-// (view coordinates: x right, y up).
-uniform vec2 slAnalyser;
+// The analyser's row (Shading.h Analyser): cos 2 theta, sin 2 theta of its
+// axis from the image's x axis (view coordinates: x right, y up), and 1
+// for a circular analyser.
+uniform vec3 slAnalyser;
+#endif
+#if SL_LIGHT_POLARIZER
+// The lights' polarizer axis in view coordinates (cos psi, sin psi, 0); its
+// fallback is the viewing axis (0, 0, 1). The mapper scales the lights'
+// irradiance by kPolarizerTransmittance.
+uniform vec3 slLightPolarizer;
 #endif
 
 // Direction to the light and its irradiance factor at P (view coordinates).
@@ -103,6 +111,51 @@ vec3 BrdfFromCosines(vec3 diffuseColor, float NoH, float RoV)
 #endif
 }
 
+#if SL_MODEL == SL_MODEL_COOK_TORRANCE && (SL_ANALYSER || SL_LIGHT_POLARIZER)
+// The Fresnel term through the polarizers (Shading.h F_Polarized;
+// docs/model.md eq. 8.2-8.6): the light's Stokes vector in the frame of
+// s = L x V, times Fresnel's Mueller matrix, into the image's frame,
+// through the analyser (or its S0 without one).
+vec3 F_Polarized(float cosTheta_i, vec3 L, vec3 V)
+{
+  vec3 A, B, C, D;
+#if SL_SPECTRAL
+  F_Spectral_Mueller(cosTheta_i, slSpectralEta, slSpectralK, slSpectralWeight, A, B, C, D);
+#else
+  F_RGB_Mueller(cosTheta_i, slEta, slK, A, B, C, D);
+#endif
+  vec3 s = cross(L, V);
+  bool oblique = dot(s, s) > SL_TINY_DENOMINATOR;
+  float S1 = 0.0, S2 = 0.0;
+#if SL_LIGHT_POLARIZER
+  vec3 e = slLightPolarizer - L * dot(slLightPolarizer, L);
+  vec3 f0 = vec3(0.0, 0.0, 1.0);
+  e = dot(e, e) > SL_TINY_DENOMINATOR ? e : f0 - L * dot(f0, L);
+  s = oblique ? s : e;
+  float ex = dot(e, s), ey = dot(e, cross(s, L));
+  float invE = 1.0 / max(ex * ex + ey * ey, SL_TINY_DENOMINATOR);
+  S1 = (ex * ex - ey * ey) * invE;
+  S2 = 2.0 * ex * ey * invE;
+#else
+  s = oblique ? s : vec3(1.0, 0.0, 0.0);
+#endif
+  vec3 out0 = A + B * S1, out1 = B + A * S1, out2 = C * S2, out3 = D * -S2;
+#if SL_ANALYSER
+  float r2 = dot(s.xy, s.xy);
+  bool seen = r2 > SL_TINY_DENOMINATOR;
+  float inv = 1.0 / max(r2, SL_TINY_DENOMINATOR);
+  float cos2Phi = seen ? (s.x * s.x - s.y * s.y) * inv : 1.0;
+  float sin2Phi = seen ? 2.0 * s.x * s.y * inv : 0.0;
+  vec3 image1 = out1 * cos2Phi - out2 * sin2Phi;
+  vec3 image2 = out1 * sin2Phi + out2 * cos2Phi;
+  return (out0 + image1 * slAnalyser.x + image2 * slAnalyser.y + out3 * slAnalyser.z) *
+    SL_POLARIZER_TRANSMITTANCE;
+#else
+  return out0;
+#endif
+}
+#endif
+
 // kd Rd + ks Rs for one pair of directions (Shading.h EvaluateBrdf;
 // docs/model.md eq. 1.2).
 vec3 EvaluateBrdf(vec3 diffuseColor, vec3 N, vec3 L, vec3 V)
@@ -113,7 +166,7 @@ vec3 EvaluateBrdf(vec3 diffuseColor, vec3 N, vec3 L, vec3 V)
 #if SL_MODEL == SL_MODEL_LOMMEL_SEELIGER
   vec3 f = diffuseColor * (slKd * Fd_LommelSeeliger(NoL, NoV));
 #if SL_ANALYSER
-  f *= 0.5; // unpolarized: half passes the analyser
+  f *= SL_POLARIZER_TRANSMITTANCE; // unpolarized: half passes the analyser
 #endif
   return above ? f : vec3(0.0);
 #elif SL_MODEL != SL_MODEL_COOK_TORRANCE || !SL_SPECULAR
@@ -128,7 +181,7 @@ vec3 EvaluateBrdf(vec3 diffuseColor, vec3 N, vec3 L, vec3 V)
 #endif
   vec3 f = BrdfFromCosines(diffuseColor, NoH, RoV);
 #if SL_ANALYSER
-  f *= 0.5; // no Fresnel term: unpolarized, half passes the analyser
+  f *= SL_POLARIZER_TRANSMITTANCE; // no Fresnel term: depolarized, half passes
 #endif
   return above ? f : vec3(0.0);
 #else
@@ -146,25 +199,13 @@ vec3 EvaluateBrdf(vec3 diffuseColor, vec3 N, vec3 L, vec3 V)
   vec3 F = vec3(F_Dielectric(VoH, slEta.x), F_Dielectric(VoH, slEta.y), F_Dielectric(VoH, slEta.z));
 #endif
   float DG = Fs_CookTorrance(1.0, D, G, NoL, NoV, slJacobian);
-#if SL_ANALYSER
-  // Through the analyser (eq. 8.4; EvaluateBrdf in Shading.h): the
-  // specular Stokes vector (A, B, 0, 0) in the frame of s = L x V, at
-  // angle phi from the image's x axis; the diffuse term passes by half.
-  vec3 A, B;
-#if SL_SPECTRAL
-  F_Spectral_SP(VoH, slSpectralEta, slSpectralK, slSpectralWeight, A, B);
-#else
-  F_RGB_SP(VoH, slEta, slK, A, B);
+#if SL_ANALYSER || SL_LIGHT_POLARIZER
+  // Polarized (eq. 8.2-8.6; EvaluateBrdf in Shading.h); diffuse reflection
+  // depolarizes: half of it passes an analyser.
+  F = F_Polarized(VoH, L, V);
 #endif
-  vec3 sAxis = cross(L, V);
-  float r2 = dot(sAxis.xy, sAxis.xy);
-  bool oblique = r2 > SL_TINY_DENOMINATOR;
-  float inv = 1.0 / max(r2, SL_TINY_DENOMINATOR);
-  float cos2Phi = oblique ? (sAxis.x * sAxis.x - sAxis.y * sAxis.y) * inv : 1.0;
-  float sin2Phi = oblique ? 2.0 * sAxis.x * sAxis.y * inv : 0.0;
-  float cos2Delta = slAnalyser.x * cos2Phi + slAnalyser.y * sin2Phi;
-  F = 0.5 * (A + B * cos2Delta);
-  diffuse *= 0.5;
+#if SL_ANALYSER
+  diffuse *= SL_POLARIZER_TRANSMITTANCE;
 #endif
   vec3 f = diffuse + F * (slKs * DG);
   return above ? f : vec3(0.0);
@@ -174,7 +215,7 @@ vec3 EvaluateBrdf(vec3 diffuseColor, vec3 N, vec3 L, vec3 V)
 vec3 Shade(vec3 diffuseColor, vec3 P, vec3 N, vec3 V)
 {
 #if SL_ANALYSER
-  vec3 result = 0.5 * slAmbient; // unpolarized ambient light
+  vec3 result = SL_POLARIZER_TRANSMITTANCE * slAmbient; // unpolarized ambient light
 #else
   vec3 result = slAmbient;
 #endif

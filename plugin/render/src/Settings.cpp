@@ -252,6 +252,22 @@ void RenderRows(std::vector<SettingRow>& t)
     t.push_back(r);
   }
   {
+    SettingRow r = Row("light-polarizer", "LightPolarizer", "Light Polarizer (deg, -1 none)",
+      G::Render, K::Real);
+    r.min = -1;
+    r.max = 180;
+    r.doc = "a linear polarizer in front of every light, its transmission axis DEG from the "
+            "image's x axis as the camera sees it; it passes half the light, and Cook-Torrance's "
+            "Fresnel term keeps, rotates and (metals) turns its polarization elliptical "
+            "(docs/model.md eq. 8.6); crossed with --polarizer it removes a headlight's "
+            "highlights; -1: unpolarized lights";
+    r.frontEnds = kCli | kParaView | kMapper;
+    r.metavar = "DEG";
+    r.set = [](Settings& s, const SettingValue& v) { s.render.lightPolarizer = v.numbers[0]; };
+    r.get = [](const Settings& s) { return Number(s.render.lightPolarizer); };
+    t.push_back(r);
+  }
+  {
     SettingRow r = Row("fast-phong-as-is", "FastPhongAsIs", "Fast Phong As Is", G::Render, K::Flag);
     r.doc = "fast-phong with its quadratics even on triangles too small for them to pay (CPU; "
             "default: exact Phong there, said on stderr)";

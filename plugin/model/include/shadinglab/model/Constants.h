@@ -80,6 +80,13 @@ constexpr T kMaxShininess = T(1e4);
 template <typename T>
 constexpr T kTinyDenominator = T(1e-30);
 
+/// What an ideal linear polarizer passes of unpolarized light (the Stokes
+/// row (1, cos 2 theta, sin 2 theta, 0) / 2, docs/model.md eq. 8.3): half,
+/// whatever its angle. The analyser passes half of unpolarized diffuse
+/// light; a polarizer in front of a lamp passes half of its intensity.
+template <typename T>
+constexpr T kPolarizerTransmittance = T(0.5);
+
 /// Maximum number of Beckmann lobes in a mixture D = sum_k w_k D(m_k) and of
 /// lights in one evaluation; fixed so the GPU uniform arrays match.
 constexpr int kMaxLobes = 4;

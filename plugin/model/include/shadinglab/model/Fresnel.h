@@ -99,27 +99,43 @@ void F_DielectricPolarized(T cosTheta_i, T eta, T& Rs, T& Rp)
  * k = 0 it is F_Dielectric, total internal reflection for eta < 1
  * included (a = 0 there: Rs = Rp = 1).
  *
- * F_ConductorSP gives Rs and Rp themselves (the polarized reflectances,
- * docs/model.md eq. 8.1); F_Conductor their mean.
+ * F_ConductorMueller gives Rs and Rp themselves (the polarized
+ * reflectances, docs/model.md eq. 8.1) and the phase terms of Fresnel's
+ * Mueller matrix; F_ConductorSP Rs and Rp alone; F_Conductor their mean.
  *
  * @param cosTheta_i L.H, clamped to [0, 1].
  * @param eta real part of the relative index (> 0).
  * @param k extinction coefficient (>= 0).
+ *
+ * With n cos(theta_t) = u = a + i b, rs = (cos ti - u) / (cos ti + u) and
+ * rp = -rs (u cos ti - sin^2 ti) / (u cos ti + sin^2 ti) (Born & Wolf sec.
+ * 1.5.2 and 14.2, rp in the frames of eq. 8.6: it is -rs at normal
+ * incidence, as both waves' second axes then point opposite ways). Then
+ * (docs/model.md eq. 8.2)
+ *   C + i D = rs rp* = -Rs ((cos^2 ti (a^2 + b^2) - sin^4 ti) - 2 i b cos ti sin^2 ti)
+ *                      / (cos^2 ti (a^2 + b^2) + 2 a cos ti sin^2 ti + sin^4 ti)
+ * real (D = 0) for a dielectric outside total internal reflection; D is the
+ * phase between s and p that turns linear polarization elliptical (a metal,
+ * or glass from inside beyond the critical angle: Fresnel's rhomb).
+ * C^2 + D^2 = Rs Rp.
  */
 template <typename T>
-SL_INLINE void F_ConductorSP(T cosTheta_i, T eta, T k, T& Rs, T& Rp)
+SL_INLINE void F_ConductorMueller(T cosTheta_i, T eta, T k, T& Rs, T& Rp, T& C, T& D)
 {
   cosTheta_i = Clamp(cosTheta_i, T(0), T(1));
   const T cos2Theta_i = cosTheta_i * cosTheta_i;
   const T sin2Theta_i = Max(T(0), T(1) - cos2Theta_i);
   const T t0 = eta * eta - k * k - sin2Theta_i;
-  const T etaK2 = eta * eta * k * k;
-  const T a2plusb2 = Sqrt(t0 * t0 + T(4) * etaK2);
+  const T etaK = eta * k;
+  const T a2plusb2 = Sqrt(t0 * t0 + T(4) * etaK * etaK);
   // a^2 = (a^2 + b^2 + t0) / 2 cancels where t0 < 0 (eta < 1, little
   // absorption); there the same value is 2 eta^2 k^2 / (a^2 + b^2 - t0).
-  // Both denominators are >= a^2 + b^2 > 0.
+  // Both denominators are >= a^2 + b^2 > 0. b likewise: (a^2 + b^2 - t0) / 2
+  // where t0 < 0, else eta k / a (2 a b = 2 eta k).
   const T sum = a2plusb2 + Abs(t0);
-  const T a = Sqrt(Select(t0 >= T(0), T(0.5) * sum, T(2) * etaK2 / Max(sum, T(kTinyDenominator<ScalarOf<T>>))));
+  const auto positive = t0 >= T(0);
+  const T a = Sqrt(Select(positive, T(0.5) * sum, T(2) * etaK * etaK / Max(sum, T(kTinyDenominator<ScalarOf<T>>))));
+  const T b = Select(positive, etaK / Max(a, T(kTinyDenominator<ScalarOf<T>>)), Sqrt(T(0.5) * sum));
   const T t1 = a2plusb2 + cos2Theta_i;
   const T t2 = T(2) * cosTheta_i * a;
   // t1 + t2 >= a^2 + b^2 >= 2 eta k > 0 for a conductor. It vanishes only
@@ -129,7 +145,18 @@ SL_INLINE void F_ConductorSP(T cosTheta_i, T eta, T k, T& Rs, T& Rp)
   // t3 + t4 > 0: cos ti and sin ti are never both 0.
   const T t3 = cos2Theta_i * a2plusb2 + sin2Theta_i * sin2Theta_i;
   const T t4 = t2 * sin2Theta_i;
-  Rp = Rs * (t3 - t4) / (t3 + t4);
+  const T invP = T(1) / (t3 + t4);
+  Rp = Rs * (t3 - t4) * invP;
+  C = -Rs * (cos2Theta_i * a2plusb2 - sin2Theta_i * sin2Theta_i) * invP;
+  D = Rs * (T(2) * b * cosTheta_i * sin2Theta_i) * invP;
+}
+
+/// Rs and Rp of F_ConductorMueller (the phase terms unused are folded away).
+template <typename T>
+SL_INLINE void F_ConductorSP(T cosTheta_i, T eta, T k, T& Rs, T& Rp)
+{
+  T C, D;
+  F_ConductorMueller(cosTheta_i, eta, k, Rs, Rp, C, D);
 }
 
 /// F = (Rs + Rp) / 2 of F_ConductorSP; a dielectric (k = 0) through
@@ -181,36 +208,43 @@ SL_INLINE Vec3<T> F_Spectral(T cosTheta_i, const T* eta, const T* k, const Vec3<
 }
 
 /**
- * The s- and p-reflectances per channel (per wavelength when spectral,
- * weighted as F_Spectral): A = (Rs + Rp) / 2 = F and B = (Rs - Rp) / 2,
- * the first two entries of the Fresnel Mueller matrix (docs/model.md
- * eq. 8.2). Unpolarized light reflects as the Stokes vector (A, B, 0, 0)
- * in the frame whose first axis is s, perpendicular to the plane of
- * incidence.
+ * Fresnel's Mueller matrix per channel (per wavelength when spectral,
+ * weighted as F_Spectral; docs/model.md eq. 8.2): A = (Rs + Rp) / 2 = F,
+ * B = (Rs - Rp) / 2, C + i D = rs rp*, in the frame whose first axis is s,
+ * perpendicular to the plane of incidence:
+ *   | A B 0 0 |
+ *   | B A 0 0 |
+ *   | 0 0 C D |
+ *   | 0 0 -D C |
+ * Unpolarized light reflects as (A, B, 0, 0). The weights are linear, so
+ * the spectral entries are the weighted sums of each wavelength's.
  */
 template <typename T>
-SL_INLINE void F_RGB_SP(T cosTheta_i, const Vec3<T>& eta, const Vec3<T>& k, Vec3<T>& A, Vec3<T>& B)
+SL_INLINE void F_RGB_Mueller(T cosTheta_i, const Vec3<T>& eta, const Vec3<T>& k, Vec3<T>& A,
+  Vec3<T>& B, Vec3<T>& C, Vec3<T>& D)
 {
   for (int c = 0; c < 3; ++c)
   {
     T Rs, Rp;
-    F_ConductorSP(cosTheta_i, eta[c], k[c], Rs, Rp);
+    F_ConductorMueller(cosTheta_i, eta[c], k[c], Rs, Rp, C[c], D[c]);
     A[c] = T(0.5) * (Rs + Rp);
     B[c] = T(0.5) * (Rs - Rp);
   }
 }
 
 template <typename T>
-SL_INLINE void F_Spectral_SP(T cosTheta_i, const T* eta, const T* k, const Vec3<T>* weight,
-  int count, Vec3<T>& A, Vec3<T>& B)
+SL_INLINE void F_Spectral_Mueller(T cosTheta_i, const T* eta, const T* k, const Vec3<T>* weight,
+  int count, Vec3<T>& A, Vec3<T>& B, Vec3<T>& C, Vec3<T>& D)
 {
-  A = B = Vec3<T>();
+  A = B = C = D = Vec3<T>();
   for (int i = 0; i < count; ++i)
   {
-    T Rs, Rp;
-    F_ConductorSP(cosTheta_i, eta[i], k[i], Rs, Rp);
+    T Rs, Rp, Ci, Di;
+    F_ConductorMueller(cosTheta_i, eta[i], k[i], Rs, Rp, Ci, Di);
     A += weight[i] * (T(0.5) * (Rs + Rp));
     B += weight[i] * (T(0.5) * (Rs - Rp));
+    C += weight[i] * Ci;
+    D += weight[i] * Di;
   }
 }
 

@@ -153,18 +153,25 @@ struct Material
 
   bool IsConductor() const { return k.x > T(0) || k.y > T(0) || k.z > T(0); }
 
-  /// A = (Rs + Rp) / 2 and B = (Rs - Rp) / 2 at cos(theta_i) = L.H
+  /// Fresnel's Mueller matrix entries A, B, C, D at cos(theta_i) = L.H
   /// (docs/model.md eq. 8.2), per wavelength when spectral.
-  SL_INLINE void FresnelSP(T cosTheta_i, Vec3<T>& A, Vec3<T>& B) const
+  SL_INLINE void FresnelMueller(T cosTheta_i, Vec3<T>& A, Vec3<T>& B, Vec3<T>& C, Vec3<T>& D) const
   {
     if (spectralCount > 0)
     {
-      F_Spectral_SP(cosTheta_i, spectralEta, spectralK, spectralWeight, spectralCount, A, B);
+      F_Spectral_Mueller(cosTheta_i, spectralEta, spectralK, spectralWeight, spectralCount, A, B, C, D);
     }
     else
     {
-      F_RGB_SP(cosTheta_i, eta, k, A, B);
+      F_RGB_Mueller(cosTheta_i, eta, k, A, B, C, D);
     }
+  }
+
+  /// A = (Rs + Rp) / 2 and B = (Rs - Rp) / 2 alone (C, D folded away).
+  SL_INLINE void FresnelSP(T cosTheta_i, Vec3<T>& A, Vec3<T>& B) const
+  {
+    Vec3<T> C, D;
+    FresnelMueller(cosTheta_i, A, B, C, D);
   }
 
   /// F at cos(theta_i) = L.H: per wavelength when spectral, else per channel.
@@ -229,17 +236,18 @@ struct Light
 };
 
 /**
- * A linear polarizer in front of the camera, the analyser (docs/model.md
- * eq. 8.3): what passes of a Stokes vector S in the image's frame is
- * (S0 + S1 cos 2 theta + S2 sin 2 theta) / 2, theta its transmission axis
- * from the image's x axis. Lights are unpolarized, diffuse reflection
- * depolarizes: only the Fresnel term carries polarization.
+ * The analyser in front of the camera (docs/model.md eq. 8.3): what passes
+ * of a Stokes vector S in the image's frame is
+ *   (S0 + w1 S1 + w2 S2 + w3 S3) / 2,
+ * (w1, w2, w3) = (cos 2 theta, sin 2 theta, 0) for a linear polarizer whose
+ * axis is at theta from the image's x axis, (0, 0, 1) for a circular one
+ * (a quarter-wave plate before it: right-handed light passes, eq. 8.5).
  */
 template <typename T>
 struct Analyser
 {
   bool on = false;
-  T cos2Theta = T(1), sin2Theta = T(0);
+  T cos2Theta = T(1), sin2Theta = T(0), circular = T(0);
   /// The image's x and y axes in the space the shading is done in.
   Vec3<T> right{ T(1), T(0), T(0) }, up{ T(0), T(1), T(0) };
 
@@ -250,8 +258,35 @@ struct Analyser
     out.on = on;
     out.cos2Theta = static_cast<U>(cos2Theta);
     out.sin2Theta = static_cast<U>(sin2Theta);
+    out.circular = static_cast<U>(circular);
     out.right = Vec3<U>(right);
     out.up = Vec3<U>(up);
+    return out;
+  }
+};
+
+/**
+ * A linear polarizer in front of every light (docs/model.md eq. 8.6): its
+ * transmission axis is `axis` (cos psi right + sin psi up: psi from the
+ * image's x axis, as the camera sees it) projected perpendicular to the
+ * light's direction; where the light shines along that axis, `fallback`
+ * (the camera's viewing axis, perpendicular to it) projected instead.
+ * It passes kPolarizerTransmittance of the lamp's unpolarized light: the
+ * renderers scale the lights' intensity by it (off: lights unpolarized).
+ */
+template <typename T>
+struct LightPolarizer
+{
+  bool on = false;
+  Vec3<T> axis{ T(1), T(0), T(0) }, fallback{ T(0), T(0), T(1) };
+
+  template <typename U>
+  LightPolarizer<U> Cast() const
+  {
+    LightPolarizer<U> out;
+    out.on = on;
+    out.axis = Vec3<U>(axis);
+    out.fallback = Vec3<U>(fallback);
     return out;
   }
 };
@@ -265,6 +300,8 @@ struct Lighting
   Vec3<T> ambientIntensity{ T(1), T(1), T(1) };
   /// The analyser in front of the camera (off: the eye sees S0).
   Analyser<T> analyser;
+  /// A polarizer in front of the lights (off: unpolarized lights).
+  LightPolarizer<T> lightPolarizer;
 
   template <typename U>
   Lighting<U> Cast() const
@@ -277,6 +314,7 @@ struct Lighting
     out.lightCount = lightCount;
     out.ambientIntensity = Vec3<U>(ambientIntensity);
     out.analyser = analyser.template Cast<U>();
+    out.lightPolarizer = lightPolarizer.template Cast<U>();
     return out;
   }
 };
@@ -373,6 +411,69 @@ SL_INLINE Vec3<T> BrdfFromCosines(const Material<T>& material, const Vec3<T>& di
 }
 
 /**
+ * The Fresnel term as the camera sees it through the polarizers
+ * (docs/model.md eq. 8.2-8.6): the light's Stokes vector in the frame of
+ * the microfacet's plane of incidence (s = L x V; L, V and H lie in that
+ * plane), (1, 0, 0, 0) when unpolarized, (1, cos 2 beta, sin 2 beta, 0)
+ * through the light's polarizer at beta from s; times Fresnel's Mueller
+ * matrix (A, B, C, D); rotated by phi, s's angle from the image's x axis,
+ * into the image's frame; through the analyser, or its S0 without one.
+ * Per unit light intensity passing the light's polarizer.
+ */
+template <typename T>
+SL_INLINE Vec3<T> F_Polarized(const Material<T>& material, T cosTheta_i, const Vec3<T>& L,
+  const Vec3<T>& V, const Analyser<T>* analyser, const LightPolarizer<T>* lightPolarizer)
+{
+  using S = ScalarOf<T>;
+  const T tiny = T(kTinyDenominator<S>);
+  Vec3<T> A, B, C, D;
+  material.FresnelMueller(cosTheta_i, A, B, C, D);
+  // L parallel to V: normal incidence on the facet, where any s
+  // perpendicular to V gives the same picture (Rs = Rp, C = -Rs, D = 0).
+  Vec3<T> s = Cross(L, V);
+  const auto oblique = Dot(s, s) > tiny;
+  // The light's Stokes vector in the incident wave's frame (s, s x L):
+  // the ratios below do not need s to be unit.
+  T S1 = T(0), S2 = T(0);
+  if (lightPolarizer)
+  {
+    const Vec3<T>& e0 = lightPolarizer->axis;
+    Vec3<T> e = e0 - L * Dot(e0, L);
+    const Vec3<T>& f0 = lightPolarizer->fallback;
+    e = Select(Dot(e, e) > tiny, e, f0 - L * Dot(f0, L));
+    s = Select(oblique, s, e);
+    const T ex = Dot(e, s), ey = Dot(e, Cross(s, L));
+    const T inv = T(1) / Max(ex * ex + ey * ey, tiny);
+    S1 = (ex * ex - ey * ey) * inv;
+    S2 = T(2) * ex * ey * inv;
+  }
+  else
+  {
+    s = Select(oblique, s, analyser->right);
+  }
+  // Fresnel's Mueller matrix on (1, S1, S2, 0) (eq. 8.2).
+  const Vec3<T> out0 = A + B * S1, out1 = B + A * S1, out2 = C * S2, out3 = D * (T(0) - S2);
+  if (!analyser)
+  {
+    return out0;
+  }
+  // Into the image's frame (eq. 8.4): the reflected wave's frame
+  // (s, V x s) is right-handed about V, as (right, up) is.
+  const T c = Dot(s, analyser->right), d = Dot(s, analyser->up);
+  const T r2 = c * c + d * d;
+  const auto seen = r2 > tiny;
+  const T inv = T(1) / Max(r2, tiny);
+  const T cos2Phi = Select(seen, (c * c - d * d) * inv, T(1));
+  const T sin2Phi = Select(seen, T(2) * c * d * inv, T(0));
+  const Vec3<T> image1 = out1 * cos2Phi - out2 * sin2Phi;
+  const Vec3<T> image2 = out1 * sin2Phi + out2 * cos2Phi;
+  // The analyser's row (eq. 8.3).
+  return (out0 + image1 * analyser->cos2Theta + image2 * analyser->sin2Theta +
+           out3 * analyser->circular) *
+    T(kPolarizerTransmittance<S>);
+}
+
+/**
  * kd Rd + ks Rs for one pair of directions: the BRDF (1/sr) of
  * docs/model.md eq. 1.2.
  * N, L, V unit, pointing away from the surface.
@@ -380,7 +481,8 @@ SL_INLINE Vec3<T> BrdfFromCosines(const Material<T>& material, const Vec3<T>& di
 template <typename T>
 SL_INLINE Vec3<T> EvaluateBrdf(
   const Material<T>& material, const Vec3<T>& diffuseColor, const Vec3<T>& N, const Vec3<T>& L,
-  const Vec3<T>& V, const Analyser<T>* analyser = nullptr)
+  const Vec3<T>& V, const Analyser<T>* analyser = nullptr,
+  const LightPolarizer<T>* lightPolarizer = nullptr)
 {
   const T NoL = Dot(N, L);
   const T NoV = Dot(N, V);
@@ -411,27 +513,15 @@ SL_INLINE Vec3<T> EvaluateBrdf(
       const T G = G_CookTorrance(NoH, NoV, NoL, VoH);
       // F is evaluated at theta_i = acos(L.H) (eq. 1.8); L.H = V.H.
       Vec3<T> F;
-      if (analyser && analyser->on)
+      if ((analyser && analyser->on) || (lightPolarizer && lightPolarizer->on))
       {
-        // Through the analyser (eq. 8.4): the specular reflection of
-        // unpolarized light is (A, B, 0, 0) in the microfacet's s/p frame,
-        // s = L x V (L, V and H lie in its plane of incidence) at angle phi
-        // from the image's x axis; (A + B cos 2(theta - phi)) / 2 passes.
-        // The diffuse term is unpolarized: half passes.
-        Vec3<T> A, B;
-        material.FresnelSP(VoH, A, B);
-        const Vec3<T> sAxis = Cross(L, V);
-        const T c = Dot(sAxis, analyser->right), d = Dot(sAxis, analyser->up);
-        const T r2 = c * c + d * d;
-        // L parallel to V: normal incidence on the facet, Rs = Rp (B = 0).
-        const auto oblique = r2 > T(kTinyDenominator<ScalarOf<T>>);
-        const T inv = T(1) / Max(r2, T(kTinyDenominator<ScalarOf<T>>));
-        const T cos2Phi = Select(oblique, (c * c - d * d) * inv, T(1));
-        const T sin2Phi = Select(oblique, T(2) * c * d * inv, T(0));
-        const T cos2Delta = analyser->cos2Theta * cos2Phi + analyser->sin2Theta * sin2Phi;
-        F = (A + B * cos2Delta) * T(0.5);
+        // Polarized (eq. 8.2-8.6); diffuse reflection depolarizes: half of
+        // it passes an analyser.
+        const Analyser<T>* a = analyser && analyser->on ? analyser : nullptr;
         const T DG = Fs_CookTorrance(T(1), D, G, NoL, NoV, material.variant);
-        f = diffuse * T(0.5) + F * (material.ks * DG);
+        f = diffuse * T(a ? kPolarizerTransmittance<ScalarOf<T>> : 1) +
+          F_Polarized(material, VoH, L, V, a, lightPolarizer && lightPolarizer->on ? lightPolarizer : nullptr) *
+            (material.ks * DG);
         break;
       }
       F = material.Fresnel(VoH);
@@ -445,8 +535,8 @@ SL_INLINE Vec3<T> EvaluateBrdf(
   }
   if (analyser && analyser->on && material.model != ReflectanceModel::CookTorrance)
   {
-    // No Fresnel term: these models reflect unpolarized light unpolarized.
-    f *= T(0.5);
+    // No Fresnel term: these models depolarize (docs/model.md section 8).
+    f *= T(kPolarizerTransmittance<ScalarOf<T>>);
   }
   return Select(lit, f, Vec3<T>());
 }
@@ -463,8 +553,11 @@ SL_INLINE Vec3<T> Shade(
   const Vec3<T>& P, const Vec3<T>& N, const Vec3<T>& V)
 {
   const Analyser<T>* analyser = lighting.analyser.on ? &lighting.analyser : nullptr;
+  const LightPolarizer<T>* lightPolarizer =
+    lighting.lightPolarizer.on ? &lighting.lightPolarizer : nullptr;
   // The ambient light is unpolarized: half passes an analyser.
-  Vec3<T> result = material.ambient * lighting.ambientIntensity * T(analyser ? 0.5 : 1.0);
+  Vec3<T> result = material.ambient * lighting.ambientIntensity *
+    T(analyser ? kPolarizerTransmittance<ScalarOf<T>> : ScalarOf<T>(1));
   for (int j = 0; j < lighting.lightCount; ++j)
   {
     Vec3<T> L, irradiance;
@@ -481,7 +574,7 @@ SL_INLINE Vec3<T> Shade(
     }
     // Lanes the light does not reach add 0 (a single value never gets here).
     result += Select(
-      lit, irradiance * EvaluateBrdf(material, diffuseColor, N, L, V, analyser) * NoL, Vec3<T>());
+      lit, irradiance * EvaluateBrdf(material, diffuseColor, N, L, V, analyser, lightPolarizer) * NoL, Vec3<T>());
   }
   return result;
 }

@@ -184,6 +184,13 @@ struct RenderOptions
   /// axis this many degrees from the image's x axis, counter-clockwise
   /// (docs/model.md eq. 8.3-8.4); < 0: none, the eye sees all the light.
   double polarizer = -1.0;
+  /// A linear polarizer in front of every light, its transmission axis at
+  /// this many degrees from the image's x axis as the camera sees it
+  /// (docs/model.md eq. 8.6); < 0: unpolarized lights.
+  double lightPolarizer = -1.0;
+  /// The analyser is circular (a quarter-wave plate before it: it passes
+  /// right-handed light, eq. 8.5), for measuring S3; `polarizer` must be >= 0.
+  bool circularAnalyser = false;
   /// fast-phong on the CPU: when the mesh's triangles are too small on
   /// screen for the quadratics to pay (their set-up costs more than the
   /// SIMD Phong pixels it saves), draw exact Phong instead and say so

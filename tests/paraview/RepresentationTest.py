@@ -336,6 +336,23 @@ check(difference(at0, at90) > 0.3 and difference(unpolarized, at0) > 1 and
       % (difference(at0, at90), difference(unpolarized, at0), abs(again - unpolarized).max()))
 RemoveLight(side)
 headlight.Intensity = 1.0
+# Polarized lights (eq. 8.6): the headlight's reflection off glass keeps its
+# polarization, so an analyser parallel to the light's polarizer passes the
+# highlight and a crossed one removes it; -1 gives back the picture.
+before = shot('glass_headlight')
+rep.LightPolarizer = 0
+rep.Polarizer = 0
+parallel = shot('glass_light_polarizer_0_analyser_0')
+rep.Polarizer = 90
+crossed = shot('glass_light_polarizer_0_analyser_90')
+rep.Polarizer = -1
+rep.LightPolarizer = -1
+restored = shot('glass_headlight_again')
+check(parallel.astype(float).sum() > crossed.astype(float).sum() and
+      difference(parallel, crossed) > 0.1 and abs(restored - before).max() == 0,
+      'LightPolarizer 0: the analyser at 0 passes the highlight, at 90 removes it '
+      '(mean difference %.2f); -1 restores the picture (max %d)'
+      % (difference(parallel, crossed), abs(restored - before).max()))
 rep.MaterialPreset = 'Custom'
 custom = shot('preset_custom')
 check(abs(gold_title - gold_kebab).max() == 0 and difference(gold_title, custom) > 5,

@@ -7,6 +7,7 @@
 
 #include "shadinglab/render/ColorMap.h"
 #include "shadinglab/render/Image.h"
+#include "shadinglab/render/Stokes.h"
 
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
@@ -21,11 +22,6 @@ namespace shadinglab::cli
 
 namespace
 {
-
-/// Below this S0 (linear luminance) a pixel carries no light to speak of:
-/// its DoLP is 0 rather than noise over nothing. 1e-6 is 1/3900 of the
-/// smallest non-zero 8-bit step (1/255), far under anything visible.
-constexpr double kMinStokesS0 = 1e-6;
 
 /// A cyclic hue wheel for the angle of polarization: -90 and +90 degrees
 /// are the same axis and the same colour (Wilkie & Weidlich 2010 draw AoP
@@ -75,9 +71,7 @@ bool IsPolarizationOutput(const std::string& kind)
 double WritePolarizationOutput(render::Renderer& renderer, const render::Scene& scene,
   const render::RenderOptions& options, const std::string& kind, const std::string& path)
 {
-  // eq. 8.5: I(theta) = (S0 + S1 cos 2 theta + S2 sin 2 theta) / 2, so
-  // S0 = I0 + I90, S1 = I0 - I90, S2 = I45 - I135; and through the circular
-  // analyser I_R = (S0 + S3) / 2, so S3 = 2 I_R - S0.
+  // The Stokes image from five analysed frames (eq. 8.5, render/Stokes.h).
   const bool numbers = kind == "stokes" || IsStokesComponent(kind);
   const std::string ext = path.size() >= 4 ? path.substr(path.size() - 4) : std::string();
   if (numbers != (ext == ".vti"))
@@ -85,48 +79,25 @@ double WritePolarizationOutput(render::Renderer& renderer, const render::Scene& 
     throw UsageError("--output " + kind + " writes " + (numbers ? "a .vti" : "a .png") +
       " file (got --out " + path + ")");
   }
-  render::Image frames[5];
-  for (int a = 0; a < 5; ++a)
+  render::StokesImage stokes;
+  try
   {
-    render::RenderOptions analysed = options;
-    analysed.polarizer = a < 4 ? 45.0 * a : 0.0;
-    analysed.circularAnalyser = a == 4;
-    frames[a] = RenderOrExplain(renderer, scene, analysed, nullptr, "");
-    if (frames[a].displayApplied)
-    {
-      throw UsageError("--output " + kind + " needs linear frames: --backend cpu");
-    }
+    stokes = render::MeasureStokes(renderer, scene, options);
   }
-  const int W = frames[0].width, H = frames[0].height;
+  catch (const std::invalid_argument& e)
+  {
+    throw UsageError("--output " + kind + ": " + e.what() + ", --backend cpu");
+  }
+  catch (const std::runtime_error& e)
+  {
+    throw UsageError("--output " + kind + ": " + e.what());
+  }
+  const int W = stokes.width, H = stokes.height;
   const size_t n = static_cast<size_t>(W) * H;
-  std::vector<float> s[4] = { std::vector<float>(3 * n), std::vector<float>(3 * n),
-    std::vector<float>(3 * n), std::vector<float>(3 * n) };
-  // NaN where no light arrives (S0 <= kMinStokesS0): neither quantity exists.
-  std::vector<float> dolp(n, std::nanf("")), aop(n, std::nanf(""));
-  double dolpSum = 0;
-  long long covered = 0;
-  for (size_t p = 0; p < n; ++p)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      const size_t i = 3 * p + c;
-      s[0][i] = frames[0].rgb[i] + frames[2].rgb[i];
-      s[1][i] = frames[0].rgb[i] - frames[2].rgb[i];
-      s[2][i] = frames[1].rgb[i] - frames[3].rgb[i];
-      s[3][i] = 2.0f * frames[4].rgb[i] - s[0][i];
-    }
-    const double y0 = render::Luminance(Vec3<double>(s[0][3 * p], s[0][3 * p + 1], s[0][3 * p + 2]));
-    const double y1 = render::Luminance(Vec3<double>(s[1][3 * p], s[1][3 * p + 1], s[1][3 * p + 2]));
-    const double y2 = render::Luminance(Vec3<double>(s[2][3 * p], s[2][3 * p + 1], s[2][3 * p + 2]));
-    if (frames[0].covered[p] && y0 > kMinStokesS0)
-    {
-      dolp[p] = static_cast<float>(std::min(1.0, std::sqrt(y1 * y1 + y2 * y2) / y0));
-      aop[p] = static_cast<float>(0.5 * std::atan2(y2, y1) * 180.0 / kPi<double>);
-      dolpSum += dolp[p];
-      ++covered;
-    }
-  }
-  if (kind == "stokes" || IsStokesComponent(kind))
+  const auto& s = stokes.s;
+  const auto& dolp = stokes.dolp;
+  const auto& aop = stokes.aop;
+  if (numbers)
   {
     vtkNew<vtkImageData> image;
     image->SetDimensions(W, H, 1);
@@ -173,7 +144,7 @@ double WritePolarizationOutput(render::Renderer& renderer, const render::Scene& 
     {
       throw UsageError("cannot write " + path);
     }
-    return covered ? dolpSum / covered : 0.0;
+    return stokes.meanDolp;
   }
   render::ColorMap map;
   // Pixels without light (NaN) in dark grey, apart from every colour of both maps.
@@ -195,7 +166,7 @@ double WritePolarizationOutput(render::Renderer& renderer, const render::Scene& 
   std::vector<uint8_t> rgb8(3 * n);
   for (size_t p = 0; p < n; ++p)
   {
-    const bool lit = frames[0].covered[p];
+    const bool lit = stokes.covered[p];
     const Vec3<float> c = lit ? map.Map(kind == "dolp" ? dolp[p] : aop[p]) : bg;
     for (int k = 0; k < 3; ++k)
     {
@@ -204,7 +175,7 @@ double WritePolarizationOutput(render::Renderer& renderer, const render::Scene& 
   }
   DrawColorLegend(rgb8, W, H, map, title);
   WritePng(W, H, rgb8, path);
-  return covered ? dolpSum / covered : 0.0;
+  return stokes.meanDolp;
 }
 
 } // namespace shadinglab::cli

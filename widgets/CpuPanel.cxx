@@ -3,6 +3,7 @@
 
 #include "shadinglab/model/Spectrum.h"
 
+#include "shadinglab/render/ColorMap.h"
 #include "shadinglab/render/Display.h"
 
 #include "ViewInteraction.h"
@@ -130,8 +131,7 @@ const render::Mesh& CpuMeshCache::Get(vtkPolyData* polydata, const std::string& 
   return this->Mesh;
 }
 
-const render::Image& RenderOnCpu(cpu::SoftwareRenderer& renderer, CpuMeshCache& cache,
-  const PanelSpec& spec, const ViewState& view, int width, int height, render::RenderStats* stats)
+render::Scene PanelScene(CpuMeshCache& cache, const PanelSpec& spec, const ViewState& view)
 {
   render::Scene scene;
   scene.mesh = &cache.Get(spec.mesh, view.colorBy);
@@ -147,7 +147,14 @@ const render::Image& RenderOnCpu(cpu::SoftwareRenderer& renderer, CpuMeshCache& 
   const double distance = Length(scene.camera.position);
   scene.camera.nearClip = std::max(distance - 1.01, 1e-3 * (distance + 1.01));
   scene.camera.farClip = distance + 1.01;
-  return renderer.Render(scene, PanelOptions(spec, view, width, height), stats);
+  return scene;
+}
+
+const render::Image& RenderOnCpu(cpu::SoftwareRenderer& renderer, CpuMeshCache& cache,
+  const PanelSpec& spec, const ViewState& view, int width, int height, render::RenderStats* stats)
+{
+  return renderer.Render(
+    PanelScene(cache, spec, view), PanelOptions(spec, view, width, height), stats);
 }
 
 CpuPanel::CpuPanel(const PanelSpec& spec, ViewState* view, QWidget* parent)
@@ -190,6 +197,12 @@ bool CpuPanel::RenderView()
     this->Last = RenderOnCpu(
       *this->Renderer, this->Cache, this->SpecValue, *this->View, width, height, &stats);
     this->NoteDrawnMode(stats.drawnMode, stats.autoChoice);
+    if (this->SpecValue.dolpImage)
+    {
+      this->Stokes = render::MeasureStokes(*this->Renderer,
+        PanelScene(this->Cache, this->SpecValue, *this->View),
+        PanelOptions(this->SpecValue, *this->View, width, height));
+    }
   }
   catch (const std::exception& e)
   {
@@ -201,6 +214,10 @@ bool CpuPanel::RenderView()
   if (this->SpecValue.errorReference >= 0 && this->Reference)
   {
     this->ViewWidget->Picture = this->HeatMap(this->Reference->Snapshot());
+  }
+  else if (this->SpecValue.dolpImage)
+  {
+    this->ViewWidget->Picture = this->DolpMap();
   }
   else
   {
@@ -229,6 +246,28 @@ QColor Inferno(double t)
   return QColor::fromRgbF((stops[i][0] + f * (stops[i + 1][0] - stops[i][0])) / 255.0,
     (stops[i][1] + f * (stops[i + 1][1] - stops[i][1])) / 255.0,
     (stops[i][2] + f * (stops[i + 1][2] - stops[i][2])) / 255.0);
+}
+
+/// A vertical colour bar at the image's top right: `colour(1)` at the top
+/// (labelled `top`), `colour(0)` at the bottom (labelled "0"), `unit` below.
+void DrawColourBar(QImage& image, const std::function<QColor(double)>& colour,
+  const QString& top, const QString& unit)
+{
+  QPainter painter(&image);
+  const int width = image.width(), height = image.height();
+  const int barW = 10, barH = std::max(20, height / 3), x0 = width - barW - 34, y0 = 8;
+  for (int i = 0; i < barH; ++i)
+  {
+    painter.setPen(colour(1.0 - static_cast<double>(i) / (barH - 1)));
+    painter.drawLine(x0, y0 + i, x0 + barW, y0 + i);
+  }
+  painter.setPen(Qt::white);
+  QFont font = painter.font();
+  font.setPixelSize(10);
+  painter.setFont(font);
+  painter.drawText(x0 + barW + 3, y0 + 8, top);
+  painter.drawText(x0 + barW + 3, y0 + barH, "0");
+  painter.drawText(x0 - 4 * std::max(0, static_cast<int>(unit.size()) - 4), y0 + barH + 12, unit);
 }
 
 } // namespace
@@ -281,26 +320,47 @@ QImage CpuPanel::HeatMap(const render::Image& reference)
     }
   }
   // The colour bar: 0 at the bottom, the full scale at the top.
-  QPainter painter(&image);
-  const int barW = 10, barH = std::max(20, height / 3), x0 = width - barW - 34, y0 = 8;
-  for (int i = 0; i < barH; ++i)
-  {
-    painter.setPen(Inferno(1.0 - static_cast<double>(i) / (barH - 1)));
-    painter.drawLine(x0, y0 + i, x0 + barW, y0 + i);
-  }
-  painter.setPen(Qt::white);
-  QFont font = painter.font();
-  font.setPixelSize(10);
-  painter.setFont(font);
   const bool dE = this->SpecValue.colourDifference;
-  painter.drawText(
-    x0 + barW + 3, y0 + 8, QString("%1").arg(dE ? scale : scale * 255.0, 0, 'g', 3));
-  painter.drawText(x0 + barW + 3, y0 + barH, "0");
-  painter.drawText(x0 - (dE ? 20 : 4), y0 + barH + 12, dE ? "CIEDE2000" : "/255");
+  DrawColourBar(image, Inferno, QString("%1").arg(dE ? scale : scale * 255.0, 0, 'g', 3),
+    dE ? "CIEDE2000" : "/255");
   if (!comparable)
   {
+    QPainter painter(&image);
+    painter.setPen(Qt::white);
     painter.drawText(8, 16, "reference not rendered yet");
   }
+  return image;
+}
+
+QImage CpuPanel::DolpMap() const
+{
+  const render::StokesImage& stokes = this->Stokes;
+  // The background as the other panels show it: the picture's own pixels.
+  const std::vector<uint8_t> rgb8 = this->Last.ToRGB8(this->View->display);
+  QImage image = QImage(rgb8.data(), stokes.width, stokes.height, 3 * stokes.width,
+    QImage::Format_RGB888).copy();
+  render::ColorMap viridis;
+  render::FindColorMap("viridis", viridis);
+  viridis.rangeMin = 0.0;
+  viridis.rangeMax = 1.0;
+  auto colour = [&viridis](double dolp) {
+    const Vec3<float> c = viridis.Map(dolp);
+    return QColor::fromRgbF(c.x, c.y, c.z);
+  };
+  for (int y = 0; y < stokes.height; ++y)
+  {
+    for (int x = 0; x < stokes.width; ++x)
+    {
+      const size_t p = static_cast<size_t>(y) * stokes.width + x;
+      if (stokes.covered[p])
+      {
+        // No light (DoLP NaN): dark grey, apart from every colour of viridis.
+        image.setPixelColor(
+          x, y, std::isnan(stokes.dolp[p]) ? QColor(51, 51, 51) : colour(stokes.dolp[p]));
+      }
+    }
+  }
+  DrawColourBar(image, colour, "1", "DoLP");
   return image;
 }
 

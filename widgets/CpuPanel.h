@@ -6,6 +6,8 @@
 
 #include "ShadingPanel.h"
 
+#include "shadinglab/render/Stokes.h"
+
 #include <QImage>
 
 #include <memory>
@@ -41,6 +43,10 @@ struct CpuMeshCache
  * An auto panel's choice is the renderer's (`stats`: drawnMode, autoChoice).
  * Throws what Renderer::Render throws.
  */
+/// The scene RenderOnCpu draws: `spec`'s mesh (from `cache`) and material
+/// under `view`'s camera and light, in the mesh's local frame.
+render::Scene PanelScene(CpuMeshCache& cache, const PanelSpec& spec, const ViewState& view);
+
 const render::Image& RenderOnCpu(cpu::SoftwareRenderer& renderer, CpuMeshCache& cache,
   const PanelSpec& spec, const ViewState& view, int width, int height,
   render::RenderStats* stats = nullptr);
@@ -56,6 +62,8 @@ public:
   /// a GPU panel reads its framebuffer.
   render::Image Snapshot() override;
   render::Backend Backend() const override { return render::Backend::CPU; }
+  /// A DoLP panel's last Stokes image (PanelSpec::dolpImage), else empty.
+  const render::StokesImage& LastStokes() const { return this->Stokes; }
 
 protected:
   bool RenderView() override;
@@ -65,12 +73,15 @@ protected:
 private:
   /// |I - I_ref| as a heat map (and the colour bar).
   QImage HeatMap(const render::Image& reference);
+  /// The degree of linear polarization in viridis (and the colour bar).
+  QImage DolpMap() const;
 
   std::unique_ptr<cpu::SoftwareRenderer> Renderer;
   ImageView* ViewWidget;
   ProfileOverlay* Overlay;
   CpuMeshCache Cache;
   render::Image Last;
+  render::StokesImage Stokes;
 };
 
 } // namespace shadinglab::widgets

@@ -54,6 +54,13 @@ struct PanelSpec
   /// >= 0: an analyser at this angle from the image's x axis in front of
   /// the panel's camera (RenderOptions::polarizer, docs/model.md eq. 8.3).
   double polarizer = -1.0;
+  /// >= 0: a linear polarizer at this angle in front of the lights
+  /// (RenderOptions::lightPolarizer, docs/model.md eq. 8.6).
+  double lightPolarizer = -1.0;
+  /// The panel shows the degree of linear polarization a polarization
+  /// camera measures (eq. 8.5, render/Stokes.h) in viridis instead of its
+  /// image (drawn by the CPU renderer: it needs linear frames).
+  bool dolpImage = false;
 };
 
 /// What all panels share: one camera (rotate, zoom or pan in any panel moves

@@ -45,7 +45,7 @@ Lighting<double> ViewLighting(const ViewState& view, const render::Camera& camer
 
 ShadingPanel* ShadingPanel::Create(const PanelSpec& spec, ViewState* view, QWidget* parent)
 {
-  if (spec.backend == render::Backend::GPU && spec.errorReference < 0)
+  if (spec.backend == render::Backend::GPU && spec.errorReference < 0 && !spec.dolpImage)
   {
     std::string why;
     if (GpuAnswers(why))
@@ -202,6 +202,7 @@ render::RenderOptions PanelOptions(const PanelSpec& spec, const ViewState& view,
   options.scan = spec.scan;
   options.scanPrecision = spec.scanPrecision;
   options.polarizer = spec.polarizer;
+  options.lightPolarizer = spec.lightPolarizer;
   options.width = width;
   options.height = height;
   options.background = view.background;

@@ -221,6 +221,22 @@ QWidget* MainWindow::BuildControls()
       this->ReloadScene();
     }
   });
+  auto* lightPolarizer = new QDoubleSpinBox;
+  lightPolarizer->setObjectName("lightPolarizer");
+  lightPolarizer->setRange(-1.0, 180.0);
+  lightPolarizer->setDecimals(0);
+  lightPolarizer->setSingleStep(15.0);
+  lightPolarizer->setSpecialValueText("none (unpolarized)");
+  lightPolarizer->setValue(this->Options.lightPolarizer);
+  lightPolarizer->setSuffix(" deg");
+  plotForm->addRow("polarization: light polarizer", lightPolarizer);
+  connect(lightPolarizer, &QDoubleSpinBox::editingFinished, this, [this, lightPolarizer] {
+    this->Options.lightPolarizer = lightPolarizer->value();
+    if (this->Current.name == "polarization")
+    {
+      this->ReloadScene();
+    }
+  });
   this->ThetaL = MakeSlider(0, 89, 45);
   plotForm->addRow("brdf: light angle", this->ThetaL);
   this->Shininess = MakeSlider(1, 200, 32);

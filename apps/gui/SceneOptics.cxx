@@ -53,15 +53,21 @@ Scene Polarization(const SceneOptions& o)
   auto through = [&](const char* title, const Material<double>& m, double deg) {
     widgets::PanelSpec p = Panel(title, sphere, ShadingMode::Phong, m, o.backend);
     p.polarizer = deg;
+    p.lightPolarizer = o.lightPolarizer;
     return p;
   };
+  widgets::PanelSpec plain =
+    Panel("Glass (N-BK7), no polarizer", sphere, ShadingMode::Phong, glass, o.backend);
+  plain.lightPolarizer = o.lightPolarizer;
+  widgets::PanelSpec dolp = through("Glass: degree of linear polarization", glass, -1.0);
+  dolp.dolpImage = true;
   const double theta = o.polarizer, crossed = std::fmod(o.polarizer + 90.0, 180.0);
   char a[96], b[96], c[96];
   std::snprintf(a, sizeof a, "Glass through a polarizer at %.0f deg", theta);
   std::snprintf(b, sizeof b, "Glass, polarizer at %.0f deg (crossed)", crossed);
   std::snprintf(c, sizeof c, "Gold through a polarizer at %.0f deg", theta);
-  s.panels = { Panel("Glass (N-BK7), no polarizer", sphere, ShadingMode::Phong, glass, o.backend),
-    through(a, glass, theta), through(b, glass, crossed), through(c, gold, theta) };
+  s.panels = { plain, through(a, glass, theta), through(b, glass, crossed), through(c, gold, theta),
+    dolp };
   // The light from the left, nearly at right angles to the view: the
   // highlight's facets see it near Brewster's angle (56.6 degrees), where
   // glass reflects only s-polarized light, vertical in the image.
@@ -76,8 +82,12 @@ Scene Polarization(const SceneOptions& o)
     "passes the glass's highlight, the crossed one at 0\u00b0 nearly removes it (turn it "
     "with 'polarization: polarizer'). Diffuse light is unpolarized and passes by half. "
     "Gold, a conductor, reflects both polarizations strongly, so its highlight changes "
-    "little. The plot: Rs, Rp and the degree of linear polarization against the angle of "
-    "incidence; the marker is Brewster's angle.";
+    "little. The last panel is what a polarization camera measures: the degree of linear "
+    "polarization, highest where the highlight's facets see the light near Brewster's angle. "
+    "With 'polarization: light polarizer' the light itself is polarized: a polarizer crossed "
+    "with it removes the highlights (cross-polarized photography), and gold turns the "
+    "light elliptical. The plot: Rs, Rp and the degree of linear polarization against the "
+    "angle of incidence; the marker is Brewster's angle.";
   s.formula = "I(&theta;) = (S<sub>0</sub> + S<sub>1</sub> cos 2&theta; + S<sub>2</sub> sin "
               "2&theta;)/2; specular S = (A, B, 0, 0), A = (R<sub>s</sub>+R<sub>p</sub>)/2, "
               "B = (R<sub>s</sub>-R<sub>p</sub>)/2 &nbsp; (eq. 8.1-8.4)";

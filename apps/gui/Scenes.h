@@ -61,6 +61,8 @@ struct SceneOptions
   double distance = 3.0;
   /// polarization: the analyser's angle from the image's x axis (degrees).
   double polarizer = 0.0;
+  /// polarization: the lights' polarizer angle (degrees; < 0: unpolarized).
+  double lightPolarizer = -1.0;
 };
 
 struct Scene

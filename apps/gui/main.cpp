@@ -32,7 +32,7 @@ namespace
 const char* kUsage =
   "usage: shadinglab-gui [--scene NAME] [INPUT] [--backend gpu|cpu] [--size WxH]\n"
   "                      [--variant corrugated|isosurface] [--rotation DEG] [--distance R]\n"
-  "                      [--polarizer DEG]\n"
+  "                      [--polarizer DEG] [--light-polarizer DEG]\n"
   "                      [--screenshot FILE.png] [--profile FILE.csv] [--color-by ARRAY]\n"
   "                      [--nonlinear-subdivision N]\n"
   "       shadinglab-gui --list-scenes | --version\n"
@@ -142,6 +142,17 @@ int main(int argc, char** argv)
         if (*end || !(options.polarizer >= 0.0 && options.polarizer <= 180.0))
         {
           return Fail("--polarizer must be an angle in [0, 180] degrees (got '" + v + "')");
+        }
+      }
+      else if (a == "--light-polarizer")
+      {
+        const std::string v = value("--light-polarizer");
+        char* end = nullptr;
+        options.lightPolarizer = std::strtod(v.c_str(), &end);
+        if (*end || !(options.lightPolarizer >= -1.0 && options.lightPolarizer <= 180.0))
+        {
+          return Fail(
+            "--light-polarizer must be an angle in [0, 180] degrees or -1 (got '" + v + "')");
         }
       }
       else if (a == "--rotation")

@@ -6,6 +6,7 @@
 #include "BrdfPlot.h"
 #include "ColorLegend.h"
 #include "ComparisonWidget.h"
+#include "CpuPanel.h"
 #include "MainWindow.h"
 #include "MaterialEditor.h"
 #include "shadinglab/model/Spectrum.h"
@@ -24,6 +25,7 @@
 
 #include <QApplication>
 #include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QMimeData>
 #include <QMouseEvent>
 #include <QSlider>
@@ -938,13 +940,48 @@ void ExplorerGLTest::PolarizationSceneShowsBrewster()
 {
   auto window = Open("polarization", render::Backend::CPU);
   widgets::ComparisonWidget* view = window->Comparison();
-  QCOMPARE(view->PanelCount(), 4);
+  QCOMPARE(view->PanelCount(), 5);
   // --polarizer 0 by default: panel 2 at 0 degrees, panel 3 crossed (90).
   const double none = MeanLuminance(view->Panel(0)->Snapshot());
   const double at0 = MeanLuminance(view->Panel(1)->Snapshot());
   const double at90 = MeanLuminance(view->Panel(2)->Snapshot());
   QVERIFY2(at90 > 1.5 * at0, qPrintable(QString("%1 vs %2").arg(at90).arg(at0)));
   QVERIFY(none > at90 && none > at0);
+  // The DoLP panel: what a polarization camera measures. Its most
+  // polarized pixels are the highlight's, s-polarized: vertical (AoP +-90).
+  auto* dolpPanel = dynamic_cast<widgets::CpuPanel*>(view->Panel(4));
+  QVERIFY(dolpPanel);
+  auto dolpSummary = [](const render::StokesImage& stokes) {
+    double peak = 0.0, peakAop = 0.0;
+    for (size_t p = 0; p < stokes.dolp.size(); ++p)
+    {
+      if (!std::isnan(stokes.dolp[p]) && stokes.dolp[p] > peak)
+      {
+        peak = stokes.dolp[p];
+        peakAop = stokes.aop[p];
+      }
+    }
+    return std::make_pair(peak, peakAop);
+  };
+  const auto [dolpPeak, peakAop] = dolpSummary(dolpPanel->LastStokes());
+  QVERIFY2(dolpPeak > 0.4 && dolpPeak <= 1.0 && std::abs(std::abs(peakAop) - 90.0) < 15.0,
+    qPrintable(QString("DoLP %1 at AoP %2").arg(dolpPeak).arg(peakAop)));
+  // A polarizer in front of the light along the image's x axis: the light
+  // meets the highlight's facets p-polarized near Brewster's angle, where
+  // glass hardly reflects it: the highlight fades in every panel, and the
+  // DoLP panel measures the polarized light (horizontal now).
+  auto* lightPolarizer = window->findChild<QDoubleSpinBox*>("lightPolarizer");
+  QVERIFY(lightPolarizer);
+  lightPolarizer->setValue(0.0);
+  emit lightPolarizer->editingFinished();
+  Settle();
+  window->RefreshNow();
+  const double polarizedLight = MeanLuminance(view->Panel(0)->Snapshot());
+  QVERIFY2(polarizedLight < 0.75 * none,
+    qPrintable(QString("%1 vs %2").arg(polarizedLight).arg(none)));
+  const auto [peakP, peakAopP] = dolpSummary(dolpPanel->LastStokes());
+  QVERIFY2(std::abs(peakAopP) < 30.0 && std::abs(peakP - dolpPeak) > 0.02,
+    qPrintable(QString("DoLP %1 at AoP %2").arg(peakP).arg(peakAopP)));
   const std::string csv = window->PlotCsv();
   const auto dolp = StudySeries(csv, "glass DoLP");
   QVERIFY2(dolp.size() == 90, csv.c_str());

@@ -162,7 +162,8 @@ void BM_CpuCookTorrance(benchmark::State& state)
 /// Spectral Fresnel (16 wavelengths, docs/model.md eq. 7.3) against the
 /// three-sample RGB material, frame by frame in alternating pairs (as
 /// AlternateOneAndTwoThreads): Phong/Cook-Torrance gold, 1920x1080,
-/// range(1) threads; range(2) 1: an analyser instead of the spectrum.
+/// range(1) threads; range(2) 1: an analyser instead of the spectrum; 2: a
+/// polarizer in front of the light as well (Fresnel's full Mueller matrix).
 /// `ratio` is the median of spectral (or polarized) / RGB over the pairs.
 void BM_CpuSpectral(benchmark::State& state);
 
@@ -275,6 +276,7 @@ void BM_CpuSpectral(benchmark::State& state)
 {
   const Scene& scene = GetScene(static_cast<int>(state.range(0)));
   const bool polarized = state.range(2) != 0;
+  const bool polarizedLight = state.range(2) == 2;
   sl::Material<double> rgb = sl::FindMaterialPreset("gold")->material;
   sl::Material<double> spectral = rgb;
   sl::SetSpectral(spectral, *sl::PresetDispersion("gold"));
@@ -287,6 +289,9 @@ void BM_CpuSpectral(benchmark::State& state)
   // gold without (the polarized specular term's cost, eq. 8.4).
   render::RenderOptions analysed = opt;
   analysed.polarizer = 30.0;
+  // range(2) = 2: and a polarizer at 45 degrees in front of the light
+  // (eq. 8.6: the rs rp* phase terms, the light's Stokes frame).
+  analysed.lightPolarizer = polarizedLight ? 45.0 : -1.0;
   const render::Scene scenes[2] = {
     { &scene.mesh, scene.camera, Headlight(scene.camera), polarized ? rgb : spectral },
     { &scene.mesh, scene.camera, Headlight(scene.camera), rgb } };
@@ -300,7 +305,9 @@ void BM_CpuSpectral(benchmark::State& state)
     polarized ? PairNames{ "ms_polarized", "ms_rgb", "ratio", "ratio_best" }
               : PairNames{ "ms_spectral", "ms_rgb", "ratio", "ratio_best" });
   state.SetLabel(std::string("phong/cook-torrance gold, ") +
-    (polarized ? "through an analyser" : "spectral (16)") + " against RGB, threads=" +
+    (polarizedLight ? "polarized light through an analyser"
+                    : polarized ? "through an analyser" : "spectral (16)") +
+    " against RGB, threads=" +
     std::to_string(opt.threads));
 }
 
@@ -720,7 +727,7 @@ BENCHMARK(BM_CpuCookTorrance)
   ->Unit(benchmark::kMillisecond)
   ->UseRealTime();
 BENCHMARK(BM_CpuSpectral)
-  ->ArgsProduct({ { 0, 1 }, { 2 }, { 0, 1 } })
+  ->ArgsProduct({ { 0, 1 }, { 2 }, { 0, 1, 2 } })
   ->Unit(benchmark::kMillisecond)
   ->UseManualTime();
 BENCHMARK(BM_ShadingLabGLSpectral)

@@ -83,7 +83,9 @@ std::string Documentation(const sr::SettingRow& row)
   {
     doc += ". Range " + sr::RangeText(row);
   }
-  return Escape(doc + ". Default: " + DefaultLabel(row) + ". (setting '" + row.key + "')");
+  const std::string def = DefaultLabel(row);
+  return Escape(
+    doc + ". Default: " + (def.empty() ? "none" : def) + ". (setting '" + row.key + "')");
 }
 
 void Property(std::ostream& out, const sr::SettingRow& row)
@@ -142,12 +144,24 @@ void Property(std::ostream& out, const sr::SettingRow& row)
     {
       out << "      <StringVectorProperty" << head
           << " command=\"SetTextSetting\" number_of_elements=\"1\" default_values=\""
-          << Escape(DefaultLabel(row)) << "\">\n        <StringListDomain name=\"list\">";
-      for (const auto& c : row.choices)
+          << Escape(DefaultLabel(row)) << "\">\n";
+      if (row.choices.empty())
       {
-        out << "<String value=\"" << Escape(c.label) << "\"/>";
+        // Free text is a file name (--nk): ParaView's file chooser, on the
+        // server's file system.
+        out << "        <FileListDomain name=\"files\"/>\n"
+            << "        <Hints><FileChooser extensions=\"yml yaml\" "
+               "file_description=\"refractiveindex.info optical constants\"/></Hints>\n";
       }
-      out << "</StringListDomain>\n";
+      else
+      {
+        out << "        <StringListDomain name=\"list\">";
+        for (const auto& c : row.choices)
+        {
+          out << "<String value=\"" << Escape(c.label) << "\"/>";
+        }
+        out << "</StringListDomain>\n";
+      }
       out << "        <Documentation>" << Documentation(row) << "</Documentation>\n"
           << "      </StringVectorProperty>\n";
       break;

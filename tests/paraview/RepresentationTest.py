@@ -312,6 +312,28 @@ check(difference(gold_spectral, gold_title) > 0.3 and spectral_mean <= 1.0 and
       'Spectral gold differs from RGB gold (%.2f) and matches the standalone renderer '
       '(mean %.3f over %d pixels)' % (difference(gold_spectral, gold_title), spectral_mean,
                                        mask.sum()))
+# OpticalDataFile (--nk): a refractiveindex.info file on the server gives
+# spectral Fresnel its n and k. Gold's own table draws the preset's
+# spectral gold; copper's table on the gold preset draws copper; a file
+# that does not parse is one error and the file is set aside.
+optical = os.path.join(os.path.dirname(mesh), 'optical')
+rep.OpticalDataFile = os.path.join(optical, 'Au_Johnson.yml')
+gold_file = shot('nk_gold_file')
+rep.OpticalDataFile = os.path.join(optical, 'Cu_Johnson.yml')
+copper_file = shot('nk_copper_file')
+bad_nk = os.path.join(outdir, 'bad_nk.yml')
+with open(bad_nk, 'w') as f:
+    f.write('DATA:\n  - type: formula 5\n    coefficients: 1 2 3\n')
+rep.OpticalDataFile = bad_nk
+after_bad = shot('nk_bad_file')
+rep.OpticalDataFile = ''
+check(abs(gold_file.astype(int) - gold_spectral).max() <= 1 and
+      difference(copper_file, gold_spectral) > 1 and
+      abs(after_bad.astype(int) - gold_spectral).max() <= 1,
+      'OpticalDataFile: gold\'s table draws the spectral gold preset (max %d), copper\'s '
+      'another metal (%.2f), a bad file is refused and set aside (max %d)'
+      % (abs(gold_file.astype(int) - gold_spectral).max(), difference(copper_file, gold_spectral),
+         abs(after_bad.astype(int) - gold_spectral).max()))
 # A polarizer in front of the camera (docs/model.md section 8): glass lit
 # from the side, its highlight s-polarized; crossed polarizers give
 # different pictures, and -1 (none) gives back the unpolarized one exactly.

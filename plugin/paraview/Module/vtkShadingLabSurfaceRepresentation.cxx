@@ -94,6 +94,16 @@ void vtkShadingLabSurfaceRepresentation::SetSetting(
       vtkErrorMacro("ShadingLab: " << problem);
       return;
     }
+    if (row->key == "nk")
+    {
+      // Read once here (on the server that draws), not per frame.
+      const std::string unread = sl::render::ReadNkFile(in.Parameters);
+      if (!unread.empty())
+      {
+        vtkErrorMacro("ShadingLab: " << unread << " (OpticalDataFile cleared)");
+        in.Parameters.nkFile.clear();
+      }
+    }
   }
   in.Dirty = true;
   if (row->group == sl::render::SettingGroup::Mesh)

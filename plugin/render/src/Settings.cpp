@@ -611,8 +611,9 @@ void MaterialRows(std::vector<SettingRow>& t)
   {
     SettingRow r = Row("nk", "OpticalDataFile", "Optical Data File", G::Material, K::Text);
     r.doc = "a refractiveindex.info YAML file (tabulated nk, tabulated n, or Sellmeier "
-            "formula 2) covering 380-780 nm: the material's n and k for --spectral";
-    r.frontEnds = kCli;
+            "formula 2) covering 380-780 nm: the material's n and k for --spectral (in "
+            "ParaView: a file on the server; empty: the preset's data)";
+    r.frontEnds = kCli | kParaView;
     r.metavar = "FILE.yml";
     r.set = [](Settings& s, const SettingValue& v) {
       s.nkFile = v.text;

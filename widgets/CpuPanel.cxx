@@ -339,10 +339,7 @@ QImage CpuPanel::DolpMap() const
   const std::vector<uint8_t> rgb8 = this->Last.ToRGB8(this->View->display);
   QImage image = QImage(rgb8.data(), stokes.width, stokes.height, 3 * stokes.width,
     QImage::Format_RGB888).copy();
-  render::ColorMap viridis;
-  render::FindColorMap("viridis", viridis);
-  viridis.rangeMin = 0.0;
-  viridis.rangeMax = 1.0;
+  const render::ColorMap viridis = render::DolpColorMap();
   auto colour = [&viridis](double dolp) {
     const Vec3<float> c = viridis.Map(dolp);
     return QColor::fromRgbF(c.x, c.y, c.z);
@@ -354,9 +351,7 @@ QImage CpuPanel::DolpMap() const
       const size_t p = static_cast<size_t>(y) * stokes.width + x;
       if (stokes.covered[p])
       {
-        // No light (DoLP NaN): dark grey, apart from every colour of viridis.
-        image.setPixelColor(
-          x, y, std::isnan(stokes.dolp[p]) ? QColor(51, 51, 51) : colour(stokes.dolp[p]));
+        image.setPixelColor(x, y, colour(stokes.dolp[p])); // NaN, no light: the map's grey
       }
     }
   }

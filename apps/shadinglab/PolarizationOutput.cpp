@@ -23,29 +23,6 @@ namespace shadinglab::cli
 namespace
 {
 
-/// A cyclic hue wheel for the angle of polarization: -90 and +90 degrees
-/// are the same axis and the same colour (Wilkie & Weidlich 2010 draw AoP
-/// as hue).
-render::ColorMap HueWheel()
-{
-  render::ColorMap map;
-  map.label = "hue wheel (cyclic)";
-  constexpr int kBins = 256;
-  for (int i = 0; i < kBins; ++i)
-  {
-    const double h = 6.0 * i / kBins;
-    const int sector = static_cast<int>(h) % 6;
-    const float f = static_cast<float>(h - std::floor(h));
-    const float up = f, down = 1.0f - f;
-    const Vec3<float> rgb[6] = { { 1, up, 0 }, { down, 1, 0 }, { 0, 1, up }, { 0, down, 1 },
-      { up, 0, 1 }, { 1, 0, down } };
-    map.colors.push_back(rgb[sector] * 0.9f + Vec3<float>(0.05f, 0.05f, 0.05f));
-  }
-  map.rangeMin = -90.0;
-  map.rangeMax = 90.0;
-  return map;
-}
-
 /// s0 .. s3: one Stokes component, a .vti of its own.
 bool IsStokesComponent(const std::string& kind)
 {
@@ -146,22 +123,9 @@ double WritePolarizationOutput(render::Renderer& renderer, const render::Scene& 
     }
     return stokes.meanDolp;
   }
-  render::ColorMap map;
-  // Pixels without light (NaN) in dark grey, apart from every colour of both maps.
-  std::string title;
-  if (kind == "dolp")
-  {
-    render::FindColorMap("viridis", map);
-    map.rangeMin = 0.0;
-    map.rangeMax = 1.0;
-    title = "DoLP";
-  }
-  else
-  {
-    map = HueWheel();
-    title = "AoP (deg from x)";
-  }
-  map.nanColor = Vec3<float>(0.2f, 0.2f, 0.2f);
+  const render::ColorMap map =
+    kind == "dolp" ? render::DolpColorMap() : render::AopColorMap();
+  const std::string title = kind == "dolp" ? "DoLP" : "AoP (deg from x)";
   const Vec3<float> bg = options.background;
   std::vector<uint8_t> rgb8(3 * n);
   for (size_t p = 0; p < n; ++p)

@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "CpuBackend.h"
 
+#include "shadinglab/render/ColorMap.h"
+#include "shadinglab/render/Stokes.h"
+
 #include "PolyDataMesh.h"
 #include "VtkCamera.h"
 #include "VtkLights.h"
@@ -150,6 +153,35 @@ std::string CpuBackend::Draw(
   catch (const std::exception& e)
   {
     return e.what();
+  }
+  if (settings.polarizationImage != render::PolarizationImage::Intensity)
+  {
+    // What a polarization camera measures, in false colour (eq. 8.5): the
+    // picture's depth, colours already display values.
+    try
+    {
+      const render::StokesImage stokes = render::MeasureStokes(this->Renderer, scene, options);
+      const bool dolp = settings.polarizationImage == render::PolarizationImage::Dolp;
+      const render::ColorMap map = dolp ? render::DolpColorMap() : render::AopColorMap();
+      this->Polarization.width = stokes.width;
+      this->Polarization.height = stokes.height;
+      this->Polarization.covered = stokes.covered;
+      this->Polarization.depth = stokes.depth;
+      this->Polarization.rgb.resize(3 * stokes.covered.size());
+      for (size_t p = 0; p < stokes.covered.size(); ++p)
+      {
+        const Vec3<float> c = map.Map(dolp ? stokes.dolp[p] : stokes.aop[p]);
+        this->Polarization.rgb[3 * p] = c.x;
+        this->Polarization.rgb[3 * p + 1] = c.y;
+        this->Polarization.rgb[3 * p + 2] = c.z;
+      }
+      this->Polarization.displayApplied = true;
+      image = &this->Polarization;
+    }
+    catch (const std::exception& e)
+    {
+      return e.what();
+    }
   }
 
   // The hand-over: colour (display values, alpha = covered) and depth of

@@ -67,6 +67,8 @@ private:
   std::string FromScalars;
   int ConversionCount = 0;
   render::RenderStats Stats;
+  /// A polarization image's false colours (Settings::polarizationImage).
+  render::Image Polarization;
   double HandOverMs = 0;
   std::vector<unsigned char> Rgba;
   std::vector<float> Depth;

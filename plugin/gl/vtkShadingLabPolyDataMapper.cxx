@@ -414,6 +414,11 @@ vtkPolyData* vtkShadingLabPolyDataMapper::PrepareInput(vtkPolyData* input)
 bool vtkShadingLabPolyDataMapper::ChooseCpu(vtkRenderer* ren)
 {
   Internals& in = *this->Internal;
+  if (in.Settings.polarizationImage != sl::render::PolarizationImage::Intensity)
+  {
+    in.BackendChoice = "cpu: a polarization image is measured on the CPU renderer's linear frames";
+    return true;
+  }
   switch (in.Settings.backend)
   {
     case sl::render::MapperBackend::GPU:

@@ -356,6 +356,26 @@ check(difference(at0, at90) > 0.3 and difference(unpolarized, at0) > 1 and
       abs(again - unpolarized).max() == 0,
       'Polarizer 0 and 90 differ (%.2f), both darker than none (%.2f), -1 restores it (max %d)'
       % (difference(at0, at90), difference(unpolarized, at0), abs(again - unpolarized).max()))
+# PolarizationImage (eq. 8.5): what a polarization camera measures, drawn
+# by the CPU backend in false colour. Near Brewster's angle the glass's
+# highlight is strongly polarized (viridis' yellow end: red and green high,
+# blue low), the diffuse rest hardly (its purple end); AoP is another
+# picture; Intensity gives back the picture exactly.
+rep.PolarizationImage = 'DoLP'
+dolp_image = shot('glass_dolp')
+rep.PolarizationImage = 'AoP'
+aop_image = shot('glass_aop')
+rep.PolarizationImage = 'Intensity'
+intensity_again = shot('glass_intensity_again')
+lit = covered(unpolarized)
+brightest = unpolarized[..., :3].astype(int).sum(axis=-1) * lit
+peak = numpy.unravel_index(numpy.argmax(brightest), brightest.shape)
+hi = dolp_image[peak][:3].astype(int)
+check(hi[1] > 170 and hi[2] < 120 and difference(dolp_image, aop_image) > 5 and
+      abs(intensity_again - unpolarized).max() == 0,
+      'PolarizationImage DoLP: the highlight is highly polarized (colour %s); AoP differs (%.1f); '
+      'Intensity restores the picture (max %d)'
+      % (list(hi), difference(dolp_image, aop_image), abs(intensity_again - unpolarized).max()))
 RemoveLight(side)
 headlight.Intensity = 1.0
 # Polarized lights (eq. 8.6): the headlight's reflection off glass keeps its

@@ -77,4 +77,41 @@ double ColorMap::LegendTick(int k, int count) const
   return std::abs(value) <= kLegendZeroFraction * std::abs(width) ? 0.0 : value;
 }
 
+namespace
+{
+/// Pixels without light, apart from every colour of both maps.
+const Vec3<float> kNoLightColor{ 0.2f, 0.2f, 0.2f };
+} // namespace
+
+ColorMap DolpColorMap()
+{
+  ColorMap map;
+  FindColorMap("viridis", map);
+  map.rangeMin = 0.0;
+  map.rangeMax = 1.0;
+  map.nanColor = kNoLightColor;
+  return map;
+}
+
+ColorMap AopColorMap()
+{
+  ColorMap map;
+  map.label = "hue wheel (cyclic)";
+  constexpr int kBins = 256;
+  for (int i = 0; i < kBins; ++i)
+  {
+    const double h = 6.0 * i / kBins;
+    const int sector = static_cast<int>(h) % 6;
+    const float f = static_cast<float>(h - std::floor(h));
+    const float up = f, down = 1.0f - f;
+    const Vec3<float> rgb[6] = { { 1, up, 0 }, { down, 1, 0 }, { 0, 1, up }, { 0, down, 1 },
+      { up, 0, 1 }, { 1, 0, down } };
+    map.colors.push_back(rgb[sector] * 0.9f + Vec3<float>(0.05f, 0.05f, 0.05f));
+  }
+  map.rangeMin = -90.0;
+  map.rangeMax = 90.0;
+  map.nanColor = kNoLightColor;
+  return map;
+}
+
 } // namespace shadinglab::render

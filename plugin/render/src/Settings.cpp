@@ -185,6 +185,23 @@ void RenderRows(std::vector<SettingRow>& t)
     t.push_back(r);
   }
   {
+    SettingRow r = Row("polarization-image", "PolarizationImage", "Polarization Image", G::Render,
+      K::Choice);
+    r.choices = { { "intensity", "Intensity" }, { "dolp", "DoLP" }, { "aop", "AoP" } };
+    r.doc = "what the surface shows: the picture, or what a polarization camera measures through "
+            "analysers at 0/45/90/135 degrees: the degree of linear polarization (viridis, 0 to "
+            "1) or its angle from the image's x axis (a cyclic hue wheel, -90 to 90 degrees); "
+            "dark grey where no light arrives (eq. 8.5; drawn by the CPU backend; the command "
+            "line's render --output)";
+    r.frontEnds = kParaView | kMapper;
+    r.metavar = "I";
+    r.set = [](Settings& s, const SettingValue& v) {
+      s.polarizationImage = static_cast<PolarizationImage>(static_cast<int>(v.numbers[0]));
+    };
+    r.get = [](const Settings& s) { return Number(static_cast<int>(s.polarizationImage)); };
+    t.push_back(r);
+  }
+  {
     SettingRow r = Row("scan", "ScanConversion", "Scan Conversion", G::Render, K::Choice);
     r.choices = ChoicesOf(kScanConversions);
     r.doc = "per-row spans (default), or the lecture's incremental DDA: edges stepped row to "

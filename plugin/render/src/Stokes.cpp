@@ -39,6 +39,7 @@ StokesImage MeasureStokes(Renderer& renderer, const Scene& scene, const RenderOp
   out.dolp.assign(n, std::nanf(""));
   out.aop.assign(n, std::nanf(""));
   out.covered = frames[0].covered;
+  out.depth = frames[0].depth;
   double dolpSum = 0.0;
   long long counted = 0;
   for (size_t p = 0; p < n; ++p)

@@ -53,4 +53,11 @@ const std::vector<ColorMapName>& ColorMapNames();
 /// false when there is none.
 bool FindColorMap(const std::string& name, ColorMap& map);
 
+/// The false colours of a polarization image (docs/model.md eq. 8.5): DoLP
+/// in viridis over [0, 1], or the angle of polarization on a cyclic hue
+/// wheel over [-90, 90] degrees (-90 and 90 are one axis and one colour;
+/// Wilkie & Weidlich 2010 draw AoP as hue); NaN (no light) dark grey.
+ColorMap DolpColorMap();
+ColorMap AopColorMap();
+
 } // namespace shadinglab::render

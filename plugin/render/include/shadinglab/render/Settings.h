@@ -67,6 +67,15 @@ enum class MapperBackend
   Auto
 };
 
+/// What a vtkShadingLabPolyDataMapper shows (docs/model.md eq. 8.5): the
+/// picture, or what a polarization camera measures, in false colour.
+enum class PolarizationImage
+{
+  Intensity, ///< the picture
+  Dolp,      ///< degree of linear polarization, viridis over [0, 1]
+  Aop        ///< angle of polarization, a cyclic hue wheel over [-90, 90] deg
+};
+
 /// Auto's mesh size. On llvmpipe (bench/paraview_backends.py, pvbatch,
 /// 1920x1080, 2 cores, median of 7 frames x 3 runs, docs/paraview.md) the
 /// two backends tie at ~10,000 triangles (Phong 79 ms CPU, 76-83 ms GPU: the
@@ -105,6 +114,9 @@ struct Settings
   /// Surface's) pixels: OpenGL shaders, or the CPU renderer handing its
   /// colour and depth to OpenGL (plugin/gl/CpuBackend.h).
   MapperBackend backend = MapperBackend::GPU;
+  /// Measured on the CPU renderer's linear frames: anything but Intensity
+  /// draws through the CPU backend.
+  PolarizationImage polarizationImage = PolarizationImage::Intensity;
 };
 
 enum class SettingGroup

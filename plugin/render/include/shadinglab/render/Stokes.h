@@ -26,6 +26,8 @@ struct StokesImage
   /// linear polarization of the luminances; NaN where no light arrives.
   std::vector<float> dolp, aop;
   std::vector<uint8_t> covered;
+  /// The frames' depth, when options.keepDepth asked for it.
+  std::vector<float> depth;
   /// DoLP averaged over the pixels that have one.
   double meanDolp = 0.0;
 };

@@ -146,21 +146,25 @@ std::string CpuBackend::Draw(
   // command line, and would make the backends' pictures differ.
   options.fastPhongFallback = false;
   const render::Image* image = nullptr;
-  try
+  if (settings.polarizationImage == render::PolarizationImage::Intensity)
   {
-    image = &this->Renderer.Render(scene, options, &this->Stats);
+    try
+    {
+      image = &this->Renderer.Render(scene, options, &this->Stats);
+    }
+    catch (const std::exception& e)
+    {
+      return e.what();
+    }
   }
-  catch (const std::exception& e)
-  {
-    return e.what();
-  }
-  if (settings.polarizationImage != render::PolarizationImage::Intensity)
+  else
   {
     // What a polarization camera measures, in false colour (eq. 8.5): the
     // picture's depth, colours already display values.
     try
     {
-      const render::StokesImage stokes = render::MeasureStokes(this->Renderer, scene, options);
+      const render::StokesImage stokes =
+        render::MeasureStokes(this->Renderer, scene, options, &this->Stats);
       const bool dolp = settings.polarizationImage == render::PolarizationImage::Dolp;
       const render::ColorMap map = dolp ? render::DolpColorMap() : render::AopColorMap();
       this->Polarization.width = stokes.width;

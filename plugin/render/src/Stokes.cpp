@@ -10,7 +10,8 @@
 namespace shadinglab::render
 {
 
-StokesImage MeasureStokes(Renderer& renderer, const Scene& scene, const RenderOptions& options)
+StokesImage MeasureStokes(
+  Renderer& renderer, const Scene& scene, const RenderOptions& options, RenderStats* stats)
 {
   // eq. 8.5: I(theta) = (S0 + S1 cos 2 theta + S2 sin 2 theta) / 2, so
   // S0 = I0 + I90, S1 = I0 - I90, S2 = I45 - I135; and through the circular
@@ -21,7 +22,7 @@ StokesImage MeasureStokes(Renderer& renderer, const Scene& scene, const RenderOp
     RenderOptions analysed = options;
     analysed.polarizer = a < 4 ? 45.0 * a : 0.0;
     analysed.circularAnalyser = a == 4;
-    frames[a] = renderer.Render(scene, analysed, nullptr);
+    frames[a] = renderer.Render(scene, analysed, a == 0 ? stats : nullptr);
     if (frames[a].displayApplied)
     {
       throw std::invalid_argument(

@@ -36,9 +36,11 @@ struct StokesImage
  * Renders `scene` through analysers at 0, 45, 90 and 135 degrees and a
  * circular one: S0 = I0 + I90, S1 = I0 - I90, S2 = I45 - I135,
  * S3 = 2 I_R - S0. `options.polarizer` is ignored (the analysers are
- * this function's). Needs linear frames (the CPU renderer): throws
- * std::invalid_argument with a one-line message otherwise.
+ * this function's). `stats` receives the first frame's. Needs linear
+ * frames (the CPU renderer): throws std::invalid_argument with a one-line
+ * message otherwise.
  */
-StokesImage MeasureStokes(Renderer& renderer, const Scene& scene, const RenderOptions& options);
+StokesImage MeasureStokes(Renderer& renderer, const Scene& scene, const RenderOptions& options,
+  RenderStats* stats = nullptr);
 
 } // namespace shadinglab::render

@@ -2,6 +2,7 @@
 #include "MeshRepair.h"
 
 #include "Geometry.h"
+#include "Orientation.h"
 
 #include <OpenMesh/Core/Mesh/PolyMesh_ArrayKernelT.hh>
 
@@ -138,131 +139,6 @@ std::vector<int64_t> WeldRepresentatives(const double* points, int64_t np,
   return representative;
 }
 
-/// Consistent orientation per connected component (BFS over the manifold
-/// edges' neighbours), turned outward when the component is closed (its
-/// signed volume positive): whether each face is to be flipped.
-std::vector<uint8_t> OrientComponents(const OwnedMesh& mesh,
-  const std::vector<std::vector<std::pair<int64_t, bool>>>& neighbours,
-  const std::vector<uint8_t>& touchesOpenEdge, bool fixOrientation, RepairReport& report)
-{
-  const int64_t faces = mesh.NumberOfPolygons();
-  std::vector<uint8_t> flip(static_cast<size_t>(faces), 0);
-  std::vector<int64_t> component(static_cast<size_t>(faces), -1);
-  for (int64_t root = 0; root < faces; ++root)
-  {
-    if (component[root] >= 0)
-    {
-      continue;
-    }
-    const int64_t id = report.components++;
-    std::vector<int64_t> members;
-    std::queue<int64_t> queue;
-    queue.push(root);
-    component[root] = id;
-    bool closed = true;
-    while (!queue.empty())
-    {
-      const int64_t f = queue.front();
-      queue.pop();
-      members.push_back(f);
-      closed &= touchesOpenEdge[f] == 0;
-      for (const auto& [g, same] : neighbours[f])
-      {
-        if (component[g] >= 0)
-        {
-          continue;
-        }
-        component[g] = id;
-        flip[g] = fixOrientation ? static_cast<uint8_t>(flip[f] ^ (same ? 1 : 0)) : 0;
-        queue.push(g);
-      }
-    }
-    if (fixOrientation && closed)
-    {
-      // Signed volume of the component as it will be oriented.
-      double volume = 0;
-      for (int64_t f : members)
-      {
-        const int64_t b = mesh.offsets[f], e = mesh.offsets[f + 1];
-        const double* p0 = &mesh.points[3 * mesh.connectivity[b]];
-        for (int64_t k = b + 1; k + 1 < e; ++k)
-        {
-          const double* p1 = &mesh.points[3 * mesh.connectivity[k]];
-          const double* p2 = &mesh.points[3 * mesh.connectivity[k + 1]];
-          const double v = p0[0] * (p1[1] * p2[2] - p1[2] * p2[1]) -
-            p0[1] * (p1[0] * p2[2] - p1[2] * p2[0]) + p0[2] * (p1[0] * p2[1] - p1[1] * p2[0]);
-          volume += flip[f] ? -v : v;
-        }
-      }
-      if (volume < 0)
-      {
-        for (int64_t f : members)
-        {
-          flip[f] ^= 1;
-        }
-      }
-    }
-  }
-  return flip;
-}
-
-/// Each face's neighbours through manifold edges (two faces), with whether
-/// the two traverse the edge the same way (inconsistent orientation), and
-/// which faces touch an open or non-manifold edge (counted in `report`).
-/// The edges are found as (min, max, face, forward) uses, sorted.
-void FaceNeighbours(const OwnedMesh& mesh,
-  std::vector<std::vector<std::pair<int64_t, bool>>>& neighbours,
-  std::vector<uint8_t>& touchesOpenEdge, RepairReport& report)
-{
-  const int64_t faces = mesh.NumberOfPolygons();
-  struct EdgeUse
-  {
-    int64_t a, b, face;
-    bool forward;
-  };
-  std::vector<EdgeUse> uses;
-  uses.reserve(mesh.connectivity.size());
-  for (int64_t f = 0; f < faces; ++f)
-  {
-    const int64_t b = mesh.offsets[f], e = mesh.offsets[f + 1];
-    for (int64_t k = b; k < e; ++k)
-    {
-      const int64_t u = mesh.connectivity[k], v = mesh.connectivity[k + 1 < e ? k + 1 : b];
-      uses.push_back({ std::min(u, v), std::max(u, v), f, u < v });
-    }
-  }
-  std::sort(uses.begin(), uses.end(), [](const EdgeUse& x, const EdgeUse& y) {
-    return x.a < y.a || (x.a == y.a && (x.b < y.b || (x.b == y.b && x.face < y.face)));
-  });
-  // Neighbour lists through manifold edges; boundary flag per face.
-  neighbours.assign(static_cast<size_t>(faces), {});
-  touchesOpenEdge.assign(static_cast<size_t>(faces), 0);
-  for (size_t i = 0; i < uses.size();)
-  {
-    size_t j = i;
-    while (j < uses.size() && uses[j].a == uses[i].a && uses[j].b == uses[i].b)
-    {
-      ++j;
-    }
-    if (j - i == 2)
-    {
-      // sameDirection: both faces traverse the edge the same way (inconsistent).
-      const bool same = uses[i].forward == uses[i + 1].forward;
-      neighbours[uses[i].face].push_back({ uses[i + 1].face, same });
-      neighbours[uses[i + 1].face].push_back({ uses[i].face, same });
-    }
-    else
-    {
-      report.nonManifoldEdges += j - i > 2;
-      for (size_t k = i; k < j; ++k)
-      {
-        touchesOpenEdge[uses[k].face] = 1;
-      }
-    }
-    i = j;
-  }
-}
-
 } // namespace
 
 OwnedMesh RepairMesh(const double* points, int64_t np, const int64_t* offsets,
@@ -331,13 +207,17 @@ OwnedMesh RepairMesh(const double* points, int64_t np, const int64_t* offsets,
 
   // 3. Edges: face neighbours through manifold edges, open faces.
   const int64_t faces = mesh.NumberOfPolygons();
-  std::vector<std::vector<std::pair<int64_t, bool>>> neighbours;
+  FaceNeighbourLists neighbours;
   std::vector<uint8_t> touchesOpenEdge;
-  FaceNeighbours(mesh, neighbours, touchesOpenEdge, report);
+  report.nonManifoldEdges += FindFaceNeighbours(mesh.View(), neighbours, touchesOpenEdge);
 
   // 4. Consistent orientation per component, outward when closed.
-  const std::vector<uint8_t> flip =
-    OrientComponents(mesh, neighbours, touchesOpenEdge, opt.fixOrientation, report);
+  std::vector<uint8_t> flip =
+    OrientComponents(mesh.View(), neighbours, touchesOpenEdge, report.components);
+  if (!opt.fixOrientation)
+  {
+    flip.assign(flip.size(), 0); // components counted, nothing turned
+  }
   for (int64_t f = 0; f < faces; ++f)
   {
     if (flip[f])

@@ -2,6 +2,7 @@
 #include "vtkWeightedPolyDataNormals.h"
 
 #include "MeshArrays.h"
+#include "Orientation.h"
 #include "VertexNormals.h"
 
 #include <vtkCellArray.h>
@@ -30,6 +31,7 @@ int vtkWeightedPolyDataNormals::RequestData(
   vtkPolyData* output = vtkPolyData::GetData(outputVector, 0);
   this->NumberOfCreaseEdges = this->NumberOfSplitPoints = 0;
   this->NumberOfNonManifoldEdges = this->NumberOfBoundaryEdges = 0;
+  this->NumberOfFlippedPolygons = 0;
   if (!input || input->GetNumberOfPoints() == 0)
   {
     return 1;
@@ -44,6 +46,13 @@ int vtkWeightedPolyDataNormals::RequestData(
   mesh.offsets = flat.offsets;
   mesh.connectivity = flat.connectivity;
   mesh.numberOfPolygons = flat.numberOfPolygons;
+  std::vector<int64_t> turned; // the connectivity with inconsistent faces reversed
+  if (this->Consistency && slm::HasInconsistentOrientation(mesh))
+  {
+    this->NumberOfFlippedPolygons =
+      slm::FlipFaces(mesh, slm::ConsistentOrientationFlips(mesh), turned);
+    mesh.connectivity = turned.data();
+  }
   slm::NormalOptions options;
   options.weighting = static_cast<slm::NormalWeighting>(this->Weighting);
   options.splitting = this->Splitting;
@@ -123,10 +132,14 @@ int vtkWeightedPolyDataNormals::RequestData(
   outPD->AddArray(originalIds);
 
   output->SetPoints(points);
-  if (nOut == nIn || result.connectivity.empty())
+  if ((nOut == nIn || result.connectivity.empty()) && turned.empty())
   {
     // No corner was moved to a split point: the polygons are the input's.
     output->SetPolys(source->GetPolys());
+  }
+  else if (nOut == nIn || result.connectivity.empty())
+  {
+    output->SetPolys(slm::CellArrayFromFlat(mesh.offsets, mesh.numberOfPolygons, turned.data()));
   }
   else
   {
@@ -150,4 +163,5 @@ void vtkWeightedPolyDataNormals::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Splitting: " << this->Splitting << "\n";
   os << indent << "FeatureAngle: " << this->FeatureAngle << "\n";
   os << indent << "UseLinesAsFeatureEdges: " << this->UseLinesAsFeatureEdges << "\n";
+  os << indent << "Consistency: " << this->Consistency << "\n";
 }

@@ -14,8 +14,13 @@
  * of their original; "OriginalPointIds" maps every output point to its input
  * point. Cell data is passed unchanged.
  *
+ * With Consistency on (the default, as in vtkPolyDataNormals), polygons
+ * whose neighbours run a shared edge the same way are first turned so that
+ * each connected component is consistently oriented (outward when closed;
+ * mesh/core/Orientation.h); the output's polygons are the turned ones.
+ *
  * @warning Triangle strips are triangulated first. The input is never
- * modified. Polygons are assumed consistently oriented (see vtkMeshRepair).
+ * modified.
  */
 #ifndef vtkWeightedPolyDataNormals_h
 #define vtkWeightedPolyDataNormals_h
@@ -65,11 +70,19 @@ public:
   ///@}
 
   ///@{
+  /// Make the orientation consistent first when it is not (default on).
+  vtkSetMacro(Consistency, bool);
+  vtkGetMacro(Consistency, bool);
+  vtkBooleanMacro(Consistency, bool);
+  ///@}
+
+  ///@{
   /// Counts from the last execution (edge counts need Splitting on).
   vtkGetMacro(NumberOfCreaseEdges, vtkIdType);
   vtkGetMacro(NumberOfSplitPoints, vtkIdType);
   vtkGetMacro(NumberOfNonManifoldEdges, vtkIdType);
   vtkGetMacro(NumberOfBoundaryEdges, vtkIdType);
+  vtkGetMacro(NumberOfFlippedPolygons, vtkIdType);
   ///@}
 
 protected:
@@ -81,6 +94,8 @@ protected:
   bool Splitting = true;
   double FeatureAngle = 30.0;
   bool UseLinesAsFeatureEdges = true;
+  bool Consistency = true;
+  vtkIdType NumberOfFlippedPolygons = 0;
   vtkIdType NumberOfCreaseEdges = 0;
   vtkIdType NumberOfSplitPoints = 0;
   vtkIdType NumberOfNonManifoldEdges = 0;

@@ -371,34 +371,19 @@ vtkPolyData* vtkShadingLabPolyDataMapper::PrepareInput(vtkPolyData* input)
       {
         prepared->GetPointData()->SetNormals(nullptr);
       }
-      else if (made.featureAngle < 180.0)
+      else
       {
-        // Creases: normals split where faces meet at more than FeatureAngle
-        // (new points; the copy is what is drawn).
+        // Weighted vertex normals (mesh/core, the CPU renderer's), split
+        // where faces meet at more than FeatureAngle (new points; the copy
+        // is what is drawn), after inconsistently oriented faces are turned.
         vtkNew<vtkWeightedPolyDataNormals> normals;
         normals->SetInputData(prepared);
         normals->SetWeighting(made.weighting);
         normals->SetFeatureAngle(made.featureAngle);
-        normals->SplittingOn();
+        normals->SetSplitting(made.featureAngle < 180.0);
+        normals->ConsistencyOn();
         normals->Update();
         prepared = normals->GetOutput();
-      }
-      else
-      {
-        // Weighted vertex normals without creases, the CPU renderer's
-        // (mesh/core; area weighting by default).
-        sl::mesh::FlatPolygons polygons;
-        sl::mesh::FlatPolygonsFromPolyData(input, polygons);
-        const sl::mesh::MeshView& mesh = polygons;
-        std::vector<double> normals;
-        sl::mesh::ComputeVertexNormalsNoSplit(
-          mesh, static_cast<sl::mesh::NormalWeighting>(made.weighting), normals);
-        vtkNew<vtkFloatArray> array;
-        array->SetName("Normals");
-        array->SetNumberOfComponents(3);
-        array->SetNumberOfTuples(polygons.numberOfPoints);
-        std::copy(normals.begin(), normals.end(), array->GetPointer(0));
-        prepared->GetPointData()->SetNormals(array);
       }
       this->Internal->Prepared = prepared;
       this->Internal->PreparedFrom = input->GetMTime();

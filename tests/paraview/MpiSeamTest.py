@@ -4,7 +4,11 @@
 # boundary vertex. Meshes are generated here (none has normals): a
 # decimated noisy sphere (non-uniform triangles), a marching-cubes
 # isosurface (slivers) and a scan-like height field with sliver triangles
-# (open, random diagonals). Each is split by RedistributeDataSet and drawn
+# (open, random diagonals), and the sphere and the scan again with a third of
+# their triangles reversed at random (inconsistent orientation: one rank
+# turns them back as the whole mesh would be, DistributedOrientation.h; on
+# one rank they must draw as the intact mesh does, mean <= 1/255 and p99 <=
+# 2/255, and the same on 2 ranks). Each is split by RedistributeDataSet and drawn
 # coloured by Elevation in Gouraud, Phong and fast Phong (Blinn-Phong) and
 # Phong/Cook-Torrance, with the default normals (split at 30 degrees), on
 # both backends (Backend GPU and CPU: the CPU's colour and depth go through
@@ -22,7 +26,7 @@ from pngs import read_png  # noqa: E402
 from mpirun import pvbatch_on_ranks  # noqa: E402
 
 W, H = 400, 300
-MESHES = ('noisy_sphere', 'isosurface', 'scan')
+MESHES = ('noisy_sphere', 'isosurface', 'scan', 'noisy_sphere_reversed', 'scan_reversed')
 MODES = (('Gouraud', 'Blinn-Phong'), ('Phong', 'Blinn-Phong'), ('Fast Phong', 'Blinn-Phong'),
          ('Phong', 'Cook-Torrance'))
 BACKENDS = ('GPU', 'CPU')
@@ -39,7 +43,7 @@ def make_meshes(outdir):
     from vtkmodules.vtkFiltersCore import vtkDecimatePro, vtkTriangleFilter, vtkFlyingEdges3D
     from vtkmodules.vtkImagingHybrid import vtkSampleFunction
     from vtkmodules.vtkCommonDataModel import vtkQuadric, vtkPolyData, vtkCellArray
-    from vtkmodules.vtkCommonCore import vtkPoints
+    from vtkmodules.vtkCommonCore import vtkPoints, vtkIdList
     from vtkmodules.vtkIOXML import vtkXMLPolyDataWriter
 
     def write(poly, name):
@@ -48,6 +52,23 @@ def make_meshes(outdir):
         writer.SetFileName(os.path.join(outdir, name + '.vtp'))
         writer.SetInputData(poly)
         writer.Write()
+
+    def write_reversed(poly, name):
+        """`poly` with a third of its triangles (never the first) reversed."""
+        flips = random.Random(11)
+        cells = vtkCellArray()
+        polys = poly.GetPolys()
+        for c in range(poly.GetNumberOfPolys()):
+            ids = vtkIdList()
+            polys.GetCellAtId(c, ids)
+            corners = [ids.GetId(k) for k in range(ids.GetNumberOfIds())]
+            if c > 0 and flips.random() < 1.0 / 3.0:
+                corners.reverse()
+            cells.InsertNextCell(len(corners), corners)
+        reversed_poly = vtkPolyData()
+        reversed_poly.ShallowCopy(poly)
+        reversed_poly.SetPolys(cells)
+        write(reversed_poly, name)
 
     rng = random.Random(7)
     sphere = vtkSphereSource()
@@ -67,6 +88,7 @@ def make_meshes(outdir):
     decimate.PreserveTopologyOn()
     decimate.Update()
     write(decimate.GetOutput(), 'noisy_sphere')
+    write_reversed(decimate.GetOutput(), 'noisy_sphere_reversed')
 
     quadric = vtkQuadric()
     quadric.SetCoefficients(1, 2, 0.5, 0.3, 0, 0.2, 0, 0, 0, 0)
@@ -105,6 +127,7 @@ def make_meshes(outdir):
     scan.SetPoints(scan_points)
     scan.SetPolys(cells)
     write(scan, 'scan')
+    write_reversed(scan, 'scan_reversed')
 
 
 def worker(plugin, directory):
@@ -125,6 +148,8 @@ def worker(plugin, directory):
         rep = Show(elevation, view)
         rep.Representation = 'ShadingLab Surface'
         ColorBy(rep, ('POINTS', 'Elevation'))
+        # The same view of every mesh (ResetCamera keeps the direction).
+        view.CameraPosition, view.CameraFocalPoint, view.CameraViewUp = [0, 0, 1], [0, 0, 0], [0, 1, 0]
         ResetCamera(view)
         camera = view.GetActiveCamera()
         camera.Azimuth(30)
@@ -172,6 +197,13 @@ def driver(plugin, outdir):
             compare(os.path.join(dirs[1], png_name(name, mode, model, 'GPU')),
                     os.path.join(dirs[1], png_name(name, mode, model, 'CPU')), 4.0,
                     '%-13s %-11s %-14s 1 rank, CPU vs GPU' % (name, mode, model))
+            if name.endswith('_reversed'):
+                intact = name[:-len('_reversed')]
+                for backend in BACKENDS:
+                    for ranks in (1, 2):
+                        compare(os.path.join(dirs[1], png_name(intact, mode, model, backend)),
+                                os.path.join(dirs[ranks], png_name(name, mode, model, backend)), 2.0,
+                                '%-13s %-11s %-14s %s, %d rank(s) vs intact' % (name, mode, model, backend, ranks))
     print('%d failure(s)' % len(failures))
     return 1 if failures else 0
 

@@ -4,7 +4,11 @@
 # boundaries included) and the same image (mean <= 1/255); ShadingLab
 # Subdivision must put every point where the serial run puts it (no seam);
 # ShadingLab Mesh Repair of a broken copy (every triangle on its own
-# points, every third one flipped) must weld and orient it as on one rank.
+# points, every third one flipped) must weld and orient it as on one rank;
+# ShadingLab Normals of a copy with every third triangle reversed (its
+# points shared: inconsistent orientation, nothing to weld) must give the
+# intact mesh's normals, outward, on 1 and on 2 ranks (one orientation for
+# the whole mesh, not one per partition: DistributedOrientation.h).
 #
 #   pvpython MpiTest.py PLUGIN MESH OUTDIR      (the driver; runs mpiexec)
 #   pvbatch MpiTest.py --worker PLUGIN MESH OUT (one run, on rank 0)
@@ -49,6 +53,13 @@ def worker(plugin, mesh, out):
     points = vtk_to_numpy(data.GetPoints().GetData()).astype(numpy.float64)
     vectors = vtk_to_numpy(data.GetPointData().GetNormals()).astype(numpy.float64)
     numpy.save(out + '.npy', numpy.hstack([points, vectors]))
+    turned = ShadingLabNormals(  # noqa: F821 (from the plugin)
+        Input=ExtractSurface(Input=RedistributeDataSet(Input=OpenDataFile(mesh + '.reversed.vtp'))))
+    turned.Splitting = 0
+    data = servermanager.Fetch(turned)
+    numpy.save(out + '_reversed.npy', numpy.hstack([
+        vtk_to_numpy(data.GetPoints().GetData()).astype(numpy.float64),
+        vtk_to_numpy(data.GetPointData().GetNormals()).astype(numpy.float64)]))
     with open(out + '.txt', 'w') as f:
         f.write('%.3f\n' % elapsed)
     refine = ShadingLabSubdivision(Input=surface)  # noqa: F821 (from the plugin)
@@ -77,9 +88,10 @@ def oriented_triangles(poly):
     return numpy.array(sorted(rows))
 
 
-def write_broken(mesh):
-    """`mesh` with every triangle on its own three points and every third
-    one reversed: what Mesh Repair must weld and orient (outward)."""
+def write_broken(mesh, shared=False):
+    """`mesh` with every triangle on its own three points (or, `shared`, on
+    the mesh's points) and every third one reversed: what Mesh Repair must
+    weld and orient (outward), or what Normals must orient."""
     from vtkmodules.vtkIOXML import vtkXMLPolyDataReader, vtkXMLPolyDataWriter
     from vtkmodules.vtkCommonDataModel import vtkPolyData, vtkCellArray
     from vtkmodules.vtkCommonCore import vtkPoints, vtkIdList
@@ -91,15 +103,18 @@ def write_broken(mesh):
     polys = source.GetPolys()
     polys.InitTraversal()
     c = 0
+    if shared:
+        points = source.GetPoints()
     while polys.GetNextCell(ids):
-        corner = [points.InsertNextPoint(source.GetPoint(ids.GetId(k))) for k in range(ids.GetNumberOfIds())]
+        corner = [ids.GetId(k) if shared else points.InsertNextPoint(source.GetPoint(ids.GetId(k)))
+                  for k in range(ids.GetNumberOfIds())]
         cells.InsertNextCell(len(corner), corner[::-1] if c % 3 == 0 else corner)
         c += 1
     broken = vtkPolyData()
     broken.SetPoints(points)
     broken.SetPolys(cells)
     writer = vtkXMLPolyDataWriter()
-    writer.SetFileName(mesh + '.broken.vtp')
+    writer.SetFileName(mesh + ('.reversed.vtp' if shared else '.broken.vtp'))
     writer.SetInputData(broken)
     writer.Write()
 
@@ -112,6 +127,7 @@ def driver(plugin, mesh, outdir):
         dst.write(src.read())
     mesh = local_mesh
     write_broken(mesh)
+    write_broken(mesh, shared=True)
     runs = {}
     for ranks in (1, 2):
         out = os.path.join(outdir, 'ranks%d' % ranks)
@@ -121,20 +137,32 @@ def driver(plugin, mesh, outdir):
     serial = numpy.load(runs[1] + '.npy')
     parallel = numpy.load(runs[2] + '.npy')
     reference = {tuple(row[:3]): row[3:] for row in serial}
-    worst, missing = 0.0, 0
-    for row in parallel:
-        n = reference.get(tuple(row[:3]))
-        if n is None:
-            missing += 1
-            continue
-        cosine = numpy.dot(n, row[3:]) / (numpy.linalg.norm(n) * numpy.linalg.norm(row[3:]))
-        worst = max(worst, numpy.degrees(numpy.arccos(numpy.clip(cosine, -1, 1))))
+
+    def worst_angle(rows):
+        worst, missing = 0.0, 0
+        for row in rows:
+            n = reference.get(tuple(row[:3]))
+            if n is None:
+                missing += 1
+                continue
+            cosine = numpy.dot(n, row[3:]) / (numpy.linalg.norm(n) * numpy.linalg.norm(row[3:]))
+            worst = max(worst, numpy.degrees(numpy.arccos(numpy.clip(cosine, -1, 1))))
+        return worst, missing
+
+    worst, missing = worst_angle(parallel)
     print('normals: %d points on 2 ranks (%d serial), %d unmatched, worst angle %.2e deg'
           % (len(parallel), len(serial), missing, worst))
     # 1e-4 degrees: the sums around a boundary vertex are added in another
     # order on 2 ranks (float rounding, ~1e-6 degrees measured).
     if missing or worst > 1e-4:
         failures.append('normals differ at partition boundaries')
+    for ranks in (1, 2):
+        rows = numpy.load(runs[ranks] + '_reversed.npy')
+        worst, missing = worst_angle(rows)
+        print('normals of the reversed copy on %d rank(s) against the intact mesh on 1: '
+              '%d points, %d unmatched, worst angle %.2e deg' % (ranks, len(rows), missing, worst))
+        if missing or worst > 1e-4:
+            failures.append('normals of the reversed copy differ on %d rank(s)' % ranks)
     # Subdivision: every point of the 2-rank result is a point of the serial
     # one (partition-boundary points appear once per rank).
     serial_sub = numpy.load(runs[1] + '_sub.npy')

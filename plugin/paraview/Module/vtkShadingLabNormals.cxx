@@ -2,10 +2,13 @@
 #include "vtkShadingLabNormals.h"
 
 #include "BoundaryGhosts.h"
+#include "DistributedOrientation.h"
 #include "InnerFilter.h"
 #include "vtkWeightedPolyDataNormals.h"
 
 #include <vtkCellData.h>
+#include <vtkPointData.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkDataSetAttributes.h>
 #include <vtkCommunicator.h>
 #include <vtkInformation.h>
@@ -15,6 +18,47 @@
 #include <vtkStreamingDemandDrivenPipeline.h>
 
 vtkStandardNewMacro(vtkShadingLabNormals);
+
+namespace
+{
+
+/// Whether `holds` is true on every rank (collective).
+bool AllRanks(vtkMultiProcessController* controller, bool holds)
+{
+  int mine = holds ? 1 : 0, everyone = 0;
+  controller->AllReduce(&mine, &everyone, 1, vtkCommunicator::MIN_OP);
+  return everyone != 0;
+}
+
+bool InconsistentlyOriented(vtkPolyData* mesh)
+{
+  shadinglab::mesh::FlatPolygons flat;
+  shadinglab::mesh::FlatPolygonsFromPolyData(mesh, flat);
+  return shadinglab::mesh::HasInconsistentOrientation(flat);
+}
+
+/// A copy of `mesh` without its ghost polygons (and ghost flags).
+vtkSmartPointer<vtkPolyData> WithoutGhostCells(vtkPolyData* mesh)
+{
+  vtkNew<vtkPolyData> flagged;
+  flagged->ShallowCopy(mesh);
+  vtkNew<vtkUnsignedCharArray> borrowed;
+  borrowed->SetName(shadinglab::paraview::kBorrowedArray);
+  borrowed->SetNumberOfTuples(mesh->GetNumberOfCells());
+  vtkUnsignedCharArray* ghosts = mesh->GetCellGhostArray();
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c)
+  {
+    borrowed->SetValue(c, ghosts && ghosts->GetValue(c) != 0 ? 1 : 0);
+  }
+  flagged->GetCellData()->AddArray(borrowed);
+  auto result = vtkSmartPointer<vtkPolyData>::New();
+  shadinglab::paraview::DropBorrowedFaces(flagged, result);
+  result->GetCellData()->RemoveArray(vtkDataSetAttributes::GhostArrayName());
+  result->GetPointData()->RemoveArray(vtkDataSetAttributes::GhostArrayName());
+  return result;
+}
+
+} // namespace
 
 int vtkShadingLabNormals::RequestUpdateExtent(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
@@ -37,19 +81,33 @@ int vtkShadingLabNormals::RequestData(
   // Distributed data without ghost cells (e.g. after RedistributeDataSet
   // and Extract Surface): borrow the neighbouring ranks' faces around the
   // partition boundary (BoundaryGhosts.h), so that every boundary vertex
-  // sees all of its faces, then drop them again. Collective on all ranks.
+  // sees all of its faces, then drop them again; the orientation is made
+  // consistent across the ranks first (DistributedOrientation.h). Data with
+  // ghost cells uses them, unless the orientation is inconsistent: then the
+  // ghost cells go (turning them to match their owners' would need their
+  // owners) and the faces are borrowed instead. Collective on all ranks.
   vtkMultiProcessController* controller = vtkMultiProcessController::GetGlobalController();
   const bool distributed = controller && controller->GetNumberOfProcesses() > 1;
   vtkSmartPointer<vtkPolyData> work = input;
   vtkIdType borrowed = 0;
-  if (distributed)
+  bool orientedAcrossRanks = false;
+  if (distributed && AllRanks(controller, input->GetNumberOfStrips() == 0))
   {
-    int needsGhosts = !input->HasAnyGhostCells() && input->GetNumberOfStrips() == 0 ? 1 : 0;
-    int everyone = 0;
-    controller->AllReduce(&needsGhosts, &everyone, 1, vtkCommunicator::MIN_OP);
-    if (everyone)
+    vtkSmartPointer<vtkPolyData> piece = input;
+    bool borrow = AllRanks(controller, !input->HasAnyGhostCells());
+    if (!borrow && !AllRanks(controller, !InconsistentlyOriented(input)))
     {
-      work = shadinglab::paraview::WithNeighbourFaces(input, controller, borrowed);
+      piece = WithoutGhostCells(input);
+      borrow = true;
+    }
+    if (borrow)
+    {
+      work = shadinglab::paraview::WithNeighbourFaces(piece, controller, borrowed);
+      if (auto turned = shadinglab::paraview::OrientedAcrossRanks(piece, work, controller))
+      {
+        work = shadinglab::paraview::WithNeighbourFaces(turned, controller, borrowed);
+      }
+      orientedAcrossRanks = true;
     }
   }
   const bool madeGhosts = borrowed > 0;
@@ -57,6 +115,8 @@ int vtkShadingLabNormals::RequestData(
   normals->SetWeighting(this->Weighting);
   normals->SetFeatureAngle(this->FeatureAngle);
   normals->SetSplitting(this->Splitting);
+  // Oriented across the ranks already: a partition alone must not choose.
+  normals->SetConsistency(!orientedAcrossRanks);
   if (!madeGhosts)
   {
     return shadinglab::paraview::RunInnerFilter(this, normals, work, output) ? 1 : 0;

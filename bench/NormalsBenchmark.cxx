@@ -2,12 +2,15 @@
 // Vertex-normal speed on ~100k and ~1M triangles: our filter and core loop
 // against vtkPolyDataNormals (defaults; splitting and consistency off),
 // vtkTriangleMeshPointNormals, a plain area-weighted loop over the raw
-// arrays, and the cost of building an OpenMesh TriMesh alone, in one run.
+// arrays, the cost of building an OpenMesh TriMesh alone, and the
+// orientation check every normals computation now runs first (and the fix
+// when it finds faces to turn), in one run.
 //
 //   build/bin/shadinglab_bench_normals --benchmark_repetitions=7
 //       --benchmark_report_aggregates_only=true
 #include "AnalyticMeshes.h"
 #include "MeshArrays.h"
+#include "Orientation.h"
 #include "VertexNormals.h"
 #include "vtkWeightedPolyDataNormals.h"
 
@@ -72,6 +75,42 @@ void BM_OursCore(benchmark::State& state)
   }
   const char* names[] = { "uniform", "area", "angle", "max" };
   state.SetLabel(std::string("ours core ") + names[state.range(1)] + " nosplit");
+}
+
+void BM_OrientationCheck(benchmark::State& state)
+{
+  // What a consistent mesh pays before its normals: the directed-edge test.
+  vtkPolyData* input = Mesh(static_cast<int>(state.range(0)));
+  shadinglab::mesh::FlatPolygons flat;
+  shadinglab::mesh::FlatPolygonsFromPolyData(input, flat);
+  for (auto _ : state)
+  {
+    benchmark::DoNotOptimize(shadinglab::mesh::HasInconsistentOrientation(flat));
+  }
+  state.SetLabel("consistency check (consistent mesh)");
+}
+
+void BM_OrientationFix(benchmark::State& state)
+{
+  // Every third face reversed: neighbours, breadth-first flips, volume.
+  vtkPolyData* input = Mesh(static_cast<int>(state.range(0)));
+  shadinglab::mesh::FlatPolygons flat;
+  shadinglab::mesh::FlatPolygonsFromPolyData(input, flat);
+  std::vector<uint8_t> every3(static_cast<size_t>(flat.numberOfPolygons), 0);
+  for (size_t f = 0; f < every3.size(); f += 3)
+  {
+    every3[f] = 1;
+  }
+  std::vector<int64_t> scrambled, turned;
+  shadinglab::mesh::FlipFaces(flat, every3, scrambled);
+  shadinglab::mesh::MeshView mesh = flat;
+  mesh.connectivity = scrambled.data();
+  for (auto _ : state)
+  {
+    benchmark::DoNotOptimize(shadinglab::mesh::HasInconsistentOrientation(mesh));
+    shadinglab::mesh::FlipFaces(mesh, shadinglab::mesh::ConsistentOrientationFlips(mesh), turned);
+  }
+  state.SetLabel("check + orient (a third reversed)");
 }
 
 void BM_PlainLoop(benchmark::State& state)
@@ -169,6 +208,8 @@ void BM_OpenMeshConversion(benchmark::State& state)
 } // namespace
 
 BENCHMARK(BM_PlainLoop)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_OrientationCheck)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_OrientationFix)->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_OursCore)
   ->ArgsProduct({ { 0, 1 }, { 0, 1, 2, 3 } })
   ->Unit(benchmark::kMillisecond);

@@ -5,61 +5,109 @@
 #include <array>
 #include <cstring>
 #include <numeric>
-#include <queue>
 
 namespace shadinglab::mesh
 {
 
+namespace
+{
+
+/// Outgoing directed edges per vertex (CSR): for vertex u, the corners k
+/// in [start[u], start[u + 1]) of `corner` start an edge u -> next(k).
+struct OutgoingEdges
+{
+  std::vector<int64_t> start, corner, target;
+};
+
+OutgoingEdges MakeOutgoingEdges(const MeshView& mesh)
+{
+  OutgoingEdges out;
+  const int64_t faces = mesh.numberOfPolygons;
+  const int64_t corners = faces > 0 ? mesh.offsets[faces] : 0;
+  out.start.assign(static_cast<size_t>(mesh.numberOfPoints) + 1, 0);
+  for (int64_t k = 0; k < corners; ++k)
+  {
+    ++out.start[static_cast<size_t>(mesh.connectivity[k]) + 1];
+  }
+  std::partial_sum(out.start.begin(), out.start.end(), out.start.begin());
+  std::vector<int64_t> fill(out.start.begin(), out.start.end() - 1);
+  out.corner.resize(static_cast<size_t>(corners));
+  out.target.resize(static_cast<size_t>(corners));
+  for (int64_t f = 0; f < faces; ++f)
+  {
+    const int64_t b = mesh.offsets[f], e = mesh.offsets[f + 1];
+    for (int64_t k = b; k < e; ++k)
+    {
+      const int64_t at = fill[mesh.connectivity[k]]++;
+      out.corner[at] = k;
+      out.target[at] = mesh.connectivity[k + 1 < e ? k + 1 : b];
+    }
+  }
+  return out;
+}
+
+} // namespace
+
 int64_t FindFaceNeighbours(
   const MeshView& mesh, FaceNeighbourLists& neighbours, std::vector<uint8_t>& touchesOpenEdge)
 {
-  // The edges as (min, max, face, forward) uses, sorted: a run of equal
-  // (min, max) is one edge.
   const int64_t faces = mesh.numberOfPolygons;
-  struct EdgeUse
+  const int64_t corners = faces > 0 ? mesh.offsets[faces] : 0;
+  const OutgoingEdges edges = MakeOutgoingEdges(mesh);
+  std::vector<int64_t> faceOf(static_cast<size_t>(corners));
+  for (int64_t f = 0; f < faces; ++f)
   {
-    int64_t a, b, face;
-    bool forward;
-  };
-  std::vector<EdgeUse> uses;
-  uses.reserve(static_cast<size_t>(faces > 0 ? mesh.offsets[faces] : 0));
+    std::fill(faceOf.begin() + mesh.offsets[f], faceOf.begin() + mesh.offsets[f + 1], f);
+  }
+  neighbours.face.assign(static_cast<size_t>(corners), -1);
+  neighbours.same.assign(static_cast<size_t>(corners), 0);
+  touchesOpenEdge.assign(static_cast<size_t>(faces), 0);
+  int64_t nonManifold = 0;
   for (int64_t f = 0; f < faces; ++f)
   {
     const int64_t b = mesh.offsets[f], e = mesh.offsets[f + 1];
     for (int64_t k = b; k < e; ++k)
     {
       const int64_t u = mesh.connectivity[k], v = mesh.connectivity[k + 1 < e ? k + 1 : b];
-      uses.push_back({ std::min(u, v), std::max(u, v), f, u < v });
-    }
-  }
-  std::sort(uses.begin(), uses.end(), [](const EdgeUse& x, const EdgeUse& y) {
-    return x.a < y.a || (x.a == y.a && (x.b < y.b || (x.b == y.b && x.face < y.face)));
-  });
-  neighbours.assign(static_cast<size_t>(faces), {});
-  touchesOpenEdge.assign(static_cast<size_t>(faces), 0);
-  int64_t nonManifold = 0;
-  for (size_t i = 0; i < uses.size();)
-  {
-    size_t j = i;
-    while (j < uses.size() && uses[j].a == uses[i].a && uses[j].b == uses[i].b)
-    {
-      ++j;
-    }
-    if (j - i == 2)
-    {
-      const bool same = uses[i].forward == uses[i + 1].forward;
-      neighbours[uses[i].face].push_back({ uses[i + 1].face, same });
-      neighbours[uses[i + 1].face].push_back({ uses[i].face, same });
-    }
-    else
-    {
-      nonManifold += j - i > 2;
-      for (size_t k = i; k < j; ++k)
+      // The other uses of edge {u, v}: v -> u (opposite way) and u -> v
+      // from another corner (the same way); the lowest corner of all of
+      // them counts a non-manifold edge once.
+      int64_t uses = 1, other = -1, lowest = k;
+      bool same = false;
+      if (u != v)
       {
-        touchesOpenEdge[uses[k].face] = 1;
+        for (int64_t at = edges.start[v]; at < edges.start[v + 1]; ++at)
+        {
+          if (edges.target[at] == u)
+          {
+            ++uses;
+            other = edges.corner[at];
+            same = false;
+            lowest = std::min(lowest, other);
+          }
+        }
+        for (int64_t at = edges.start[u]; at < edges.start[u + 1]; ++at)
+        {
+          if (edges.target[at] == v && edges.corner[at] != k)
+          {
+            ++uses;
+            other = edges.corner[at];
+            same = true;
+            lowest = std::min(lowest, other);
+          }
+        }
+      }
+      if (uses == 2)
+      {
+        neighbours.face[k] = faceOf[other];
+        neighbours.same[k] = same ? 1 : 0;
+      }
+      else
+      {
+        touchesOpenEdge[f] = 1; // open (one use), degenerate (u == v) or non-manifold
+        nonManifold += uses > 2 && lowest == k;
       }
     }
-    i = j;
   }
   return nonManifold;
 }
@@ -79,25 +127,24 @@ std::vector<uint8_t> OrientComponents(const MeshView& mesh, const FaceNeighbourL
     }
     const int64_t id = components++;
     members.clear();
-    std::queue<int64_t> queue;
-    queue.push(root);
+    // Breadth-first: `members` is the queue, in visiting order.
+    members.push_back(root);
     component[root] = id;
     bool closed = true;
-    while (!queue.empty())
+    for (size_t next = 0; next < members.size(); ++next)
     {
-      const int64_t f = queue.front();
-      queue.pop();
-      members.push_back(f);
+      const int64_t f = members[next];
       closed &= touchesOpenEdge[f] == 0;
-      for (const auto& [g, same] : neighbours[f])
+      for (int64_t k = mesh.offsets[f]; k < mesh.offsets[f + 1]; ++k)
       {
-        if (component[g] >= 0)
+        const int64_t g = neighbours.face[k];
+        if (g < 0 || component[g] >= 0)
         {
           continue;
         }
         component[g] = id;
-        flip[g] = static_cast<uint8_t>(flip[f] ^ (same ? 1 : 0));
-        queue.push(g);
+        flip[g] = static_cast<uint8_t>(flip[f] ^ neighbours.same[k]);
+        members.push_back(g);
       }
     }
     if (closed)
@@ -137,29 +184,11 @@ bool HasInconsistentOrientation(const MeshView& mesh)
   {
     return false;
   }
-  // Outgoing directed edges per vertex (CSR), then duplicates per vertex.
-  std::vector<int64_t> start(static_cast<size_t>(points) + 1, 0);
-  for (int64_t f = 0; f < faces; ++f)
-  {
-    for (int64_t k = mesh.offsets[f]; k < mesh.offsets[f + 1]; ++k)
-    {
-      ++start[static_cast<size_t>(mesh.connectivity[k]) + 1];
-    }
-  }
-  std::partial_sum(start.begin(), start.end(), start.begin());
-  std::vector<int64_t> fill(start.begin(), start.end() - 1);
-  std::vector<int64_t> target(static_cast<size_t>(start.back()));
-  for (int64_t f = 0; f < faces; ++f)
-  {
-    const int64_t b = mesh.offsets[f], e = mesh.offsets[f + 1];
-    for (int64_t k = b; k < e; ++k)
-    {
-      target[fill[mesh.connectivity[k]]++] = mesh.connectivity[k + 1 < e ? k + 1 : b];
-    }
-  }
+  // Outgoing directed edges per vertex, then duplicates per vertex.
+  OutgoingEdges edges = MakeOutgoingEdges(mesh);
   for (int64_t u = 0; u < points; ++u)
   {
-    auto first = target.begin() + start[u], last = target.begin() + start[u + 1];
+    auto first = edges.target.begin() + edges.start[u], last = edges.target.begin() + edges.start[u + 1];
     std::sort(first, last);
     for (auto it = first; it != last && it + 1 != last; ++it)
     {

@@ -15,12 +15,20 @@
 namespace shadinglab::mesh
 {
 
-/// Each face's neighbours through manifold edges (exactly two faces), with
-/// whether the two run the edge the same way (inconsistent orientation).
-using FaceNeighbourLists = std::vector<std::vector<std::pair<int64_t, bool>>>;
+/// Per corner k of the connectivity (the edge from corner k to the next
+/// corner of its face): the face across that edge when the edge is
+/// manifold (exactly two faces), else -1; and whether the two faces run the
+/// edge the same way (inconsistent orientation).
+struct FaceNeighbourLists
+{
+  std::vector<int64_t> face;
+  std::vector<uint8_t> same;
+};
 
-/// Fills `neighbours` and marks the faces touching an open or non-manifold
-/// edge; returns the number of non-manifold edges (more than two faces).
+/// Fills `neighbours` and marks the faces touching an open, degenerate or
+/// non-manifold edge; returns the number of non-manifold edges (more than
+/// two faces). Linear in the corners (a per-vertex table of outgoing edges
+/// stands in for a sort of all edges).
 int64_t FindFaceNeighbours(
   const MeshView& mesh, FaceNeighbourLists& neighbours, std::vector<uint8_t>& touchesOpenEdge);
 

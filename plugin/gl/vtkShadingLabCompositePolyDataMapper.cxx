@@ -46,6 +46,20 @@ std::string vtkShadingLabCompositePolyDataMapper::GetAutoChoices()
   return out;
 }
 
+std::string vtkShadingLabCompositePolyDataMapper::GetBackendChoices()
+{
+  std::string out;
+  for (auto& m : this->BlockMappers)
+  {
+    vtkShadingLabPolyDataMapper* sm = m;
+    if (sm && sm->GetInput() && sm->GetInput()->GetNumberOfCells() > 0)
+    {
+      out += sm->GetBackendChoice() + "\n";
+    }
+  }
+  return out;
+}
+
 vtkPolyDataMapper* vtkShadingLabCompositePolyDataMapper::MakeAMapper()
 {
   // The superclass makes one mapper per polydata leaf, in traversal order,

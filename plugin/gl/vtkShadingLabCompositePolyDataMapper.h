@@ -45,6 +45,8 @@ public:
   ///@}
   /// AUTO: each drawn block's choice, one line per block ("" otherwise).
   std::string GetAutoChoices();
+  /// Each drawn block's backend and, for Auto, why: one line per block.
+  std::string GetBackendChoices();
 
   /// Sum of the block mappers' shader builds.
   int GetShaderBuildCount();

@@ -195,6 +195,10 @@ void Extension(std::ostream& out, const std::string& representation)
       {
         out << "            <Property name=\"AutoChoice\"/>\n";
       }
+      if (row.key == "backend")
+      {
+        out << "            <Property name=\"BackendChoice\"/>\n";
+      }
     }
   }
   out << "            <Hints>\n"
@@ -246,6 +250,16 @@ int main(int argc, char** argv)
           << "        <Documentation>Auto shading mode: what the last render chose for each "
              "block and why (predicted error and cost of each mode). Empty in the other "
              "modes.</Documentation>\n"
+          << "      </StringVectorProperty>\n";
+    }
+    if (row.key == "backend")
+    {
+      out << "      <StringVectorProperty name=\"BackendChoice\" command=\"GetBackendChoice\" "
+             "information_only=\"1\" panel_visibility=\"never\">\n"
+          << "        <SimpleStringInformationHelper/>\n"
+          << "        <Documentation>The backend the last render drew each block with; for "
+             "Auto, why (the OpenGL renderer, hardware or a software rasterizer, and the "
+             "polygon count against the crossover).</Documentation>\n"
           << "      </StringVectorProperty>\n";
     }
   }

@@ -606,6 +606,20 @@ for mode, cli_mode in [('Gouraud', 'gouraud'), ('Phong', 'phong'), ('Fast Phong'
               % (mode, model, d.mean(), numpy.percentile(d, 99)))
 rep.ShadingMode = 'Phong'
 rep.ReflectanceModel = 'Blinn-Phong'
+# The backend each render drew with, reported as the auto mode reports its
+# choice (information property BackendChoice): CPU and GPU as asked; Auto
+# names the context's renderer and the polygon count against the crossover.
+choices = {}
+for backend in ['CPU', 'GPU', 'Auto']:
+    rep.Backend = backend
+    Render(view)
+    rep.UpdatePropertyInformation()
+    choices[backend] = rep.GetProperty('BackendChoice').GetData().strip()
+auto = choices['Auto']
+check(choices['CPU'] == 'cpu' and choices['GPU'] == 'gpu' and
+      auto.split(':')[0] in ('cpu', 'gpu') and "OpenGL renderer '" in auto and 'polygons' in auto,
+      'BackendChoice reports each render: %r' % choices)
+rep.Backend = 'GPU'
 plane = Show(Plane(Origin=[-2, -2, -1], Point1=[2, -2, 1], Point2=[-2, 2, -1]), view)
 plane.ColorArrayName = [None, '']
 plane.AmbientColor = plane.DiffuseColor = [0.0, 1.0, 0.0]

@@ -30,6 +30,7 @@ struct vtkShadingLabSurfaceRepresentation::Internals
   sl::render::Settings Applied; ///< the last valid settings, on the mappers
   std::string Problem;
   std::string AutoChoice; ///< GetAutoChoice's storage
+  std::string BackendChoice; ///< GetBackendChoice's storage
   /// The mappers' block attributes (full and LOD), and the superclass's
   /// BlockAttributeTime they were made at.
   vtkSmartPointer<vtkCompositeDataDisplayAttributes> BlockAttributes[2];
@@ -60,6 +61,13 @@ const char* vtkShadingLabSurfaceRepresentation::GetAutoChoice()
   auto* mapper = vtkShadingLabCompositePolyDataMapper::SafeDownCast(this->Mapper);
   this->Internal->AutoChoice = mapper ? mapper->GetAutoChoices() : std::string();
   return this->Internal->AutoChoice.c_str();
+}
+
+const char* vtkShadingLabSurfaceRepresentation::GetBackendChoice()
+{
+  auto* mapper = vtkShadingLabCompositePolyDataMapper::SafeDownCast(this->Mapper);
+  this->Internal->BackendChoice = mapper ? mapper->GetBackendChoices() : std::string();
+  return this->Internal->BackendChoice.c_str();
 }
 
 void vtkShadingLabSurfaceRepresentation::SetSetting(

@@ -52,6 +52,9 @@ public:
 
   /// Auto: the last render's choice per block, and why ("" in other modes).
   const char* GetAutoChoice();
+  /// The last render's backend per block and, for Auto, why (the context's
+  /// renderer and the polygon count against the crossover).
+  const char* GetBackendChoice();
 
   /// The last material problem ("" when valid). An invalid material keeps
   /// the last valid one and reports the problem with vtkErrorMacro.

@@ -4,10 +4,12 @@
 # median of FRAMES frames after one warm-up frame, all configurations
 # interleaved in one process and the whole set repeated RUNS times.
 #
-#   pvbatch --force-offscreen-rendering bench/paraview_backends.py PLUGIN [FRAMES] [RUNS] [THETA]
+#   pvbatch --force-offscreen-rendering bench/paraview_backends.py PLUGIN [FRAMES] [RUNS] [THETA] [FXAA]
 #
 # THETA (default 1000) sets the sphere's resolution: THETA x THETA/2 x 2
-# triangles (316: ~100,000, where Auto's threshold sits).
+# triangles (316: ~100,000, where Auto's threshold sits). FXAA (default 1,
+# ParaView's default) is the view's UseFXAA: on llvmpipe its full-screen
+# pass costs tens of milliseconds a 1080p frame, whoever drew the pixels.
 #
 # Prints one line per configuration with every run's median (ms) and the
 # ratio of its median of medians to ParaView's Surface. A benchmark, not a
@@ -22,6 +24,7 @@ plugin = sys.argv[1]
 FRAMES = int(sys.argv[2]) if len(sys.argv) > 2 else 7
 RUNS = int(sys.argv[3]) if len(sys.argv) > 3 else 2
 THETA = int(sys.argv[4]) if len(sys.argv) > 4 else 1000
+FXAA = int(sys.argv[5]) if len(sys.argv) > 5 else 1
 LoadPlugin(plugin, remote=False, ns=globals())
 
 # ThetaResolution x PhiResolution x 2 triangles (1000: about 1.0M).
@@ -30,6 +33,7 @@ elevation = Elevation(Input=sphere, LowPoint=[0, 0, -0.5], HighPoint=[0, 0, 0.5]
 view = CreateView('RenderView')
 view.ViewSize = [1920, 1080]
 view.OrientationAxesVisibility = 0
+view.UseFXAA = FXAA
 rep = Show(elevation, view)
 ColorBy(rep, ('POINTS', 'Elevation'))
 ResetCamera(view)
@@ -67,7 +71,8 @@ for run in range(RUNS):
     for label, backend, mode, model in CONFIGS:
         medians[label].append(frame_times(backend, mode, model))
 reference = statistics.median(medians['ParaView Surface'])
-print('%d triangles, 1920x1080, median of %d frames, %d runs' % (triangles, FRAMES, RUNS))
+print('%d triangles, 1920x1080, FXAA %s, median of %d frames, %d runs'
+      % (triangles, 'on' if FXAA else 'off', FRAMES, RUNS))
 for label, *_ in CONFIGS:
     m = statistics.median(medians[label])
     print('%-42s %s ms  (x%.2f of ParaView Surface)'

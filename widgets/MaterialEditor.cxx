@@ -125,11 +125,11 @@ MaterialEditor::MaterialEditor(QWidget* parent)
     {
       return; // "the scene's": keep the material's own spectrum
     }
-    const Dispersion* data = index > 0 ? PresetDispersion(name) : nullptr;
+    const Dispersion* dispersion = index > 0 ? PresetDispersion(name) : nullptr;
     this->Value.spectralCount = 0;
-    if (data)
+    if (dispersion)
     {
-      SetSpectral(this->Value, *data);
+      SetSpectral(this->Value, *dispersion);
     }
     this->Refresh();
     this->Emit();

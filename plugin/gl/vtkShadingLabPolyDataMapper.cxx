@@ -760,10 +760,9 @@ void vtkShadingLabPolyDataMapper::SetMapperShaderParameters(
   }
   // The analyser's row and the lights' polarizer axis in view coordinates
   // (x right, y up: the image's axes; Shading.h Analyser, LightPolarizer).
-  const double theta = 2.0 * settings.render.polarizer * sl::kPi<double> / 180.0;
-  const bool circular = settings.render.circularAnalyser;
-  const float analyser[3] = { circular ? 0.0f : static_cast<float>(std::cos(theta)),
-    circular ? 0.0f : static_cast<float>(std::sin(theta)), circular ? 1.0f : 0.0f };
+  const auto row =
+    sl::Analyser<float>::At(settings.render.polarizer, settings.render.circularAnalyser);
+  const float analyser[3] = { row.cos2Theta, row.sin2Theta, row.circular };
   block.insert(block.end(), analyser, analyser + 3);
   const double psi = settings.render.lightPolarizer * sl::kPi<double> / 180.0;
   const float lightPolarizer[3] = { static_cast<float>(std::cos(psi)),

@@ -239,11 +239,7 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh,
     const render::CameraBasis basis = render::BasisOf(camera);
     if (options.polarizer >= 0.0)
     {
-      const double theta = 2.0 * options.polarizer * kPi<double> / 180.0;
-      F.Lights.analyser.on = true;
-      F.Lights.analyser.cos2Theta = options.circularAnalyser ? 0.0f : static_cast<float>(std::cos(theta));
-      F.Lights.analyser.sin2Theta = options.circularAnalyser ? 0.0f : static_cast<float>(std::sin(theta));
-      F.Lights.analyser.circular = options.circularAnalyser ? 1.0f : 0.0f;
+      F.Lights.analyser = Analyser<float>::At(options.polarizer, options.circularAnalyser);
       F.Lights.analyser.right = Vec3<float>(basis.right);
       F.Lights.analyser.up = Vec3<float>(basis.up);
     }

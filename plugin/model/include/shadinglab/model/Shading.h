@@ -14,6 +14,7 @@
 #include "shadinglab/model/Fresnel.h"
 #include "shadinglab/model/Vec3.h"
 
+#include <cmath>
 #include <string>
 #include <string_view>
 
@@ -250,6 +251,19 @@ struct Analyser
   T cos2Theta = T(1), sin2Theta = T(0), circular = T(0);
   /// The image's x and y axes in the space the shading is done in.
   Vec3<T> right{ T(1), T(0), T(0) }, up{ T(0), T(1), T(0) };
+
+  /// The analyser whose axis is `degrees` from the image's x axis (linear),
+  /// or the circular one (the angle unused), in the image's own frame.
+  static Analyser At(double degrees, bool isCircular)
+  {
+    const double twoTheta = 2.0 * degrees * kPi<double> / 180.0;
+    Analyser a;
+    a.on = true;
+    a.cos2Theta = isCircular ? T(0) : static_cast<T>(std::cos(twoTheta));
+    a.sin2Theta = isCircular ? T(0) : static_cast<T>(std::sin(twoTheta));
+    a.circular = isCircular ? T(1) : T(0);
+    return a;
+  }
 
   template <typename U>
   Analyser<U> Cast() const

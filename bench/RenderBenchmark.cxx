@@ -36,6 +36,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <functional>
 #include <map>
 #include <memory>
 #include <thread>
@@ -432,8 +433,10 @@ void BM_CpuModeBySize(benchmark::State& state)
 }
 
 /// Renders `actor` in an offscreen 1920x1080 window with the scene's camera,
-/// once to upload, then times steady-state redraws.
-void TimeFrames(benchmark::State& state, const Scene& scene, vtkActor* actor)
+/// once to upload, then times steady-state redraws (`afterFrame`, when
+/// given, runs after each, inside the timing).
+void TimeFrames(benchmark::State& state, const Scene& scene, vtkActor* actor,
+  const std::function<void()>& afterFrame = {})
 {
   vtkNew<vtkRenderer> renderer;
   renderer->AddActor(actor);
@@ -456,6 +459,10 @@ void TimeFrames(benchmark::State& state, const Scene& scene, vtkActor* actor)
     cam->Azimuth(0.0); // marks the camera modified so the frame is redrawn
     window->Render();
     window->WaitForCompletion();
+    if (afterFrame)
+    {
+      afterFrame();
+    }
   }
 }
 
@@ -510,6 +517,39 @@ void BM_ShadingLabGL(benchmark::State& state)
   state.SetLabel(std::string("shadinglab-gl ") +
     render::ShadingModeName(static_cast<render::ShadingMode>(mode)) + "/" +
     sl::ReflectanceModelName(material.model) + " llvmpipe");
+}
+
+/// The mapper's CPU backend in the same window: the CPU renderer's frame
+/// handed to OpenGL as colour and depth (CpuBackend.h). Counter
+/// handover_ms: the hand-over's share of a frame (display transform,
+/// texture upload of the rectangle the surface covers, the quad's draw
+/// call; the quad's fragments run in WaitForCompletion, inside the frame).
+void BM_ShadingLabCpuBackend(benchmark::State& state)
+{
+  if (!std::getenv("DISPLAY"))
+  {
+    state.SkipWithError("no DISPLAY: run under scripts/with-xvfb");
+    return;
+  }
+  const Scene& scene = GetScene(static_cast<int>(state.range(0)));
+  const int mode = static_cast<int>(state.range(1));
+  vtkNew<vtkShadingLabPolyDataMapper> mapper;
+  mapper->SetInputData(scene.polydata);
+  mapper->SetSetting("mode", sl::render::ShadingModeName(static_cast<sl::render::ShadingMode>(mode)));
+  mapper->SetSetting("backend", "cpu");
+  sl::Material<double> material;
+  material.model = static_cast<sl::ReflectanceModel>(state.range(2));
+  material.shininess = 32;
+  mapper->SetMaterial(material);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  std::vector<double> handOver;
+  TimeFrames(state, scene, actor, [&]() { handOver.push_back(mapper->GetCpuHandOverMilliseconds()); });
+  std::sort(handOver.begin(), handOver.end());
+  state.counters["handover_ms"] = handOver.empty() ? 0.0 : handOver[handOver.size() / 2];
+  state.SetLabel(std::string("shadinglab-cpu-backend ") +
+    render::ShadingModeName(static_cast<render::ShadingMode>(mode)) + "/" +
+    sl::ReflectanceModelName(material.model) + " llvmpipe window");
 }
 
 /// The GL path's spectral Fresnel (a 16-sample loop per light per pixel)
@@ -756,6 +796,10 @@ BENCHMARK(BM_VtkOpenGL)
   ->Unit(benchmark::kMillisecond)
   ->UseRealTime();
 BENCHMARK(BM_ShadingLabGL)
+  ->Apply(GlArgs)
+  ->Unit(benchmark::kMillisecond)
+  ->UseRealTime();
+BENCHMARK(BM_ShadingLabCpuBackend)
   ->Apply(GlArgs)
   ->Unit(benchmark::kMillisecond)
   ->UseRealTime();

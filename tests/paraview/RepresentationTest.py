@@ -637,5 +637,27 @@ check(green['GPU'] > 2000 and abs(green['CPU'] - green['GPU']) <= 0.01 * green['
       'a native plane through the surface occludes alike on both backends (%d, %d green pixels; '
       '%d without the surface)' % (green['GPU'], green['CPU'], green_alone))
 
+# The same plane translucent (depth peeling, ParaView's default) over the
+# surface, and a selection's highlight (cells picked by id, drawn by
+# ParaView's selection representation on top): both native passes see the
+# CPU backend's colour and depth as they see the GL path's.
+rep.Visibility = 1
+plane.Opacity = 0.5
+SelectIDs(IDs=sum(([0, k] for k in range(0, 2000, 7)), []),
+          FieldType='CELL', Source=elevation)
+layered = {}
+for backend in ['GPU', 'CPU']:
+    rep.Backend = backend
+    layered[backend] = shot('translucent_selected_' + backend.lower())
+ClearSelection(elevation)
+plain = shot('translucent_unselected_cpu')
+both = covered(layered['GPU']) & covered(layered['CPU'])
+d = numpy.abs(layered['GPU'][both] - layered['CPU'][both])
+highlighted = numpy.any(layered['CPU'] != plain, axis=2).sum()
+check(both.sum() > 5000 and d.mean() <= 1.0 and numpy.percentile(d, 99) <= 4 and highlighted > 500,
+      'translucent native plane and selection highlight over Backend CPU as over GPU: mean %.3f, '
+      'p99 %.1f /255; the selection changes %d pixels' % (d.mean(), numpy.percentile(d, 99), highlighted))
+plane.Opacity = 1.0
+
 print('%d failure(s)' % len(failures))
 sys.exit(1 if failures else 0)

@@ -344,14 +344,16 @@ QImage CpuPanel::DolpMap() const
     const Vec3<float> c = viridis.Map(dolp);
     return QColor::fromRgbF(c.x, c.y, c.z);
   };
+  const std::vector<float> rgb =
+    render::FalseColour(stokes, render::StokesQuantity::Dolp, Vec3<float>(0, 0, 0));
   for (int y = 0; y < stokes.height; ++y)
   {
     for (int x = 0; x < stokes.width; ++x)
     {
       const size_t p = static_cast<size_t>(y) * stokes.width + x;
-      if (stokes.covered[p])
+      if (stokes.covered[p]) // NaN, no light: the map's grey
       {
-        image.setPixelColor(x, y, colour(stokes.dolp[p])); // NaN, no light: the map's grey
+        image.setPixelColor(x, y, QColor::fromRgbF(rgb[3 * p], rgb[3 * p + 1], rgb[3 * p + 2]));
       }
     }
   }

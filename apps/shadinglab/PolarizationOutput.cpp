@@ -126,16 +126,12 @@ double WritePolarizationOutput(render::Renderer& renderer, const render::Scene& 
   const render::ColorMap map =
     kind == "dolp" ? render::DolpColorMap() : render::AopColorMap();
   const std::string title = kind == "dolp" ? "DoLP" : "AoP (deg from x)";
-  const Vec3<float> bg = options.background;
-  std::vector<uint8_t> rgb8(3 * n);
-  for (size_t p = 0; p < n; ++p)
+  const std::vector<float> rgb = render::FalseColour(stokes,
+    kind == "dolp" ? render::StokesQuantity::Dolp : render::StokesQuantity::Aop, options.background);
+  std::vector<uint8_t> rgb8(rgb.size());
+  for (size_t k = 0; k < rgb.size(); ++k)
   {
-    const bool lit = stokes.covered[p];
-    const Vec3<float> c = lit ? map.Map(kind == "dolp" ? dolp[p] : aop[p]) : bg;
-    for (int k = 0; k < 3; ++k)
-    {
-      rgb8[3 * p + k] = static_cast<uint8_t>(std::lround(255.0f * std::clamp(c[k], 0.0f, 1.0f)));
-    }
+    rgb8[k] = static_cast<uint8_t>(std::lround(255.0f * std::clamp(rgb[k], 0.0f, 1.0f)));
   }
   DrawColorLegend(rgb8, W, H, map, title);
   WritePng(W, H, rgb8, path);

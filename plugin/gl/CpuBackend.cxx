@@ -166,19 +166,13 @@ std::string CpuBackend::Draw(
       const render::StokesImage stokes =
         render::MeasureStokes(this->Renderer, scene, options, &this->Stats);
       const bool dolp = settings.polarizationImage == render::PolarizationImage::Dolp;
-      const render::ColorMap map = dolp ? render::DolpColorMap() : render::AopColorMap();
       this->Polarization.width = stokes.width;
       this->Polarization.height = stokes.height;
       this->Polarization.covered = stokes.covered;
       this->Polarization.depth = stokes.depth;
-      this->Polarization.rgb.resize(3 * stokes.covered.size());
-      for (size_t p = 0; p < stokes.covered.size(); ++p)
-      {
-        const Vec3<float> c = map.Map(dolp ? stokes.dolp[p] : stokes.aop[p]);
-        this->Polarization.rgb[3 * p] = c.x;
-        this->Polarization.rgb[3 * p + 1] = c.y;
-        this->Polarization.rgb[3 * p + 2] = c.z;
-      }
+      // Uncovered pixels are not handed over: their colour is never read.
+      this->Polarization.rgb = render::FalseColour(stokes,
+        dolp ? render::StokesQuantity::Dolp : render::StokesQuantity::Aop, Vec3<float>(0, 0, 0));
       this->Polarization.displayApplied = true;
       image = &this->Polarization;
     }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "shadinglab/render/Stokes.h"
 
+#include "shadinglab/render/ColorMap.h"
 #include "shadinglab/render/Image.h"
 
 #include <algorithm>
@@ -69,6 +70,23 @@ StokesImage MeasureStokes(
   }
   out.meanDolp = counted ? dolpSum / counted : 0.0;
   return out;
+}
+
+std::vector<float> FalseColour(
+  const StokesImage& stokes, StokesQuantity quantity, const Vec3<float>& background)
+{
+  const bool dolp = quantity == StokesQuantity::Dolp;
+  const ColorMap map = dolp ? DolpColorMap() : AopColorMap();
+  const std::vector<float>& values = dolp ? stokes.dolp : stokes.aop;
+  std::vector<float> rgb(3 * stokes.covered.size());
+  for (size_t p = 0; p < stokes.covered.size(); ++p)
+  {
+    const Vec3<float> c = stokes.covered[p] ? map.Map(values[p]) : background;
+    rgb[3 * p] = c.x;
+    rgb[3 * p + 1] = c.y;
+    rgb[3 * p + 2] = c.z;
+  }
+  return rgb;
 }
 
 } // namespace shadinglab::render

@@ -43,4 +43,18 @@ struct StokesImage
 StokesImage MeasureStokes(Renderer& renderer, const Scene& scene, const RenderOptions& options,
   RenderStats* stats = nullptr);
 
+/// What a false-colour polarization picture shows.
+enum class StokesQuantity
+{
+  Dolp, ///< degree of linear polarization, DolpColorMap() (ColorMap.h)
+  Aop   ///< angle of polarization, AopColorMap()
+};
+
+/// The false colour of every pixel (linear RGB in [0, 1], three floats a
+/// pixel, rows top-down): the quantity through its colour map where the
+/// surface is (NaN, no light: the map's NaN colour), `background` elsewhere.
+/// The CLI's PNG, the explorer's DoLP panel and ParaView's image use it.
+std::vector<float> FalseColour(
+  const StokesImage& stokes, StokesQuantity quantity, const Vec3<float>& background);
+
 } // namespace shadinglab::render

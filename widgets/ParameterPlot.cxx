@@ -87,7 +87,8 @@ QChart* MakeBarChart(const QString& title, const QString& xTitle, const QString&
 } // namespace
 
 void ParameterPlot::SetSeries(const QString& title, const QString& xTitle, const QString& yTitle,
-  const std::vector<ParameterSeries>& series, double marker, const std::vector<QString>& categories)
+  const std::vector<ParameterSeries>& series, double marker, const std::vector<QString>& categories,
+  const QString& markerLabel)
 {
   this->Data = series;
   if (!categories.empty())
@@ -148,7 +149,7 @@ void ParameterPlot::SetSeries(const QString& title, const QString& xTitle, const
   if (marker > -1e299)
   {
     auto* mark = new QLineSeries;
-    mark->setName("current");
+    mark->setName(markerLabel);
     mark->setPen(QPen(Qt::black, 1, Qt::DashLine));
     mark->append(marker, ylo);
     mark->append(marker, yhi * 1.1);

@@ -31,11 +31,12 @@ class ParameterPlot : public QWidget
 public:
   explicit ParameterPlot(QWidget* parent = nullptr);
   /// Replaces the plot. `marker` >= xmin draws a vertical line there (the
-  /// parameter's current value). With `categories`, a bar chart: the
-  /// series' x are category indices, one bar per series in each group.
+  /// parameter's current value, or what `markerLabel` names in the legend).
+  /// With `categories`, a bar chart: the series' x are category indices,
+  /// one bar per series in each group.
   void SetSeries(const QString& title, const QString& xTitle, const QString& yTitle,
     const std::vector<ParameterSeries>& series, double marker = -1e300,
-    const std::vector<QString>& categories = {});
+    const std::vector<QString>& categories = {}, const QString& markerLabel = "current");
   const std::vector<ParameterSeries>& Series() const { return this->Data; }
 
 private:

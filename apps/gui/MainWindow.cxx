@@ -448,7 +448,7 @@ void MainWindow::UpdatePlot()
       this->ParameterChart->SetSeries(QString::fromStdString(this->CurrentStudy.title),
         QString::fromStdString(this->CurrentStudy.xTitle),
         QString::fromStdString(this->CurrentStudy.yTitle), series, this->CurrentStudy.marker,
-        categories);
+        categories, QString::fromStdString(this->CurrentStudy.markerLabel));
       break;
     }
     case PlotKind::Brdf:

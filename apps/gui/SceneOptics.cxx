@@ -64,7 +64,7 @@ Scene Polarization(const SceneOptions& o)
   const double theta = o.polarizer, crossed = std::fmod(o.polarizer + 90.0, 180.0);
   char a[96], b[96], c[96];
   std::snprintf(a, sizeof a, "Glass through a polarizer at %.0f deg", theta);
-  std::snprintf(b, sizeof b, "Glass, polarizer at %.0f deg (crossed)", crossed);
+  std::snprintf(b, sizeof b, "Glass through a polarizer at %.0f deg", crossed);
   std::snprintf(c, sizeof c, "Gold through a polarizer at %.0f deg", theta);
   s.panels = { plain, through(a, glass, theta), through(b, glass, crossed), through(c, gold, theta),
     dolp };
@@ -146,6 +146,7 @@ Study PolarizationStudy()
   double n = 0, k = 0;
   PresetDispersion("glass")->Evaluate(550.0, n, k);
   study.marker = std::atan(n) * 180.0 / kPi<double>;
+  study.markerLabel = "Brewster's angle";
   double gn = 0, gk = 0;
   PresetDispersion("gold")->Evaluate(550.0, gn, gk);
   Study::Series rs{ "glass Rs", {}, {} }, rp{ "glass Rp", {}, {} }, dolp{ "glass DoLP", {}, {} };

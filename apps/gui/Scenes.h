@@ -107,6 +107,7 @@ struct Study
   std::vector<Series> series;
   std::vector<std::string> categories; ///< labels of integer x values, or empty
   double marker = -1e300;              ///< the current parameter value
+  std::string markerLabel = "current"; ///< the marker's legend entry
 };
 Study RunStudy(const Scene& scene, const SceneOptions& options);
 

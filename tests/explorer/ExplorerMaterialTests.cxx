@@ -1,0 +1,182 @@
+// SPDX-License-Identifier: BSD-3-Clause
+// The explorer's material scenes: the Moon, metals, Lommel-Seeliger on
+// both backends, polarization and spectral Fresnel.
+#include "ExplorerGLTest.h"
+#include "ExplorerTestUtil.h"
+
+void ExplorerGLTest::MoonProfiles()
+{
+  auto window = Open("moon", render::Backend::CPU);
+  widgets::ComparisonWidget* view = window->Comparison();
+  vtkCamera* camera = view->View().camera;
+  const std::vector<widgets::Profile> profiles = view->Profiles();
+  const render::Image image = view->Panel(0)->Snapshot();
+  const double centre[3] = { 0, 0, 0 };
+  double cx, cy;
+  Project(camera, centre, image.width, image.height, cx, cy);
+  // Parallel projection: the unit sphere's radius in pixels.
+  const double radius = image.height / (2.0 * camera->GetParallelScale());
+  const double kd = view->Panel(0)->Spec().material.kd;
+  double worstLambert = 0, lo = 1e9, hi = -1e9;
+  int checked = 0;
+  for (size_t s = 0; s < profiles[0].intensity.size(); ++s)
+  {
+    const double r = std::hypot(profiles[0].pixelX[s] - cx, profiles[0].pixelY[s] - cy) / radius;
+    if (r > 0.9 || !profiles[0].covered[s])
+    {
+      continue; // the limb: facets of the tessellation
+    }
+    // Light from the viewer: I = kd rho (N.L) with N.L = cos(theta) = sqrt(1 - r^2).
+    worstLambert =
+      std::max(worstLambert, std::abs(profiles[0].intensity[s] - kd * std::sqrt(1 - r * r)));
+    lo = std::min(lo, profiles[1].intensity[s]);
+    hi = std::max(hi, profiles[1].intensity[s]);
+    ++checked;
+  }
+  QVERIFY(checked > 100);
+  QVERIFY2(worstLambert <= kOne255,
+    qPrintable(QString("Lambert off the cosine law by %1/255").arg(worstLambert * 255)));
+  QVERIFY2(hi - lo <= kOne255,
+    qPrintable(QString("Lommel-Seeliger disk varies by %1/255").arg((hi - lo) * 255)));
+  QVERIFY(std::abs(lo - kd) < kOne255); // equal to Lambert's centre (eq. 1.12)
+}
+
+void ExplorerGLTest::MetalHighlightsKeepTheirColour()
+{
+  // The scene's dim light reaches the panels: the metals' highlights stay
+  // below 1 in every channel (a clamped highlight is white, its Fresnel
+  // colour lost), and gold's is yellower (more green per red) than copper's.
+  auto window = Open("metal", render::Backend::CPU);
+  widgets::ComparisonWidget* view = window->Comparison();
+  QCOMPARE(view->PanelCount(), 4);
+  double greenPerRed[2] = { 0, 0 };
+  for (int p = 0; p < 2; ++p)
+  {
+    const render::Image image = view->Panel(p)->Snapshot();
+    size_t brightest = 0;
+    double best = -1;
+    for (size_t i = 0; i < image.covered.size(); ++i)
+    {
+      const float* c = &image.rgb[3 * i];
+      if (image.covered[i] && c[0] + c[1] + c[2] > best)
+      {
+        best = c[0] + c[1] + c[2];
+        brightest = i;
+      }
+    }
+    const float* c = &image.rgb[3 * brightest];
+    QVERIFY2(c[0] < 1.0f && c[1] < 1.0f && c[2] < 1.0f && c[0] > 0.2f,
+      qPrintable(QString("panel %1 highlight %2 %3 %4").arg(p).arg(c[0]).arg(c[1]).arg(c[2])));
+    greenPerRed[p] = c[1] / c[0];
+  }
+  QVERIFY2(greenPerRed[0] > greenPerRed[1] + 0.05,
+    qPrintable(QString("gold G/R %1, copper %2").arg(greenPerRed[0]).arg(greenPerRed[1])));
+}
+
+void ExplorerGLTest::LommelSeeligerOnGpuMatchesCpu()
+{
+  // The new model on both backends: the moon scene's middle panel.
+  auto gpu = Open("moon", render::Backend::GPU);
+  auto cpu = Open("moon", render::Backend::CPU);
+  QCOMPARE(gpu->Comparison()->Panel(1)->Backend(), render::Backend::GPU);
+  const widgets::Profile g = gpu->Comparison()->Profiles()[1];
+  const widgets::Profile c = cpu->Comparison()->Profiles()[1];
+  QCOMPARE(g.intensity.size(), c.intensity.size());
+  int both = 0;
+  for (size_t s = 0; s < g.intensity.size(); ++s)
+  {
+    if (g.covered[s] && c.covered[s])
+    {
+      ++both;
+      QVERIFY2(std::abs(g.intensity[s] - c.intensity[s]) <= 1.5 * kOne255,
+        qPrintable(QString("sample %1: GPU %2, CPU %3").arg(s).arg(g.intensity[s]).arg(c.intensity[s])));
+    }
+  }
+  QVERIFY(both > 100);
+}
+
+// The glass's highlight, near Brewster's angle and s-polarized (vertical in
+// the image), passes a polarizer at 90 degrees and is removed by the crossed
+// one at 0; the plot's DoLP peaks at 1 at its marker, Brewster's angle.
+void ExplorerGLTest::PolarizationSceneShowsBrewster()
+{
+  auto window = Open("polarization", render::Backend::CPU);
+  widgets::ComparisonWidget* view = window->Comparison();
+  QCOMPARE(view->PanelCount(), 5);
+  // --polarizer 0 by default: panel 2 at 0 degrees, panel 3 crossed (90).
+  const double none = MeanLuminance(view->Panel(0)->Snapshot());
+  const double at0 = MeanLuminance(view->Panel(1)->Snapshot());
+  const double at90 = MeanLuminance(view->Panel(2)->Snapshot());
+  QVERIFY2(at90 > 1.5 * at0, qPrintable(QString("%1 vs %2").arg(at90).arg(at0)));
+  QVERIFY(none > at90 && none > at0);
+  // The DoLP panel: what a polarization camera measures. Its most
+  // polarized pixels are the highlight's, s-polarized: vertical (AoP +-90).
+  auto* dolpPanel = dynamic_cast<widgets::CpuPanel*>(view->Panel(4));
+  QVERIFY(dolpPanel);
+  auto dolpSummary = [](const render::StokesImage& stokes) {
+    double peak = 0.0, peakAop = 0.0;
+    for (size_t p = 0; p < stokes.dolp.size(); ++p)
+    {
+      if (!std::isnan(stokes.dolp[p]) && stokes.dolp[p] > peak)
+      {
+        peak = stokes.dolp[p];
+        peakAop = stokes.aop[p];
+      }
+    }
+    return std::make_pair(peak, peakAop);
+  };
+  const auto [dolpPeak, peakAop] = dolpSummary(dolpPanel->LastStokes());
+  QVERIFY2(dolpPeak > 0.4 && dolpPeak <= 1.0 && std::abs(std::abs(peakAop) - 90.0) < 15.0,
+    qPrintable(QString("DoLP %1 at AoP %2").arg(dolpPeak).arg(peakAop)));
+  // A polarizer in front of the light along the image's x axis: the light
+  // meets the highlight's facets p-polarized near Brewster's angle, where
+  // glass hardly reflects it: the highlight fades in every panel, and the
+  // DoLP panel measures another light: its most polarized pixels are where
+  // facets tilted out of the horizontal plane reflect the light's s part
+  // (their polarization tilted too, no longer vertical).
+  auto* lightPolarizer = window->findChild<QDoubleSpinBox*>("lightPolarizer");
+  QVERIFY(lightPolarizer);
+  lightPolarizer->setValue(0.0);
+  emit lightPolarizer->editingFinished();
+  Settle();
+  window->RefreshNow();
+  const double polarizedLight = MeanLuminance(view->Panel(0)->Snapshot());
+  QVERIFY2(polarizedLight < 0.75 * none,
+    qPrintable(QString("%1 vs %2").arg(polarizedLight).arg(none)));
+  // The scene was rebuilt with new panels: the DoLP panel is another one.
+  dolpPanel = dynamic_cast<widgets::CpuPanel*>(view->Panel(4));
+  QVERIFY(dolpPanel);
+  const auto [peakP, peakAopP] = dolpSummary(dolpPanel->LastStokes());
+  QVERIFY2(std::abs(std::abs(peakAopP) - 90.0) > 20.0 && std::abs(peakP - dolpPeak) > 0.02,
+    qPrintable(QString("DoLP %1 at AoP %2").arg(peakP).arg(peakAopP)));
+  const std::string csv = window->PlotCsv();
+  const auto dolp = StudySeries(csv, "glass DoLP");
+  QVERIFY2(dolp.size() == 90, csv.c_str());
+  auto peak = std::max_element(dolp.begin(), dolp.end(),
+    [](const auto& a, const auto& b) { return a.second < b.second; });
+  QVERIFY2(std::abs(peak->first - 57.0) <= 1.0 && peak->second > 0.999,
+    qPrintable(QString("%1: %2").arg(peak->first).arg(peak->second)));
+}
+
+// Gold with three RGB samples against its spectrum: a visible colour
+// difference (the heat map's CIEDE2000 well above 1 where the highlight is).
+void ExplorerGLTest::SpectralSceneShowsTheColourDifference()
+{
+  auto window = Open("spectral", render::Backend::CPU);
+  widgets::ComparisonWidget* view = window->Comparison();
+  QCOMPARE(view->PanelCount(), 5);
+  const render::Image rgb = view->Panel(0)->Snapshot(), spectral = view->Panel(1)->Snapshot();
+  double worst = 0;
+  for (size_t p = 0; p < rgb.covered.size(); ++p)
+  {
+    if (rgb.covered[p] && spectral.covered[p])
+    {
+      worst = std::max(worst,
+        DeltaE2000(Vec3<double>(rgb.rgb[3 * p], rgb.rgb[3 * p + 1], rgb.rgb[3 * p + 2]),
+          Vec3<double>(spectral.rgb[3 * p], spectral.rgb[3 * p + 1], spectral.rgb[3 * p + 2])));
+    }
+  }
+  QVERIFY2(worst > 2.0, qPrintable(QString::number(worst)));
+  const auto n = StudySeries(window->PlotCsv(), "gold n");
+  QCOMPARE(static_cast<int>(n.size()), 81);
+}

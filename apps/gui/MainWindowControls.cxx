@@ -193,50 +193,35 @@ QWidget* MainWindow::BuildControls()
       this->ReloadScene();
     }
   });
-  this->Distance = new QDoubleSpinBox;
-  this->Distance->setRange(kMinConditionsDistance, kMaxConditionsDistance);
-  this->Distance->setDecimals(1);
-  this->Distance->setValue(this->Options.distance);
-  this->Distance->setSuffix(" radii");
-  plotForm->addRow("flat-conditions: distance", this->Distance);
-  connect(this->Distance, &QDoubleSpinBox::editingFinished, this, [this] {
-    this->Options.distance = this->Distance->value();
-    if (this->Current.name == "flat-conditions")
-    {
-      this->ReloadScene();
-    }
-  });
-  auto* polarizer = new QDoubleSpinBox;
-  polarizer->setObjectName("polarizer");
-  polarizer->setRange(0.0, 180.0);
-  polarizer->setDecimals(0);
-  polarizer->setSingleStep(15.0);
-  polarizer->setValue(this->Options.polarizer);
-  polarizer->setSuffix(" deg");
-  plotForm->addRow("polarization: polarizer", polarizer);
-  connect(polarizer, &QDoubleSpinBox::editingFinished, this, [this, polarizer] {
-    this->Options.polarizer = polarizer->value();
-    if (this->Current.name == "polarization")
-    {
-      this->ReloadScene();
-    }
-  });
-  auto* lightPolarizer = new QDoubleSpinBox;
-  lightPolarizer->setObjectName("lightPolarizer");
-  lightPolarizer->setRange(-1.0, 180.0);
-  lightPolarizer->setDecimals(0);
-  lightPolarizer->setSingleStep(15.0);
-  lightPolarizer->setSpecialValueText("none (unpolarized)");
-  lightPolarizer->setValue(this->Options.lightPolarizer);
-  lightPolarizer->setSuffix(" deg");
-  plotForm->addRow("polarization: light polarizer", lightPolarizer);
-  connect(lightPolarizer, &QDoubleSpinBox::editingFinished, this, [this, lightPolarizer] {
-    this->Options.lightPolarizer = lightPolarizer->value();
-    if (this->Current.name == "polarization")
-    {
-      this->ReloadScene();
-    }
-  });
+  // A scene's own number: editing it sets the option and reloads the scene
+  // when that scene is shown (the option is kept for when it is loaded).
+  auto sceneNumber = [this, plotForm](const char* name, const QString& label, double& option,
+                       const std::string& scene, double lo, double hi, int decimals, double step,
+                       const QString& suffix) {
+    auto* box = new QDoubleSpinBox;
+    box->setObjectName(name);
+    box->setRange(lo, hi);
+    box->setDecimals(decimals);
+    box->setSingleStep(step);
+    box->setValue(option);
+    box->setSuffix(suffix);
+    plotForm->addRow(label, box);
+    connect(box, &QDoubleSpinBox::editingFinished, this, [this, box, &option, scene] {
+      option = box->value();
+      if (this->Current.name == scene)
+      {
+        this->ReloadScene();
+      }
+    });
+    return box;
+  };
+  this->Distance = sceneNumber("distance", "flat-conditions: distance", this->Options.distance,
+    "flat-conditions", kMinConditionsDistance, kMaxConditionsDistance, 1, 1.0, " radii");
+  sceneNumber("polarizer", "polarization: polarizer", this->Options.polarizer, "polarization",
+    0.0, 180.0, 0, 15.0, " deg");
+  sceneNumber("lightPolarizer", "polarization: light polarizer", this->Options.lightPolarizer,
+    "polarization", -1.0, 180.0, 0, 15.0, " deg")
+    ->setSpecialValueText("none (unpolarized)");
   this->ThetaL = MakeSlider(0, 89, 45);
   plotForm->addRow("brdf: light angle", this->ThetaL);
   this->Shininess = MakeSlider(1, 200, 32);

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "MeshArrays.h"
+#include "Orientation.h"
 
 #include <vtkCellArray.h>
 #include <vtkDoubleArray.h>
@@ -93,6 +94,22 @@ vtkSmartPointer<vtkPolyData> WithoutStrips(vtkPolyData* input, bool keepLinesAnd
   triangles->SetPassVerts(keepLinesAndVerts);
   triangles->Update();
   return triangles->GetOutput();
+}
+
+vtkSmartPointer<vtkPolyData> ConsistentlyOriented(vtkPolyData* input)
+{
+  FlatPolygons flat;
+  FlatPolygonsFromPolyData(input, flat);
+  if (!HasInconsistentOrientation(flat))
+  {
+    return input;
+  }
+  std::vector<int64_t> turned;
+  FlipFaces(flat, ConsistentOrientationFlips(flat), turned);
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->ShallowCopy(input);
+  out->SetPolys(CellArrayFromFlat(flat.offsets, flat.numberOfPolygons, turned.data()));
+  return out;
 }
 
 std::vector<int64_t> LineSegments(vtkPolyData* input)

@@ -40,6 +40,12 @@ vtkSmartPointer<vtkPolyData> WithoutStrips(vtkPolyData* input, bool keepLinesAnd
 vtkSmartPointer<vtkCellArray> CellArrayFromFlat(const int64_t* offsets,
   int64_t numberOfPolygons, const int64_t* connectivity);
 
+/// The input itself when its polygons are consistently oriented, else a
+/// shallow copy whose polygons are turned so that they are
+/// (Orientation.h: per component, outward when closed). Strips must have
+/// been triangulated by the caller. The input is not modified.
+vtkSmartPointer<vtkPolyData> ConsistentlyOriented(vtkPolyData* input);
+
 /// Point id pairs of the input's line cells (each segment of a polyline).
 std::vector<int64_t> LineSegments(vtkPolyData* input);
 

@@ -234,15 +234,18 @@ void vtkShadingLabPolyDataMapper::ChooseAutoMode(vtkRenderer* ren, vtkPolyData* 
   if (in.AutoInput != input || in.AutoFrom != input->GetMTime() ||
     in.AutoWeighting != in.Settings.normals.weighting)
   {
-    in.AutoMesh = sl::render::MeshFromPolyData(input, in.AutoFrame);
+    // What the smooth modes draw: inconsistently oriented faces turned, as
+    // PrepareInput turns them, before the predictors see the mesh.
+    vtkSmartPointer<vtkPolyData> oriented = sl::mesh::ConsistentlyOriented(input);
+    in.AutoMesh = sl::render::MeshFromPolyData(oriented, in.AutoFrame);
     in.AutoNormals = in.AutoMesh.normals;
     if (in.AutoNormals.size() != in.AutoMesh.points.size())
     {
-      // What the smooth modes draw without normals: this mapper's weighting
-      // (made once per input change; RenderPieceStart makes its own copy
-      // only in the mode chosen, which may be flat).
+      // Without normals: this mapper's weighting (made once per input
+      // change; RenderPieceStart makes its own copy only in the mode
+      // chosen, which may be flat).
       sl::mesh::FlatPolygons polygons;
-      sl::mesh::FlatPolygonsFromPolyData(input, polygons);
+      sl::mesh::FlatPolygonsFromPolyData(oriented, polygons);
       std::vector<double> normals;
       sl::mesh::ComputeVertexNormalsNoSplit(
         polygons, static_cast<sl::mesh::NormalWeighting>(in.Settings.normals.weighting), normals);

@@ -17,6 +17,7 @@
 #include <vtkCellData.h>
 #include <vtkCellArray.h>
 #include <vtkFloatArray.h>
+#include <vtkIdList.h>
 #include <vtkLight.h>
 #include <vtkPoints.h>
 #include <vtkMultiBlockDataSet.h>
@@ -1285,5 +1286,54 @@ TEST(GpuParityGLTest, AutoBackendChoosesTheCpuOnASoftwareRasterizerForLargeMeshe
     MapperScene cpu(large, settings, cam, sl::Vec3d(0.4, 0.6, 1.0), 240, 180);
     const auto d = Compare(Grab(cpu.window), Grab(b.window));
     EXPECT_EQ(d.mean, 0.0);
+  }
+}
+
+// Faces run inconsistently (every third reversed, no normals): the mapper
+// turns them back before it makes the normals, so each backend and mode
+// draws the intact mesh's picture, and auto chooses as for the intact mesh.
+TEST(GpuParityGLTest, InconsistentlyOrientedMeshDrawsAsTheIntactOne)
+{
+  if (!HaveGpu())
+  {
+    GTEST_SKIP() << "no X display with OpenGL";
+  }
+  vtkSmartPointer<vtkPolyData> intact;
+  intact.TakeReference(sl::datasets::MakeUVSphere(96, 48));
+  intact->GetPointData()->SetNormals(nullptr);
+  vtkNew<vtkPolyData> reversed;
+  reversed->ShallowCopy(intact);
+  vtkNew<vtkCellArray> cells;
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType c = 0; c < intact->GetNumberOfPolys(); ++c)
+  {
+    intact->GetPolys()->GetCellAtId(c, ids);
+    std::vector<vtkIdType> corners(ids->begin(), ids->end());
+    if (c % 3 == 1)
+    {
+      std::reverse(corners.begin(), corners.end());
+    }
+    cells->InsertNextCell(static_cast<vtkIdType>(corners.size()), corners.data());
+  }
+  reversed->SetPolys(cells);
+  const render::Camera cam = Camera();
+  for (auto backend : { render::MapperBackend::GPU, render::MapperBackend::CPU })
+  {
+    for (auto mode : { render::ShadingMode::Gouraud, render::ShadingMode::Phong,
+           render::ShadingMode::Auto })
+    {
+      render::Settings settings;
+      settings.material = BlinnPhong();
+      settings.backend = backend;
+      settings.render.mode = mode;
+      MapperScene a(intact, settings, cam, sl::Vec3d(0.4, 0.6, 1.0), 240, 180);
+      MapperScene b(reversed, settings, cam, sl::Vec3d(0.4, 0.6, 1.0), 240, 180);
+      const auto d = Compare(Grab(a.window), Grab(b.window));
+      const std::string what = std::string(backend == render::MapperBackend::GPU ? "gpu " : "cpu ") +
+        render::ShadingModeName(mode);
+      EXPECT_GT(d.pixels, 5000) << what;
+      EXPECT_EQ(d.mean, 0.0) << what;
+      EXPECT_EQ(a.mapper->GetAutoChoice(), b.mapper->GetAutoChoice()) << what;
+    }
   }
 }

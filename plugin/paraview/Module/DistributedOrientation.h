@@ -79,7 +79,12 @@ inline vtkSmartPointer<vtkPolyData> OrientedAcrossRanks(
     }
     for (int r = 1; r < controller->GetNumberOfProcesses(); ++r)
     {
-      controller->Send(perRank[r].data(), static_cast<vtkIdType>(perRank[r].size()), r, kFlipsTag);
+      // A rank without polygons posts no receive: nothing is sent to it
+      // (an unreceived message would be taken by its next call's receive).
+      if (!perRank[r].empty())
+      {
+        controller->Send(perRank[r].data(), static_cast<vtkIdType>(perRank[r].size()), r, kFlipsTag);
+      }
     }
     flips = perRank[0];
   }

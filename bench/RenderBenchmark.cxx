@@ -494,8 +494,13 @@ void BM_VtkOpenGL(benchmark::State& state)
                                           : "vtk-gouraud llvmpipe");
 }
 
-/// Our GPU mapper, each mode, same scene and window setup as BM_VtkOpenGL.
-void BM_ShadingLabGL(benchmark::State& state)
+/// Our mapper, each mode, same scene and window setup as BM_VtkOpenGL, on
+/// the backend `cpu` names: the GLSL shaders, or the CPU renderer's frame
+/// handed to OpenGL as colour and depth (CpuBackend.h; counter
+/// handover_ms: the hand-over's share of a frame, the median over the
+/// frames: display transform, texture upload of the rectangle the surface
+/// covers, the quad's draw call, whose fragments run inside the frame).
+void TimeShadingLabMapper(benchmark::State& state, bool cpu)
 {
   if (!std::getenv("DISPLAY"))
   {
@@ -507,36 +512,7 @@ void BM_ShadingLabGL(benchmark::State& state)
   vtkNew<vtkShadingLabPolyDataMapper> mapper;
   mapper->SetInputData(scene.polydata);
   mapper->SetSetting("mode", sl::render::ShadingModeName(static_cast<sl::render::ShadingMode>(mode)));
-  sl::Material<double> material;
-  material.model = static_cast<sl::ReflectanceModel>(state.range(2));
-  material.shininess = 32;
-  mapper->SetMaterial(material);
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  TimeFrames(state, scene, actor);
-  state.SetLabel(std::string("shadinglab-gl ") +
-    render::ShadingModeName(static_cast<render::ShadingMode>(mode)) + "/" +
-    sl::ReflectanceModelName(material.model) + " llvmpipe");
-}
-
-/// The mapper's CPU backend in the same window: the CPU renderer's frame
-/// handed to OpenGL as colour and depth (CpuBackend.h). Counter
-/// handover_ms: the hand-over's share of a frame (display transform,
-/// texture upload of the rectangle the surface covers, the quad's draw
-/// call; the quad's fragments run in WaitForCompletion, inside the frame).
-void BM_ShadingLabCpuBackend(benchmark::State& state)
-{
-  if (!std::getenv("DISPLAY"))
-  {
-    state.SkipWithError("no DISPLAY: run under scripts/with-xvfb");
-    return;
-  }
-  const Scene& scene = GetScene(static_cast<int>(state.range(0)));
-  const int mode = static_cast<int>(state.range(1));
-  vtkNew<vtkShadingLabPolyDataMapper> mapper;
-  mapper->SetInputData(scene.polydata);
-  mapper->SetSetting("mode", sl::render::ShadingModeName(static_cast<sl::render::ShadingMode>(mode)));
-  mapper->SetSetting("backend", "cpu");
+  mapper->SetSetting("backend", cpu ? "cpu" : "gpu");
   sl::Material<double> material;
   material.model = static_cast<sl::ReflectanceModel>(state.range(2));
   material.shininess = 32;
@@ -544,12 +520,30 @@ void BM_ShadingLabCpuBackend(benchmark::State& state)
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);
   std::vector<double> handOver;
-  TimeFrames(state, scene, actor, [&]() { handOver.push_back(mapper->GetCpuHandOverMilliseconds()); });
-  std::sort(handOver.begin(), handOver.end());
-  state.counters["handover_ms"] = handOver.empty() ? 0.0 : handOver[handOver.size() / 2];
-  state.SetLabel(std::string("shadinglab-cpu-backend ") +
+  std::function<void()> afterFrame;
+  if (cpu)
+  {
+    afterFrame = [&]() { handOver.push_back(mapper->GetCpuHandOverMilliseconds()); };
+  }
+  TimeFrames(state, scene, actor, afterFrame);
+  if (cpu)
+  {
+    std::sort(handOver.begin(), handOver.end());
+    state.counters["handover_ms"] = handOver.empty() ? 0.0 : handOver[handOver.size() / 2];
+  }
+  state.SetLabel(std::string(cpu ? "shadinglab-cpu-backend " : "shadinglab-gl ") +
     render::ShadingModeName(static_cast<render::ShadingMode>(mode)) + "/" +
-    sl::ReflectanceModelName(material.model) + " llvmpipe window");
+    sl::ReflectanceModelName(material.model) + (cpu ? " llvmpipe window" : " llvmpipe"));
+}
+
+void BM_ShadingLabGL(benchmark::State& state)
+{
+  TimeShadingLabMapper(state, false);
+}
+
+void BM_ShadingLabCpuBackend(benchmark::State& state)
+{
+  TimeShadingLabMapper(state, true);
 }
 
 /// The GL path's spectral Fresnel (a 16-sample loop per light per pixel)

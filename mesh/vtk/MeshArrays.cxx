@@ -96,6 +96,25 @@ vtkSmartPointer<vtkPolyData> WithoutStrips(vtkPolyData* input, bool keepLinesAnd
   return triangles->GetOutput();
 }
 
+bool InconsistentlyOriented(vtkPolyData* input)
+{
+  FlatPolygons flat;
+  FlatPolygonsFromPolyData(input, flat);
+  return HasInconsistentOrientation(flat);
+}
+
+vtkSmartPointer<vtkPolyData> WithPolygonsTurned(vtkPolyData* input, const std::vector<uint8_t>& flips)
+{
+  FlatPolygons flat;
+  FlatPolygonsFromPolyData(input, flat);
+  std::vector<int64_t> turned;
+  FlipFaces(flat, flips, turned);
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->ShallowCopy(input);
+  out->SetPolys(CellArrayFromFlat(flat.offsets, flat.numberOfPolygons, turned.data()));
+  return out;
+}
+
 vtkSmartPointer<vtkPolyData> ConsistentlyOriented(vtkPolyData* input)
 {
   FlatPolygons flat;
@@ -104,12 +123,7 @@ vtkSmartPointer<vtkPolyData> ConsistentlyOriented(vtkPolyData* input)
   {
     return input;
   }
-  std::vector<int64_t> turned;
-  FlipFaces(flat, ConsistentOrientationFlips(flat), turned);
-  auto out = vtkSmartPointer<vtkPolyData>::New();
-  out->ShallowCopy(input);
-  out->SetPolys(CellArrayFromFlat(flat.offsets, flat.numberOfPolygons, turned.data()));
-  return out;
+  return WithPolygonsTurned(input, ConsistentOrientationFlips(flat));
 }
 
 std::vector<int64_t> LineSegments(vtkPolyData* input)

@@ -40,6 +40,14 @@ vtkSmartPointer<vtkPolyData> WithoutStrips(vtkPolyData* input, bool keepLinesAnd
 vtkSmartPointer<vtkCellArray> CellArrayFromFlat(const int64_t* offsets,
   int64_t numberOfPolygons, const int64_t* connectivity);
 
+/// Whether two of the input's polygons run a shared edge the same way
+/// (Orientation.h HasInconsistentOrientation).
+bool InconsistentlyOriented(vtkPolyData* input);
+
+/// A shallow copy of the input with the polygons flagged in `flips` (one
+/// per polygon) reversed.
+vtkSmartPointer<vtkPolyData> WithPolygonsTurned(vtkPolyData* input, const std::vector<uint8_t>& flips);
+
 /// The input itself when its polygons are consistently oriented, else a
 /// shallow copy whose polygons are turned so that they are
 /// (Orientation.h: per component, outward when closed). Strips must have

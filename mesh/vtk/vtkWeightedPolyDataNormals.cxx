@@ -132,19 +132,19 @@ int vtkWeightedPolyDataNormals::RequestData(
   outPD->AddArray(originalIds);
 
   output->SetPoints(points);
-  if ((nOut == nIn || result.connectivity.empty()) && turned.empty())
+  if (nOut != nIn && !result.connectivity.empty())
   {
-    // No corner was moved to a split point: the polygons are the input's.
-    output->SetPolys(source->GetPolys());
+    // Corners moved to split points.
+    output->SetPolys(slm::CellArrayFromFlat(
+      mesh.offsets, mesh.numberOfPolygons, result.connectivity.data()));
   }
-  else if (nOut == nIn || result.connectivity.empty())
+  else if (!turned.empty())
   {
     output->SetPolys(slm::CellArrayFromFlat(mesh.offsets, mesh.numberOfPolygons, turned.data()));
   }
   else
   {
-    output->SetPolys(slm::CellArrayFromFlat(
-      mesh.offsets, mesh.numberOfPolygons, result.connectivity.data()));
+    output->SetPolys(source->GetPolys()); // the input's polygons as they are
   }
   output->SetVerts(source->GetVerts());
   output->SetLines(source->GetLines());

@@ -18,6 +18,23 @@ namespace sr = shadinglab::render;
 namespace
 {
 
+/// What the last render chose, read back as an information property (the
+/// representation's Get<name>), listed after the setting `after`.
+struct ChoiceReport
+{
+  const char* after;
+  const char* name;
+  const char* documentation;
+};
+constexpr ChoiceReport kChoiceReports[] = {
+  { "max-error", "AutoChoice",
+    "Auto shading mode: what the last render chose for each block and why (predicted error "
+    "and cost of each mode). Empty in the other modes." },
+  { "backend", "BackendChoice",
+    "The backend the last render drew each block with; for Auto, why (the OpenGL renderer, "
+    "hardware or a software rasterizer, and the polygon count against the crossover)." },
+};
+
 std::string Escape(const std::string& text)
 {
   std::string out;
@@ -191,13 +208,12 @@ void Extension(std::ostream& out, const std::string& representation)
     if (row.frontEnds & sr::kParaView)
     {
       out << "            <Property name=\"" << row.property << "\"/>\n";
-      if (row.key == "max-error")
+      for (const ChoiceReport& report : kChoiceReports)
       {
-        out << "            <Property name=\"AutoChoice\"/>\n";
-      }
-      if (row.key == "backend")
-      {
-        out << "            <Property name=\"BackendChoice\"/>\n";
+        if (row.key == report.after)
+        {
+          out << "            <Property name=\"" << report.name << "\"/>\n";
+        }
       }
     }
   }
@@ -242,25 +258,16 @@ int main(int argc, char** argv)
       continue;
     }
     Property(out, row);
-    if (row.key == "max-error")
+    for (const ChoiceReport& report : kChoiceReports)
     {
-      out << "      <StringVectorProperty name=\"AutoChoice\" command=\"GetAutoChoice\" "
-             "information_only=\"1\" panel_visibility=\"never\">\n"
-          << "        <SimpleStringInformationHelper/>\n"
-          << "        <Documentation>Auto shading mode: what the last render chose for each "
-             "block and why (predicted error and cost of each mode). Empty in the other "
-             "modes.</Documentation>\n"
-          << "      </StringVectorProperty>\n";
-    }
-    if (row.key == "backend")
-    {
-      out << "      <StringVectorProperty name=\"BackendChoice\" command=\"GetBackendChoice\" "
-             "information_only=\"1\" panel_visibility=\"never\">\n"
-          << "        <SimpleStringInformationHelper/>\n"
-          << "        <Documentation>The backend the last render drew each block with; for "
-             "Auto, why (the OpenGL renderer, hardware or a software rasterizer, and the "
-             "polygon count against the crossover).</Documentation>\n"
-          << "      </StringVectorProperty>\n";
+      if (row.key == report.after)
+      {
+        out << "      <StringVectorProperty name=\"" << report.name << "\" command=\"Get"
+            << report.name << "\" information_only=\"1\" panel_visibility=\"never\">\n"
+            << "        <SimpleStringInformationHelper/>\n"
+            << "        <Documentation>" << report.documentation << "</Documentation>\n"
+            << "      </StringVectorProperty>\n";
+      }
     }
   }
   out << "    </RepresentationProxy>\n\n";

@@ -40,9 +40,7 @@ inline vtkSmartPointer<vtkPolyData> OrientedAcrossRanks(
   vtkPolyData* input, vtkPolyData* work, vtkMultiProcessController* controller)
 {
   namespace slm = shadinglab::mesh;
-  slm::FlatPolygons local;
-  slm::FlatPolygonsFromPolyData(work, local);
-  int mine = slm::HasInconsistentOrientation(local) ? 1 : 0, any = 0;
+  int mine = slm::InconsistentlyOriented(work) ? 1 : 0, any = 0;
   controller->AllReduce(&mine, &any, 1, vtkCommunicator::MAX_OP);
   if (!any)
   {
@@ -50,7 +48,7 @@ inline vtkSmartPointer<vtkPolyData> OrientedAcrossRanks(
   }
   const int rank = controller->GetLocalProcessId();
   const vtkIdType count = input->GetNumberOfPolys();
-  std::vector<unsigned char> flips(static_cast<size_t>(count), 0);
+  std::vector<uint8_t> flips(static_cast<size_t>(count), 0);
   vtkSmartPointer<vtkPolyData> whole = GatherWithOwner(input, controller);
   if (rank == 0)
   {
@@ -71,7 +69,7 @@ inline vtkSmartPointer<vtkPolyData> OrientedAcrossRanks(
     // own order (vtkAppendPolyData); kOwnerArray says whose.
     auto* owner = vtkIntArray::SafeDownCast(whole->GetCellData()->GetArray(kOwnerArray));
     const vtkIdType base = whole->GetNumberOfVerts() + whole->GetNumberOfLines();
-    std::vector<std::vector<unsigned char>> perRank(
+    std::vector<std::vector<uint8_t>> perRank(
       static_cast<size_t>(controller->GetNumberOfProcesses()));
     for (int64_t f = 0; f < all.numberOfPolygons; ++f)
     {
@@ -92,14 +90,7 @@ inline vtkSmartPointer<vtkPolyData> OrientedAcrossRanks(
   {
     controller->Receive(flips.data(), count, 0, kFlipsTag);
   }
-  slm::FlatPolygons own;
-  slm::FlatPolygonsFromPolyData(input, own);
-  std::vector<int64_t> turned;
-  slm::FlipFaces(own, std::vector<uint8_t>(flips.begin(), flips.end()), turned);
-  auto result = vtkSmartPointer<vtkPolyData>::New();
-  result->ShallowCopy(input);
-  result->SetPolys(slm::CellArrayFromFlat(own.offsets, own.numberOfPolygons, turned.data()));
-  return result;
+  return slm::WithPolygonsTurned(input, flips);
 }
 
 } // namespace shadinglab::paraview

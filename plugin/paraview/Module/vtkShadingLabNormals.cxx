@@ -30,13 +30,6 @@ bool AllRanks(vtkMultiProcessController* controller, bool holds)
   return everyone != 0;
 }
 
-bool InconsistentlyOriented(vtkPolyData* mesh)
-{
-  shadinglab::mesh::FlatPolygons flat;
-  shadinglab::mesh::FlatPolygonsFromPolyData(mesh, flat);
-  return shadinglab::mesh::HasInconsistentOrientation(flat);
-}
-
 /// A copy of `mesh` without its ghost polygons (and ghost flags).
 vtkSmartPointer<vtkPolyData> WithoutGhostCells(vtkPolyData* mesh)
 {
@@ -95,7 +88,7 @@ int vtkShadingLabNormals::RequestData(
   {
     vtkSmartPointer<vtkPolyData> piece = input;
     bool borrow = AllRanks(controller, !input->HasAnyGhostCells());
-    if (!borrow && !AllRanks(controller, !InconsistentlyOriented(input)))
+    if (!borrow && !AllRanks(controller, !shadinglab::mesh::InconsistentlyOriented(input)))
     {
       piece = WithoutGhostCells(input);
       borrow = true;

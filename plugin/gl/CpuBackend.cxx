@@ -108,6 +108,8 @@ std::string CpuBackend::Draw(
     {
       return e.what();
     }
+    // Hashed once per conversion, for the renderer's caches (Scene::meshHash).
+    this->MeshHash = this->Mesh.ContentHash();
     this->From = inputs.polydata;
     this->FromTime = inputs.polydata->GetMTime();
     this->FromScalars = scalars;
@@ -115,6 +117,7 @@ std::string CpuBackend::Draw(
   }
   render::Scene scene;
   scene.mesh = &this->Mesh;
+  scene.meshHash = this->MeshHash;
   scene.camera = render::CameraFromVtk(ren->GetActiveCamera());
   render::ToLocal(this->Frame, scene.camera);
   scene.lighting =
@@ -239,9 +242,9 @@ std::string CpuBackend::Draw(
         // As Image::ToRGB8: the display transform, then rounding to 8 bits.
         Vec3<float> c(image->rgb[3 * s], image->rgb[3 * s + 1], image->rgb[3 * s + 2]);
         c = render::ApplyDisplay(display, c);
-        this->Rgba[4 * d] = static_cast<unsigned char>(std::lround(c.x * 255.0f));
-        this->Rgba[4 * d + 1] = static_cast<unsigned char>(std::lround(c.y * 255.0f));
-        this->Rgba[4 * d + 2] = static_cast<unsigned char>(std::lround(c.z * 255.0f));
+        this->Rgba[4 * d] = render::ToByte(c.x);
+        this->Rgba[4 * d + 1] = render::ToByte(c.y);
+        this->Rgba[4 * d + 2] = render::ToByte(c.z);
         this->Rgba[4 * d + 3] = 255;
         this->Depth[d] = image->depth[s];
       }

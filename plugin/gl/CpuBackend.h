@@ -60,6 +60,7 @@ public:
 private:
   cpu::SoftwareRenderer Renderer;
   render::Mesh Mesh;
+  uint64_t MeshHash = 0; ///< Mesh.ContentHash(), made when it is converted
   render::WorldFrame Frame;
   render::ColorMap Map;
   vtkPolyData* From = nullptr;

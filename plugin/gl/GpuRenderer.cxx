@@ -122,7 +122,7 @@ const render::Image& GpuRenderer::Render(
   const auto start = std::chrono::steady_clock::now();
   Internals& in = *this->Impl;
   const Material<double>& material = scene.material;
-  const uint64_t hash = scene.mesh->ContentHash();
+  const uint64_t hash = scene.meshHash ? *scene.meshHash : scene.mesh->ContentHash();
   if (!in.MeshData || hash != in.MeshHash)
   {
     in.MeshData.TakeReference(render::PolyDataFromMesh(*scene.mesh));

@@ -420,17 +420,38 @@ void ScanConvert(int width,
     return;
   }
   // The attribute count is fixed per frame; a compile-time count lets the
-  // span loop unroll.
+  // span loop unroll. Every count a stage lays out has its case: colour by
+  // data adds a slot (3, 6, 9), and without its case every coloured
+  // triangle went through ScanPolygon's per-row crossings and sort.
+  static_assert(kMaxAttributes == 11, "one case per attribute count");
   switch (kAttrFirst + numAttributes)
   {
     case 2:
       ScanTriangle<2>(width, verts, rowBegin, rowEnd, beginSpan, pixel, trace);
       return;
+    case 3:
+      ScanTriangle<3>(width, verts, rowBegin, rowEnd, beginSpan, pixel, trace);
+      return;
+    case 4:
+      ScanTriangle<4>(width, verts, rowBegin, rowEnd, beginSpan, pixel, trace);
+      return;
     case 5:
       ScanTriangle<5>(width, verts, rowBegin, rowEnd, beginSpan, pixel, trace);
       return;
+    case 6:
+      ScanTriangle<6>(width, verts, rowBegin, rowEnd, beginSpan, pixel, trace);
+      return;
+    case 7:
+      ScanTriangle<7>(width, verts, rowBegin, rowEnd, beginSpan, pixel, trace);
+      return;
     case 8:
       ScanTriangle<8>(width, verts, rowBegin, rowEnd, beginSpan, pixel, trace);
+      return;
+    case 9:
+      ScanTriangle<9>(width, verts, rowBegin, rowEnd, beginSpan, pixel, trace);
+      return;
+    case 10:
+      ScanTriangle<10>(width, verts, rowBegin, rowEnd, beginSpan, pixel, trace);
       return;
     case 11:
       ScanTriangle<11>(width, verts, rowBegin, rowEnd, beginSpan, pixel, trace);

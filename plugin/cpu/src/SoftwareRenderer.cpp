@@ -144,8 +144,9 @@ constexpr double kCullTestMinPixelsPerPolygon = 1.0;
 class SoftwareRenderer::Internals
 {
 public:
-  /// `knownHash`: the mesh's content hash when the caller computed it this
-  /// frame (RunAuto), so it is not computed twice.
+  /// `knownHash`: the mesh's content hash when the caller knows it
+  /// (Scene::meshHash, or RunAuto computed it this frame), so it is not
+  /// computed again.
   const Image& Run(const Mesh& mesh,
     const render::Camera& camera,
     const Lighting<float>& lighting,
@@ -496,11 +497,14 @@ const Image& SoftwareRenderer::Internals::RunAuto(const render::Scene& scene,
   const Mesh& mesh = *scene.mesh;
   const std::vector<float>* normals = &mesh.normals;
   bool cached = false;
-  std::optional<uint64_t> hash;
+  std::optional<uint64_t> hash = scene.meshHash;
   const bool computed = static_cast<int64_t>(mesh.normals.size()) != 3 * mesh.NumberOfPoints();
   if (computed)
   {
-    hash = mesh.ContentHash(SpreadOver(this->Buffers.Pool, ThreadsFor(options)));
+    if (!hash)
+    {
+      hash = mesh.ContentHash(SpreadOver(this->Buffers.Pool, ThreadsFor(options)));
+    }
     normals = &this->ComputedNormalsOf(mesh, *hash, cached);
   }
   const render::ModeChoice choice = render::ChooseMode(mesh, *normals, scene.camera, lights,
@@ -541,8 +545,8 @@ const render::Image& SoftwareRenderer::Render(const render::Scene& scene,
     (mesh.scalars.empty() && mesh.cellScalars.empty()) ? nullptr : scene.colorMap);
   if (options.mode != render::ShadingMode::Auto)
   {
-    return this->Impl->Run(
-      *scene.mesh, scene.camera, lighting, scene.material.Cast<float>(), options, stats);
+    return this->Impl->Run(*scene.mesh, scene.camera, lighting, scene.material.Cast<float>(),
+      options, stats, scene.meshHash);
   }
   return this->Impl->RunAuto(scene, lights, options, stats);
 }

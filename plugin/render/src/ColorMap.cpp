@@ -19,20 +19,6 @@ std::string Lower(std::string s)
 }
 } // namespace
 
-Vec3<float> ColorMap::Map(double s) const
-{
-  if (std::isnan(s) || this->colors.empty())
-  {
-    return this->nanColor;
-  }
-  const int bins = static_cast<int>(this->colors.size());
-  const double width = this->rangeMax - this->rangeMin;
-  const double t = width > 0 ? (s - this->rangeMin) / width : 0.0;
-  // Clamp in double first: a huge or infinite t does not fit an int.
-  const double bin = std::floor(std::clamp(t, 0.0, 1.0) * bins);
-  return this->colors[static_cast<size_t>(std::min(bins - 1, static_cast<int>(bin)))];
-}
-
 const std::vector<ColorMapName>& ColorMapNames()
 {
   static const std::vector<ColorMapName> names = [] {

@@ -74,9 +74,9 @@ std::vector<uint8_t> Image::ToRGB8(DisplayTransform transform) const
   {
     Vec3<float> c(this->rgb[3 * i], this->rgb[3 * i + 1], this->rgb[3 * i + 2]);
     c = this->displayApplied ? ApplyDisplay(DisplayTransform::Clamp, c) : ApplyDisplay(transform, c);
-    out[3 * i] = static_cast<uint8_t>(std::lround(c.x * 255.0f));
-    out[3 * i + 1] = static_cast<uint8_t>(std::lround(c.y * 255.0f));
-    out[3 * i + 2] = static_cast<uint8_t>(std::lround(c.z * 255.0f));
+    out[3 * i] = ToByte(c.x);
+    out[3 * i + 1] = ToByte(c.y);
+    out[3 * i + 2] = ToByte(c.z);
   }
   return out;
 }

@@ -8,6 +8,8 @@
 
 #include "shadinglab/model/Vec3.h"
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -27,7 +29,20 @@ struct ColorMap
   /// The bin of `s` (vtkLookupTable's indexing: floor((s - min) / (max -
   /// min) * bins), clamped), or the NaN colour. A range of zero width maps
   /// everything to the first bin.
-  Vec3<float> Map(double s) const;
+  /// Inline: the CPU renderer maps every pixel's interpolated scalar.
+  Vec3<float> Map(double s) const
+  {
+    if (std::isnan(s) || this->colors.empty())
+    {
+      return this->nanColor;
+    }
+    const int bins = static_cast<int>(this->colors.size());
+    const double width = this->rangeMax - this->rangeMin;
+    const double t = width > 0 ? (s - this->rangeMin) / width : 0.0;
+    // Clamp in double first: a huge or infinite t does not fit an int.
+    const double bin = std::floor(std::clamp(t, 0.0, 1.0) * bins);
+    return this->colors[static_cast<size_t>(std::min(bins - 1, static_cast<int>(bin)))];
+  }
 
   /// The value of tick k of `count` + 1 evenly spaced legend ticks (0: the
   /// range's minimum). A value within kLegendZeroFraction of the range's

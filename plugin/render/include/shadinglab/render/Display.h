@@ -8,6 +8,7 @@
 #include "shadinglab/render/Options.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <cmath>
 
 namespace shadinglab::render
@@ -65,6 +66,15 @@ inline Vec3<float> ApplyDisplay(DisplayTransform transform, Vec3<float> c)
     c = Vec3<float>(EncodeSRGB(c.x), EncodeSRGB(c.y), EncodeSRGB(c.z));
   }
   return c;
+}
+
+/// A display value in [0, 1] (ApplyDisplay's) as an 8-bit level: v * 255
+/// rounded half away from zero, as std::lround, without its library call
+/// (the hand-over converts a million pixels a frame). Exact: v * 255 is a
+/// float below 256, and adding 0.5 to it in double loses no bit.
+inline uint8_t ToByte(float v)
+{
+  return static_cast<uint8_t>(static_cast<double>(v * 255.0f) + 0.5);
 }
 
 const char* DisplayTransformName(DisplayTransform transform);

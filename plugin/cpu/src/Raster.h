@@ -417,6 +417,30 @@ void ScanPolygon(int width,
   }
 }
 
+/// ScanTriangle<na> for a run-time attribute count na in [NA,
+/// kMaxAttributes]; false (nothing drawn) for a count outside it.
+template<int NA, typename PixelFn, typename SpanFn>
+bool ScanTriangleOf(int na,
+  int width,
+  const ScreenVertex* const* verts,
+  int rowBegin,
+  int rowEnd,
+  SpanFn&& beginSpan,
+  PixelFn&& pixel,
+  SpanTrace* trace)
+{
+  if constexpr (NA <= kMaxAttributes)
+  {
+    if (na == NA)
+    {
+      ScanTriangle<NA>(width, verts, rowBegin, rowEnd, beginSpan, pixel, trace);
+      return true;
+    }
+    return ScanTriangleOf<NA + 1>(na, width, verts, rowBegin, rowEnd, beginSpan, pixel, trace);
+  }
+  return false;
+}
+
 /**
  * Scan-converts one polygon part (a triangle, or a whole polygon with
  * --polygons direct) into rows [rowBegin, rowEnd): beginSpan(j, i0) at the
@@ -433,50 +457,15 @@ void ScanConvert(int width,
   PixelFn&& pixel,
   SpanTrace* trace = nullptr)
 {
-  if (n != 3)
+  // The attribute count is fixed per frame; a compile-time count lets the
+  // span loop unroll. Every count has its instance (colour by data adds a
+  // slot: 3, 6, 9; without theirs, coloured triangles went through
+  // ScanPolygon's per-row crossings and sort).
+  if (n != 3 ||
+    !ScanTriangleOf<kAttrFirst>(
+      kAttrFirst + numAttributes, width, verts, rowBegin, rowEnd, beginSpan, pixel, trace))
   {
     ScanPolygon(width, numAttributes, verts, n, rowBegin, rowEnd, beginSpan, pixel, trace);
-    return;
-  }
-  // The attribute count is fixed per frame; a compile-time count lets the
-  // span loop unroll. Every count a stage lays out has its case: colour by
-  // data adds a slot (3, 6, 9), and without its case every coloured
-  // triangle went through ScanPolygon's per-row crossings and sort.
-  static_assert(kMaxAttributes == 11, "one case per attribute count");
-  switch (kAttrFirst + numAttributes)
-  {
-    case 2:
-      ScanTriangle<2>(width, verts, rowBegin, rowEnd, beginSpan, pixel, trace);
-      return;
-    case 3:
-      ScanTriangle<3>(width, verts, rowBegin, rowEnd, beginSpan, pixel, trace);
-      return;
-    case 4:
-      ScanTriangle<4>(width, verts, rowBegin, rowEnd, beginSpan, pixel, trace);
-      return;
-    case 5:
-      ScanTriangle<5>(width, verts, rowBegin, rowEnd, beginSpan, pixel, trace);
-      return;
-    case 6:
-      ScanTriangle<6>(width, verts, rowBegin, rowEnd, beginSpan, pixel, trace);
-      return;
-    case 7:
-      ScanTriangle<7>(width, verts, rowBegin, rowEnd, beginSpan, pixel, trace);
-      return;
-    case 8:
-      ScanTriangle<8>(width, verts, rowBegin, rowEnd, beginSpan, pixel, trace);
-      return;
-    case 9:
-      ScanTriangle<9>(width, verts, rowBegin, rowEnd, beginSpan, pixel, trace);
-      return;
-    case 10:
-      ScanTriangle<10>(width, verts, rowBegin, rowEnd, beginSpan, pixel, trace);
-      return;
-    case 11:
-      ScanTriangle<11>(width, verts, rowBegin, rowEnd, beginSpan, pixel, trace);
-      return;
-    default:
-      ScanPolygon(width, numAttributes, verts, n, rowBegin, rowEnd, beginSpan, pixel, trace);
   }
 }
 

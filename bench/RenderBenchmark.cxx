@@ -651,6 +651,8 @@ void BM_CpuParaViewSphere(benchmark::State& state)
   material.model = static_cast<sl::ReflectanceModel>(model);
   render::Scene s{ &mesh, camera, Headlight(camera), material };
   s.colorMap = &map;
+  // As the CPU backend: the mesh hashed once per conversion, not per frame.
+  s.meshHash = mesh.ContentHash();
   cpu::SoftwareRenderer renderer;
   render::RenderStats stats;
   renderer.Render(s, opt, &stats);

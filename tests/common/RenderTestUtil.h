@@ -20,6 +20,20 @@ render::Image RenderWith(render::Renderer& renderer, const render::Mesh& mesh,
   return renderer.Render(scene, options, stats);
 }
 
+/// A parallel camera under which world (x, y) is pixel (x, height - y) of a
+/// width x height image, looking down -z from z = 10 (near 1, far 20).
+inline render::Camera PixelCamera(int width, int height)
+{
+  render::Camera cam;
+  cam.position = { width / 2.0, height / 2.0, 10.0 };
+  cam.focalPoint = { width / 2.0, height / 2.0, 0.0 };
+  cam.parallel = true;
+  cam.parallelScale = height / 2.0;
+  cam.nearClip = 1.0;
+  cam.farClip = 20.0;
+  return cam;
+}
+
 /// One frame of a fresh CPU renderer.
 template <typename T>
 render::Image RenderCpu(const render::Mesh& mesh, const render::Camera& camera,

@@ -19,18 +19,9 @@ namespace
 constexpr int kWidth = 64;
 constexpr int kHeight = 32;
 
-/// World (x, y) is pixel (x, kHeight - y): the parallel view's half height
-/// is kHeight / 2 world units.
 render::Camera PixelCamera()
 {
-  render::Camera cam;
-  cam.position = { kWidth / 2.0, kHeight / 2.0, 10.0 };
-  cam.focalPoint = { kWidth / 2.0, kHeight / 2.0, 0.0 };
-  cam.parallel = true;
-  cam.parallelScale = kHeight / 2.0;
-  cam.nearClip = 1.0;
-  cam.farClip = 20.0;
-  return cam;
+  return test::PixelCamera(kWidth, kHeight);
 }
 
 /// One triangle, counter-clockwise seen from +z, spanning rows 4-28.

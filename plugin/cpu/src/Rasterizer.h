@@ -20,6 +20,7 @@
 #include <atomic>
 #include <limits>
 #include <memory>
+#include <type_traits>
 
 namespace shadinglab::cpu
 {
@@ -174,26 +175,72 @@ private:
   void ShadeVertices()
   {
     const std::atomic<uint8_t>* needed = this->Buffers.Needed.get();
+    auto store = [&](int64_t v, const float* raw)
+    {
+      ScreenVertex& out = this->Screen[v];
+      const float scale = out.a[kAttrInvW];
+      for (int k = 0; k < F.NumAttributes; ++k)
+      {
+        out.a[kAttrFirst + k] = raw[k] * scale;
+      }
+    };
     ParallelChunks(this->Buffers.Pool, F.MeshData->NumberOfPoints(), F.Threads, kVertexChunk,
       [&](int64_t, int64_t b, int64_t e, int)
       {
-        float raw[kMaxAttributes] = {};
-        for (int64_t v = b; v < e; ++v)
+        if constexpr (HasVertexBatch<StageT>::value)
         {
-          if (this->Behind[v] || !needed[v].load(std::memory_order_relaxed))
+          // The stage lights its vertices in batches (Gouraud).
+          constexpr int kBatch = StageT::kVertexBatch;
+          int64_t ids[kBatch];
+          float raw[kBatch][kMaxAttributes] = {};
+          int count = 0;
+          auto flush = [&]
           {
-            continue;
+            this->Stage.VertexBatch(ids, count, raw);
+            for (int k = 0; k < count; ++k)
+            {
+              store(ids[k], raw[k]);
+            }
+            count = 0;
+          };
+          for (int64_t v = b; v < e; ++v)
+          {
+            if (!this->Behind[v] && needed[v].load(std::memory_order_relaxed))
+            {
+              ids[count++] = v;
+              if (count == kBatch)
+              {
+                flush();
+              }
+            }
           }
-          this->Stage.Vertex(v, raw);
-          ScreenVertex& out = this->Screen[v];
-          const float scale = out.a[kAttrInvW];
-          for (int k = 0; k < F.NumAttributes; ++k)
+          flush();
+        }
+        else
+        {
+          float raw[kMaxAttributes] = {};
+          for (int64_t v = b; v < e; ++v)
           {
-            out.a[kAttrFirst + k] = raw[k] * scale;
+            if (this->Behind[v] || !needed[v].load(std::memory_order_relaxed))
+            {
+              continue;
+            }
+            this->Stage.Vertex(v, raw);
+            store(v, raw);
           }
         }
       });
   }
+
+  /// Whether the stage lights vertices in batches (VertexBatch).
+  template<typename S, typename = void>
+  struct HasVertexBatch : std::false_type
+  {
+  };
+  template<typename S>
+  struct HasVertexBatch<S, std::void_t<decltype(&S::VertexBatch)>> : std::true_type
+  {
+  };
 
   void ProjectVertex(const double clip[4], const float* raw, ScreenVertex& out) const
   {

@@ -28,6 +28,25 @@ struct PixelQueue
   float px[kCapacity], py[kCapacity], pz[kCapacity]; ///< world position (if used)
   float cr[kCapacity], cg[kCapacity], cb[kCapacity]; ///< diffuse colour (if per vertex)
   float* out[kCapacity];                             ///< the pixel's RGB
+
+  /// Appends a pixel: its normal, position and colour (either may be left
+  /// unused, by PixelUniforms), shaded into out[0..2]. True when the queue
+  /// is then full.
+  bool Push(const Vec3<float>& n, const Vec3<float>& P, const Vec3<float>& c, float* rgb)
+  {
+    const int k = this->count;
+    this->nx[k] = n.x;
+    this->ny[k] = n.y;
+    this->nz[k] = n.z;
+    this->px[k] = P.x;
+    this->py[k] = P.y;
+    this->pz[k] = P.z;
+    this->cr[k] = c.x;
+    this->cg[k] = c.y;
+    this->cb[k] = c.z;
+    this->out[k] = rgb;
+    return ++this->count == kCapacity;
+  }
 };
 
 /// What the model needs besides the pixels: the frame's uniforms.

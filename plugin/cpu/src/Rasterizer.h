@@ -348,7 +348,6 @@ private:
   int64_t BinPolygons(int64_t begin, int64_t end, int piece, ThreadState& state)
   {
     const auto& offsets = F.MeshData->offsets;
-    const auto& conn = F.MeshData->connectivity;
     std::vector<int64_t>* lists = &this->Bins[static_cast<size_t>(piece) * this->Bands];
     int64_t degenerate = 0;
     for (int64_t p = begin; p < end; ++p)
@@ -361,84 +360,101 @@ private:
       {
         continue;
       }
-      bool anyBehind = false, allBehind = true;
-      float ymin = std::numeric_limits<float>::infinity(), ymax = -ymin;
-      float xmin = ymin, xmax = -ymin, zmin = ymin;
-      for (int k = 0; k < n; ++k)
-      {
-        const int64_t v = conn[first + k];
-        anyBehind |= this->Behind[v] != 0;
-        allBehind &= this->Behind[v] != 0;
-        ymin = std::min(ymin, this->Screen[v].y);
-        ymax = std::max(ymax, this->Screen[v].y);
-        xmin = std::min(xmin, this->Screen[v].x);
-        xmax = std::max(xmax, this->Screen[v].x);
-        zmin = std::min(zmin, this->Screen[v].a[kAttrZ]);
-      }
-      if (allBehind)
-      {
-        continue; // clipping keeps nothing (Behind is its inside test negated)
-      }
-      if (anyBehind)
-      {
-        // Rows are known only after clipping, which DrawSourcePolygon does
-        // per band: binned to the bands its clipped part can reach, nothing
-        // when it lies wholly behind the near plane (a mesh behind the
-        // camera, half of a floor the camera stands on). Before, every band
-        // looked: the 100k torus behind the camera took 150 ms at 1080p,
-        // clipped 68 times, against 17 ms in view.
-        int rowBegin = 0, rowEnd = 0;
-        this->ClippedRows(first, n, rowBegin, rowEnd);
-        for (int b = rowBegin / kBandRows; rowEnd > rowBegin && b <= (rowEnd - 1) / kBandRows; ++b)
-        {
-          lists[b].push_back(BinEntry(p, true));
-          ++state.binned;
-        }
-        continue;
-      }
-      const int j0 = std::max(0, CeilToInt(ymin - 0.5f));
-      const int j1 = std::min(F.Height, CeilToInt(ymax - 0.5f));
-      if (j1 <= j0)
-      {
-        // No pixel row: count it if it is degenerate (zero screen area).
-        degenerate += FacingOf(this->TwiceSignedArea(first, n)) == Facing::Degenerate;
-        continue;
-      }
-      // Left, right or beyond the far plane: DrawPolygon's trivial reject
-      // (same test, same floats) would drop it without counting it, so it
-      // is not binned and its vertices need no shading.
-      if (xmax < 0 || xmin > F.Width || zmin > 1.0f)
-      {
-        continue;
-      }
-      // Between pixel columns: no centre i + 0.5 in [xmin, xmax), so no
-      // pixel, as between rows above (most triangles of a mesh finer than
-      // the pixels: ParaView's 1M sphere at 1080p). Counted as
-      // DrawSourcePolygon would count it, before culling as the row test.
-      if (this->ColumnTest &&
-        CeilToInt(xmax - 0.5f + kColumnMargin) <= CeilToInt(xmin - 0.5f - kColumnMargin))
-      {
-        degenerate += FacingOf(this->TwiceSignedArea(first, n)) == Facing::Degenerate;
-        continue;
-      }
-      // Culled back faces go before set-up, as DrawSourcePolygon would cull
-      // them (same area, same floats); degenerate ones are counted there.
-      if (F.CullBack && FacingOf(this->TwiceSignedArea(first, n)) == Facing::Back)
-      {
-        ++state.culled; // before set-up: its vertices need no shading either
-        continue;
-      }
-      for (int k = 0; k < n; ++k)
-      {
-        this->Buffers.Needed[conn[first + k]].store(1, std::memory_order_relaxed);
-      }
-      for (int b = j0 / kBandRows; b <= (j1 - 1) / kBandRows; ++b)
-      {
-        lists[b].push_back(BinEntry(p, false));
-        ++state.binned;
-      }
+      // Triangles, most meshes' polygons, with their loops unrolled.
+      degenerate += n == 3 ? this->BinPolygon<3>(p, first, n, lists, state)
+                           : this->BinPolygon<0>(p, first, n, lists, state);
     }
     return degenerate;
+  }
+
+  /// Bins polygon p (its n vertices from connectivity[first]; N = n known
+  /// at compile time, or 0); returns 1 when it has no pixel row and is
+  /// degenerate.
+  template<int N>
+  int64_t BinPolygon(int64_t p, int64_t first, int n, std::vector<int64_t>* lists,
+    ThreadState& state)
+  {
+    const auto& conn = F.MeshData->connectivity;
+    const int count = N > 0 ? N : n;
+    const ScreenVertex* sv[kMaxPolygonVertices];
+    int64_t ids[kMaxPolygonVertices];
+    bool anyBehind = false, allBehind = true;
+    float ymin = std::numeric_limits<float>::infinity(), ymax = -ymin;
+    float xmin = ymin, xmax = -ymin, zmin = ymin;
+    for (int k = 0; k < count; ++k)
+    {
+      const int64_t v = conn[first + k];
+      ids[k] = v;
+      sv[k] = &this->Screen[v];
+      anyBehind |= this->Behind[v] != 0;
+      allBehind &= this->Behind[v] != 0;
+      ymin = std::min(ymin, sv[k]->y);
+      ymax = std::max(ymax, sv[k]->y);
+      xmin = std::min(xmin, sv[k]->x);
+      xmax = std::max(xmax, sv[k]->x);
+      zmin = std::min(zmin, sv[k]->a[kAttrZ]);
+    }
+    if (allBehind)
+    {
+      return 0; // clipping keeps nothing (Behind is its inside test negated)
+    }
+    if (anyBehind)
+    {
+      // Rows are known only after clipping, which DrawSourcePolygon does
+      // per band: binned to the bands its clipped part can reach, nothing
+      // when it lies wholly behind the near plane (a mesh behind the
+      // camera, half of a floor the camera stands on). Before, every band
+      // looked: the 100k torus behind the camera took 150 ms at 1080p,
+      // clipped 68 times, against 17 ms in view.
+      int rowBegin = 0, rowEnd = 0;
+      this->ClippedRows(first, count, rowBegin, rowEnd);
+      for (int b = rowBegin / kBandRows; rowEnd > rowBegin && b <= (rowEnd - 1) / kBandRows; ++b)
+      {
+        lists[b].push_back(BinEntry(p, true));
+        ++state.binned;
+      }
+      return 0;
+    }
+    const int j0 = std::max(0, CeilToInt(ymin - 0.5f));
+    const int j1 = std::min(F.Height, CeilToInt(ymax - 0.5f));
+    if (j1 <= j0)
+    {
+      // No pixel row: count it if it is degenerate (zero screen area).
+      return FacingOf(TwiceSignedArea(sv, count)) == Facing::Degenerate;
+    }
+    // Left, right or beyond the far plane: DrawPolygon's trivial reject
+    // (same test, same floats) would drop it without counting it, so it
+    // is not binned and its vertices need no shading.
+    if (xmax < 0 || xmin > F.Width || zmin > 1.0f)
+    {
+      return 0;
+    }
+    // Between pixel columns: no centre i + 0.5 in [xmin, xmax), so no
+    // pixel, as between rows above (most triangles of a mesh finer than
+    // the pixels: ParaView's 1M sphere at 1080p). Counted as
+    // DrawSourcePolygon would count it, before culling as the row test.
+    if (this->ColumnTest &&
+      CeilToInt(xmax - 0.5f + kColumnMargin) <= CeilToInt(xmin - 0.5f - kColumnMargin))
+    {
+      return FacingOf(TwiceSignedArea(sv, count)) == Facing::Degenerate;
+    }
+    // Culled back faces go before set-up, as DrawSourcePolygon would cull
+    // them (same area, same floats); degenerate ones are counted there.
+    if (F.CullBack && FacingOf(TwiceSignedArea(sv, count)) == Facing::Back)
+    {
+      ++state.culled; // before set-up: its vertices need no shading either
+      return 0;
+    }
+    for (int k = 0; k < count; ++k)
+    {
+      this->Buffers.Needed[ids[k]].store(1, std::memory_order_relaxed);
+    }
+    for (int b = j0 / kBandRows; b <= (j1 - 1) / kBandRows; ++b)
+    {
+      lists[b].push_back(BinEntry(p, false));
+      ++state.binned;
+    }
+    return 0;
   }
 
   /// Rows [rowBegin, rowEnd) that polygon `first`'s part in front of the
@@ -481,16 +497,15 @@ private:
     rowEnd = std::min(F.Height, CeilToInt(ymax - 0.5f) + kClipRowMargin);
   }
 
-  /// Twice the signed screen area of the mesh polygon at `first` (y down:
-  /// front faces negative), from its projected vertices.
-  double TwiceSignedArea(int64_t first, int n) const
+  /// Twice the signed screen area of a polygon's n projected vertices (y
+  /// down: front faces negative); DrawSourcePolygon sums in the same order.
+  static double TwiceSignedArea(const ScreenVertex* const* sv, int n)
   {
-    const auto& conn = F.MeshData->connectivity;
     double area = 0;
     for (int k = 0; k < n; ++k)
     {
-      const ScreenVertex& a = this->Screen[conn[first + k]];
-      const ScreenVertex& b = this->Screen[conn[first + (k + 1 < n ? k + 1 : 0)]];
+      const ScreenVertex& a = *sv[k];
+      const ScreenVertex& b = *sv[k + 1 < n ? k + 1 : 0];
       area += static_cast<double>(a.x) * b.y - static_cast<double>(b.x) * a.y;
     }
     return area;

@@ -292,9 +292,19 @@ private:
     }
   }
 
-  /// A bin's entry: polygon p, or ~p (negative) when a vertex of p lies
-  /// behind the near plane, so that drawing knows without reading Behind.
-  static int64_t BinEntry(int64_t p, bool clipped) { return clipped ? ~p : p; }
+  /// A bin's entry: polygon p shifted left by kEntryFlagBits, and what
+  /// binning found about it in the low bits, so that drawing neither reads
+  /// the near-plane flags nor sums the area and bounds again in every band.
+  static constexpr int kEntryFlagBits = 3;
+  /// A vertex lies behind the near plane: drawing clips, then rejects,
+  /// culls and counts the clipped polygon itself.
+  static constexpr int64_t kEntryMayClip = 1;
+  /// (Without kEntryMayClip) a back face, drawn: back faces are not culled.
+  static constexpr int64_t kEntryBack = 2;
+  /// (Without kEntryMayClip) the polygon's first band, which counts it: the
+  /// counters do not depend on the thread count.
+  static constexpr int64_t kEntryOwner = 4;
+  static int64_t BinEntry(int64_t p, int64_t flags) { return p << kEntryFlagBits | flags; }
 
   /// Draws one bin list's polygons in order. A band's polygons lie all over
   /// the index range (a band is a latitude of a sphere whose polygons go
@@ -308,7 +318,7 @@ private:
     const auto& offsets = F.MeshData->offsets;
     const auto& conn = F.MeshData->connectivity;
     const size_t m = list.size();
-    auto id = [&](size_t e) { return list[e] < 0 ? ~list[e] : list[e]; };
+    auto id = [&](size_t e) { return list[e] >> kEntryFlagBits; };
     for (size_t e = 0; e < m; ++e)
     {
       if (e + kAheadOffsets < m)
@@ -319,9 +329,9 @@ private:
       {
         Prefetch(&conn[offsets[id(e + kAheadConnectivity)]]);
       }
-      if (e + kAheadVertices < m && list[e + kAheadVertices] >= 0)
+      if (e + kAheadVertices < m && !(list[e + kAheadVertices] & kEntryMayClip))
       {
-        const int64_t p = list[e + kAheadVertices];
+        const int64_t p = id(e + kAheadVertices);
         const int64_t first = offsets[p];
         const int64_t n = std::min<int64_t>(offsets[p + 1] - first, kPrefetchedVertices);
         for (int64_t k = 0; k < n; ++k)
@@ -332,7 +342,7 @@ private:
           Prefetch(v + sizeof(ScreenVertex) - 1);
         }
       }
-      this->DrawSourcePolygon(id(e), list[e] < 0, band, state);
+      this->DrawSourcePolygon(list[e], band, state);
     }
   }
 
@@ -410,7 +420,7 @@ private:
       this->ClippedRows(first, count, rowBegin, rowEnd);
       for (int b = rowBegin / kBandRows; rowEnd > rowBegin && b <= (rowEnd - 1) / kBandRows; ++b)
       {
-        lists[b].push_back(BinEntry(p, true));
+        lists[b].push_back(BinEntry(p, kEntryMayClip));
         ++state.binned;
       }
       return 0;
@@ -438,20 +448,27 @@ private:
     {
       return FacingOf(TwiceSignedArea(sv, count)) == Facing::Degenerate;
     }
-    // Culled back faces go before set-up, as DrawSourcePolygon would cull
-    // them (same area, same floats); degenerate ones are counted there.
-    if (F.CullBack && FacingOf(TwiceSignedArea(sv, count)) == Facing::Back)
+    // The polygon's facing, once: a degenerate one is counted here and
+    // draws nothing; culled back faces go before set-up (their vertices
+    // need no shading either); the facing of the others goes in the entry.
+    const Facing facing = FacingOf(TwiceSignedArea(sv, count));
+    if (facing == Facing::Degenerate)
     {
-      ++state.culled; // before set-up: its vertices need no shading either
+      return 1;
+    }
+    if (facing == Facing::Back && F.CullBack)
+    {
+      ++state.culled;
       return 0;
     }
     for (int k = 0; k < count; ++k)
     {
       this->Buffers.Needed[ids[k]].store(1, std::memory_order_relaxed);
     }
+    const int64_t flags = facing == Facing::Back ? kEntryBack : 0;
     for (int b = j0 / kBandRows; b <= (j1 - 1) / kBandRows; ++b)
     {
-      lists[b].push_back(BinEntry(p, false));
+      lists[b].push_back(BinEntry(p, flags | (b == j0 / kBandRows ? kEntryOwner : 0)));
       ++state.binned;
     }
     return 0;
@@ -527,10 +544,10 @@ private:
     return area > 0 ? Facing::Back : Facing::Front;
   }
 
-  /// Draws polygon p's pixels in one band; mayClip when binning found a
-  /// vertex behind the near plane.
-  void DrawSourcePolygon(int64_t p, bool mayClip, int band, ThreadState& state)
+  /// Draws the pixels of a bin entry's polygon in one band.
+  void DrawSourcePolygon(int64_t entry, int band, ThreadState& state)
   {
+    const int64_t p = entry >> kEntryFlagBits;
     const auto& offsets = F.MeshData->offsets;
     const auto& conn = F.MeshData->connectivity;
     const int64_t first = offsets[p];
@@ -544,11 +561,26 @@ private:
     // on the thread count.
     const ScreenVertex* verts[kMaxPolygonVertices];
     int64_t ids[kMaxPolygonVertices];
-    bool anyBehind = false;
     for (int k = 0; k < n; ++k)
     {
       ids[k] = conn[first + k];
-      anyBehind |= mayClip && this->Behind[ids[k]] != 0;
+    }
+    if (!(entry & kEntryMayClip))
+    {
+      // In front of the near plane: binning rejected, culled and counted
+      // with the same floats.
+      for (int k = 0; k < n; ++k)
+      {
+        verts[k] = &this->Screen[ids[k]];
+      }
+      this->DrawInBand(p, (entry & kEntryBack) != 0, (entry & kEntryOwner) != 0, false, verts,
+        ids, n, band, state);
+      return;
+    }
+    bool anyBehind = false;
+    for (int k = 0; k < n; ++k)
+    {
+      anyBehind |= this->Behind[ids[k]] != 0;
     }
     int count = 0;
     bool wasClipped = false;
@@ -648,6 +680,22 @@ private:
       state.culled += owner; // clipped polygons only: binning culls the rest
       return;
     }
+    this->DrawInBand(p, back, owner, wasClipped, verts, ids, count, band, state);
+  }
+
+  /// The rest of DrawSourcePolygon for a polygon that is drawn: its
+  /// counters (in its owner band), the stage's set-up and the scan of each
+  /// part (triangle, or the polygon) in the band's rows.
+  void DrawInBand(int64_t p,
+    bool back,
+    bool owner,
+    bool wasClipped,
+    const ScreenVertex** verts,
+    int64_t* ids,
+    int count,
+    int band,
+    ThreadState& state)
+  {
     state.clippedPolygons += owner && wasClipped;
     state.rasterized += owner;
 

@@ -96,6 +96,22 @@ struct ScreenVertex
   float a[kMaxAttributes];
 };
 
+/// Twice the signed screen area of a polygon's n projected vertices (y
+/// down: front faces negative). Binning, the flat stage and
+/// DrawSourcePolygon (with its bounds) sum in this order, so the facing
+/// each finds is the same.
+inline double TwiceSignedArea(const ScreenVertex* const* sv, int n)
+{
+  double area = 0;
+  for (int k = 0; k < n; ++k)
+  {
+    const ScreenVertex& a = *sv[k];
+    const ScreenVertex& b = *sv[k + 1 < n ? k + 1 : 0];
+    area += static_cast<double>(a.x) * b.y - static_cast<double>(b.x) * a.y;
+  }
+  return area;
+}
+
 /// Where a scan reports the ends of the spans of one row (the scanline
 /// inspector's trace): x and every attribute slot (z, 1/w, then the
 /// stage's), as the scan computed them.

@@ -35,6 +35,7 @@ using raster::kAttrInvW;
 using raster::kAttrZ;
 using raster::ScreenVertex;
 using raster::ThreadState;
+using raster::TwiceSignedArea;
 
 /// Buffers the rasterizer keeps across frames (no reallocation at a steady size).
 struct RasterBuffers
@@ -512,20 +513,6 @@ private:
     }
     rowBegin = std::max(0, CeilToInt(ymin - 0.5f) - kClipRowMargin);
     rowEnd = std::min(F.Height, CeilToInt(ymax - 0.5f) + kClipRowMargin);
-  }
-
-  /// Twice the signed screen area of a polygon's n projected vertices (y
-  /// down: front faces negative); DrawSourcePolygon sums in the same order.
-  static double TwiceSignedArea(const ScreenVertex* const* sv, int n)
-  {
-    double area = 0;
-    for (int k = 0; k < n; ++k)
-    {
-      const ScreenVertex& a = *sv[k];
-      const ScreenVertex& b = *sv[k + 1 < n ? k + 1 : 0];
-      area += static_cast<double>(a.x) * b.y - static_cast<double>(b.x) * a.y;
-    }
-    return area;
   }
 
   enum class Facing

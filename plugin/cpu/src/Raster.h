@@ -100,14 +100,16 @@ struct ScreenVertex
 /// Twice the signed screen area of a polygon's n projected vertices (y
 /// down: front faces negative). Binning, the flat stage and
 /// DrawSourcePolygon (with its bounds) sum in this order, so the facing
-/// each finds is the same.
-inline double TwiceSignedArea(const ScreenVertex* const* sv, int n)
+/// each finds is the same. Vertex: anything with x and y (ScreenVertex,
+/// binning's ProjectedVertex).
+template<typename Vertex>
+double TwiceSignedArea(const Vertex* const* sv, int n)
 {
   double area = 0;
   for (int k = 0; k < n; ++k)
   {
-    const ScreenVertex& a = *sv[k];
-    const ScreenVertex& b = *sv[k + 1 < n ? k + 1 : 0];
+    const Vertex& a = *sv[k];
+    const Vertex& b = *sv[k + 1 < n ? k + 1 : 0];
     area += static_cast<double>(a.x) * b.y - static_cast<double>(b.x) * a.y;
   }
   return area;

@@ -37,9 +37,22 @@ using raster::ScreenVertex;
 using raster::ThreadState;
 using raster::TwiceSignedArea;
 
+/// A vertex's screen position, depth and attribute scale (ScreenVertex's
+/// x, y, a[kAttrZ], a[kAttrInvW]): all that binning reads of a vertex.
+struct ProjectedVertex
+{
+  float x, y, z, invW;
+};
+
 /// Buffers the rasterizer keeps across frames (no reallocation at a steady size).
 struct RasterBuffers
 {
+  /// Every vertex's projection, 16 bytes: binning reads these for every
+  /// polygon, and reading whole ScreenVertex records (52 bytes, 26 MB for
+  /// ParaView's 1M sphere) made it wait on memory.
+  std::vector<ProjectedVertex> Projected;
+  /// The vertices drawn (binning marked them Needed): projection and
+  /// attributes, filled by ShadeVertices.
   std::vector<ScreenVertex> Screen;
   std::vector<uint8_t> Behind;            ///< vertex outside the near plane
   /// [piece * bands + band]: polygon ids, as BinEntry encodes them.
@@ -60,6 +73,7 @@ public:
   Rasterizer(const Frame& frame, const StageT& stage, RasterBuffers& buffers)
     : F(frame)
     , Stage(stage)
+    , Projected(buffers.Projected)
     , Screen(buffers.Screen)
     , Behind(buffers.Behind)
     , Bins(buffers.Bins)
@@ -140,6 +154,7 @@ private:
   {
     const auto& mesh = *F.MeshData;
     const int64_t nv = mesh.NumberOfPoints();
+    this->Projected.resize(static_cast<size_t>(nv));
     this->Screen.resize(static_cast<size_t>(nv));
     this->Behind.resize(static_cast<size_t>(nv));
     if (this->Buffers.NeededCapacity < nv)
@@ -165,21 +180,26 @@ private:
           {
             continue; // such vertices are only used through clipping
           }
-          this->ProjectVertex(clip, nullptr, this->Screen[v]);
+          this->Projected[v] = this->Project(clip);
         }
       });
   }
 
-  /// The vertex stage, second half: the stage's attributes of the vertices
-  /// binning marked, scaled by the 1/w their position stored (the same
-  /// float ProjectVertex used: the image is bit-identical).
+  /// The vertex stage, second half: the screen vertices binning marked,
+  /// their projection and the stage's attributes scaled by its 1/w (the
+  /// same float ProjectVertex uses: the image is bit-identical).
   void ShadeVertices()
   {
     const std::atomic<uint8_t>* needed = this->Buffers.Needed.get();
     auto store = [&](int64_t v, const float* raw)
     {
       ScreenVertex& out = this->Screen[v];
-      const float scale = out.a[kAttrInvW];
+      const ProjectedVertex& pv = this->Projected[v];
+      out.x = pv.x;
+      out.y = pv.y;
+      out.a[kAttrZ] = pv.z;
+      out.a[kAttrInvW] = pv.invW;
+      const float scale = pv.invW;
       for (int k = 0; k < F.NumAttributes; ++k)
       {
         out.a[kAttrFirst + k] = raw[k] * scale;
@@ -243,19 +263,28 @@ private:
   {
   };
 
-  void ProjectVertex(const double clip[4], const float* raw, ScreenVertex& out) const
+  /// Screen position, depth and attribute scale of clip coordinates.
+  ProjectedVertex Project(const double clip[4]) const
   {
     const double invW = 1.0 / clip[3];
-    out.x = static_cast<float>((clip[0] * invW * 0.5 + 0.5) * F.Width);
-    out.y = static_cast<float>((0.5 - clip[1] * invW * 0.5) * F.Height);
-    out.a[kAttrZ] = static_cast<float>(clip[2] * invW);
     // Screen-space interpolation: attributes are interpolated as they are and
     // 1/w is pinned to 1, so the per-pixel divide is a no-op.
-    const float scale = F.Perspective ? static_cast<float>(invW) : 1.0f;
-    out.a[kAttrInvW] = scale;
-    for (int k = 0; raw && k < F.NumAttributes; ++k)
+    return { static_cast<float>((clip[0] * invW * 0.5 + 0.5) * F.Width),
+      static_cast<float>((0.5 - clip[1] * invW * 0.5) * F.Height),
+      static_cast<float>(clip[2] * invW), F.Perspective ? static_cast<float>(invW) : 1.0f };
+  }
+
+  /// A clipped vertex: projected, with the stage's attributes raw.
+  void ProjectVertex(const double clip[4], const float* raw, ScreenVertex& out) const
+  {
+    const ProjectedVertex pv = this->Project(clip);
+    out.x = pv.x;
+    out.y = pv.y;
+    out.a[kAttrZ] = pv.z;
+    out.a[kAttrInvW] = pv.invW;
+    for (int k = 0; k < F.NumAttributes; ++k)
     {
-      out.a[kAttrFirst + k] = raw[k] * scale;
+      out.a[kAttrFirst + k] = raw[k] * pv.invW;
     }
   }
 
@@ -387,7 +416,7 @@ private:
   {
     const auto& conn = F.MeshData->connectivity;
     const int count = N > 0 ? N : n;
-    const ScreenVertex* sv[kMaxPolygonVertices];
+    const ProjectedVertex* sv[kMaxPolygonVertices];
     int64_t ids[kMaxPolygonVertices];
     bool anyBehind = false, allBehind = true;
     float ymin = std::numeric_limits<float>::infinity(), ymax = -ymin;
@@ -396,14 +425,14 @@ private:
     {
       const int64_t v = conn[first + k];
       ids[k] = v;
-      sv[k] = &this->Screen[v];
+      sv[k] = &this->Projected[v];
       anyBehind |= this->Behind[v] != 0;
       allBehind &= this->Behind[v] != 0;
       ymin = std::min(ymin, sv[k]->y);
       ymax = std::max(ymax, sv[k]->y);
       xmin = std::min(xmin, sv[k]->x);
       xmax = std::max(xmax, sv[k]->x);
-      zmin = std::min(zmin, sv[k]->a[kAttrZ]);
+      zmin = std::min(zmin, sv[k]->z);
     }
     if (allBehind)
     {
@@ -763,6 +792,7 @@ private:
 
   const Frame& F;
   const StageT& Stage;
+  std::vector<ProjectedVertex>& Projected;
   std::vector<ScreenVertex>& Screen;
   std::vector<uint8_t>& Behind;
   std::vector<std::vector<int64_t>>& Bins;

@@ -24,7 +24,9 @@ constexpr double kMaxClippedFraction = 0.005;
 /// degrees), written as OBJ without normals.
 std::string WriteHexPrism()
 {
-  const std::string path = ::testing::TempDir() + "/shadinglab_hex_prism.obj";
+  // One file per test: ctest runs these tests as parallel processes.
+  const std::string path = ::testing::TempDir() + "/shadinglab_hex_prism_" +
+    ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".obj";
   std::ofstream f(path);
   for (int z = 0; z < 2; ++z)
   {

@@ -14,7 +14,6 @@
 #include <cmath>
 #include <cstdint>
 #include <functional>
-#include <limits>
 #include <vector>
 
 namespace shadinglab::cpu::raster
@@ -241,7 +240,9 @@ void ScanTriangle(int width,
   // order only picks the base point (the lower end), since a horizontal
   // edge is never crossed and the slope is the same quotient from either
   // end (both differences change sign exactly): every crossing is the
-  // one CanonicalEdge's order gives, bit for bit. Measured x0.98.
+  // one CanonicalEdge's order gives, bit for bit. (Selecting a row's two
+  // crossings without branches as well cost larger triangles more than it
+  // saved: x1.05 on the 100k torus.)
   struct Edge
   {
     float px, py, qy, invSlope;
@@ -261,22 +262,24 @@ void ScanTriangle(int width,
   const int j0 = std::max(rowBegin, CeilToInt(ymin - 0.5f));
   const int j1 = std::min(rowEnd, CeilToInt(ymax - 0.5f));
   float value[kMaxAttributes] = {}; // full size: pixel functors index by slot
-  constexpr float kNone = std::numeric_limits<float>::infinity();
   for (int j = j0; j < j1; ++j)
   {
     const float yc = static_cast<float>(j) + 0.5f;
-    // A row crosses two edges of the triangle or none (half-open in y):
-    // the span runs between the crossed edges' crossings, and a row that
-    // crosses none gets an empty span (xl = +inf, xr = -inf).
-    float xl = kNone, xr = -kNone;
-    for (int k = 0; k < 3; ++k)
+    float xs[2];
+    int nc = 0;
+    for (int k = 0; k < 3 && nc < 2; ++k)
     {
       const Edge& e = edges[k];
-      const float x = e.px + (yc - e.py) * e.invSlope;
-      const bool crossed = e.py <= yc && yc < e.qy;
-      xl = crossed ? std::min(xl, x) : xl;
-      xr = crossed ? std::max(xr, x) : xr;
+      if (e.py <= yc && yc < e.qy)
+      {
+        xs[nc++] = e.px + (yc - e.py) * e.invSlope;
+      }
     }
+    if (nc < 2)
+    {
+      continue;
+    }
+    const float xl = std::min(xs[0], xs[1]), xr = std::max(xs[0], xs[1]);
     const int i0 = std::max(0, CeilToInt(xl - 0.5f));
     const int i1 = std::min(width, CeilToInt(xr - 0.5f));
     if (i1 <= i0)

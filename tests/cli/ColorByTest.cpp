@@ -15,6 +15,7 @@
 #include <string>
 
 using shadinglab::testing::CountLines;
+using shadinglab::testing::PerTestTempPath;
 using shadinglab::testing::RunCli;
 
 namespace
@@ -23,11 +24,7 @@ namespace
 /// (one component), point vectors "flow" (three), cell array "patch".
 std::string WriteField()
 {
-  // One file per test: ctest runs this file's tests as parallel processes,
-  // and with one shared name a test could read the file while another
-  // rewrote it (a flaky "no point array" failure).
-  const std::string path = ::testing::TempDir() + "/shadinglab_field_" +
-    ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".vtk";
+  const std::string path = PerTestTempPath("shadinglab_field", ".vtk");
   std::ofstream f(path);
   const int n = 20;
   f << "# vtk DataFile Version 3.0\nfield\nASCII\nDATASET POLYDATA\nPOINTS " << n * n << " float\n";

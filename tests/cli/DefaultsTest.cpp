@@ -12,6 +12,7 @@
 #include <iterator>
 #include <string>
 
+using shadinglab::testing::PerTestTempPath;
 using shadinglab::testing::RunCli;
 
 namespace
@@ -24,9 +25,7 @@ constexpr double kMaxClippedFraction = 0.005;
 /// degrees), written as OBJ without normals.
 std::string WriteHexPrism()
 {
-  // One file per test: ctest runs these tests as parallel processes.
-  const std::string path = ::testing::TempDir() + "/shadinglab_hex_prism_" +
-    ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".obj";
+  const std::string path = PerTestTempPath("shadinglab_hex_prism", ".obj");
   std::ofstream f(path);
   for (int z = 0; z < 2; ++z)
   {

@@ -2,6 +2,8 @@
 // Runs the real shadinglab binary and captures exit status, stdout, stderr.
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <cstdio>
 #include <fstream>
 #include <sstream>
@@ -18,6 +20,15 @@ struct RunResult
   std::string out;
   std::string err;
 };
+
+/// A path in gtest's TempDir() named after the running test: ctest runs
+/// each TEST as its own process, in parallel, and a file name shared by
+/// several tests could be rewritten while another reads it.
+inline std::string PerTestTempPath(const std::string& stem, const std::string& extension)
+{
+  return ::testing::TempDir() + "/" + stem + "_" +
+    ::testing::UnitTest::GetInstance()->current_test_info()->name() + extension;
+}
 
 /// Runs `prefix shadinglab arguments` (prefix e.g. "env -u DISPLAY ").
 inline RunResult RunCli(const std::string& arguments, const std::string& prefix = {})

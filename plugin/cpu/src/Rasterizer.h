@@ -186,24 +186,14 @@ private:
   }
 
   /// The vertex stage, second half: the screen vertices binning marked,
-  /// their projection and the stage's attributes scaled by its 1/w (the
-  /// same float ProjectVertex uses: the image is bit-identical).
+  /// their projection and the stage's attributes scaled by its 1/w
+  /// (ToScreen, as for clipped vertices).
   void ShadeVertices()
   {
     const std::atomic<uint8_t>* needed = this->Buffers.Needed.get();
     auto store = [&](int64_t v, const float* raw)
     {
-      ScreenVertex& out = this->Screen[v];
-      const ProjectedVertex& pv = this->Projected[v];
-      out.x = pv.x;
-      out.y = pv.y;
-      out.a[kAttrZ] = pv.z;
-      out.a[kAttrInvW] = pv.invW;
-      const float scale = pv.invW;
-      for (int k = 0; k < F.NumAttributes; ++k)
-      {
-        out.a[kAttrFirst + k] = raw[k] * scale;
-      }
+      this->ToScreen(this->Projected[v], raw, this->Screen[v]);
     };
     ParallelChunks(this->Buffers.Pool, F.MeshData->NumberOfPoints(), F.Threads, kVertexChunk,
       [&](int64_t, int64_t b, int64_t e, int)
@@ -274,10 +264,10 @@ private:
       static_cast<float>(clip[2] * invW), F.Perspective ? static_cast<float>(invW) : 1.0f };
   }
 
-  /// A clipped vertex: projected, with the stage's attributes raw.
-  void ProjectVertex(const double clip[4], const float* raw, ScreenVertex& out) const
+  /// The screen vertex of a projection and the stage's raw attributes,
+  /// scaled by its 1/w: a marked vertex (ShadeVertices) or a clipped one.
+  void ToScreen(const ProjectedVertex& pv, const float* raw, ScreenVertex& out) const
   {
-    const ProjectedVertex pv = this->Project(clip);
     out.x = pv.x;
     out.y = pv.y;
     out.a[kAttrZ] = pv.z;
@@ -522,8 +512,7 @@ private:
     float ymin = std::numeric_limits<float>::infinity(), ymax = -ymin;
     auto row = [&](const double* clip)
     {
-      const double invW = 1.0 / clip[3]; // as ProjectVertex
-      const float y = static_cast<float>((0.5 - clip[1] * invW * 0.5) * F.Height);
+      const float y = this->Project(clip).y;
       ymin = std::min(ymin, y);
       ymax = std::max(ymax, y);
     };
@@ -633,7 +622,7 @@ private:
       auto emit = [&](const ClipVertex& cv, int64_t id)
       {
         ScreenVertex sv;
-        this->ProjectVertex(cv.c, cv.raw, sv);
+        this->ToScreen(this->Project(cv.c), cv.raw, sv);
         clippedIds[state.clipped.size()] = id;
         state.clipped.push_back(sv);
       };
@@ -768,11 +757,11 @@ private:
   /// others are read on demand).
   static constexpr int64_t kPrefetchedVertices = 3;
   /// Rows added on each side of a clipped polygon's rows when it is binned:
-  /// ClippedRows projects as ProjectVertex does, from the same clip
-  /// coordinates (the same ClipToNearPlane crossings), but it is another
-  /// expression the compiler may round differently, and a y on a pixel
-  /// centre could then land a row apart; one row covers that, and a band
-  /// too many only costs a set-up that finds no row.
+  /// ClippedRows projects with Project, from the same clip coordinates (the
+  /// same ClipToNearPlane crossings), but in another inlined copy that a
+  /// build allowed to contract into FMA may round differently, and a y on
+  /// a pixel centre could then land a row apart; one row covers that, and
+  /// a band too many only costs a set-up that finds no row.
   static constexpr int kClipRowMargin = 1;
   /// Pixels added on each side of a polygon's x range by the column test
   /// of binning: the plane scan computes each row's crossings in float from

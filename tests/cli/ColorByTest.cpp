@@ -141,6 +141,78 @@ TEST(ColorByTest, ThePictureShowsTheMapAndTheLegendItsRange)
   }
 }
 
+TEST(ColorByTest, AFieldConstantUpToRoundingIsDrawnAsAConstantOne)
+{
+  // A unit vector's magnitude computed in double is 1 +- 2e-16: its range
+  // is rounding noise, and the perspective interpolation's own float
+  // rounding, stretched over that range, speckled the surface with both
+  // ends of the map. It must draw exactly as the constant 1.
+  auto write = [](const char* stem, bool noisy)
+  {
+    const std::string path = PerTestTempPath(stem, ".vtk");
+    std::ofstream f(path);
+    const int n = 12;
+    f << "# vtk DataFile Version 3.0\nfield\nASCII\nDATASET POLYDATA\nPOINTS " << n * n
+      << " float\n";
+    for (int j = 0; j < n; ++j)
+    {
+      for (int i = 0; i < n; ++i)
+      {
+        const double x = -1 + 2.0 * i / (n - 1), y = -1 + 2.0 * j / (n - 1);
+        f << x << " " << y << " " << 0.3 * x * y << "\n";
+      }
+    }
+    const int cells = (n - 1) * (n - 1);
+    f << "POLYGONS " << cells << " " << 5 * cells << "\n";
+    for (int j = 0; j + 1 < n; ++j)
+    {
+      for (int i = 0; i + 1 < n; ++i)
+      {
+        const int a = j * n + i;
+        f << "4 " << a << " " << a + 1 << " " << a + n + 1 << " " << a + n << "\n";
+      }
+    }
+    f << "POINT_DATA " << n * n << "\nSCALARS s double 1\nLOOKUP_TABLE default\n";
+    for (int k = 0; k < n * n; ++k)
+    {
+      f << (!noisy ? "1" : k % 3 == 0 ? "1.0000000000000002" : k % 3 == 1 ? "0.9999999999999998" : "1")
+        << "\n";
+    }
+    return path;
+  };
+  const std::string exact = write("shadinglab_constant", false);
+  const std::string noisy = write("shadinglab_nearly_constant", true);
+  const std::string outExact = PerTestTempPath("shadinglab_constant", ".png");
+  const std::string outNoisy = PerTestTempPath("shadinglab_nearly_constant", ".png");
+  for (const std::string mode : { "phong", "gouraud" })
+  {
+    const std::string flags = " --backend cpu --size 200x150 --mode " + mode + " --color-by s --out ";
+    ASSERT_EQ(RunCli("render " + exact + flags + outExact).status, 0);
+    ASSERT_EQ(RunCli("render " + noisy + flags + outNoisy).status, 0);
+    const Png a = ReadPng(outExact), b = ReadPng(outNoisy);
+    ASSERT_TRUE(a.rgb && b.rgb);
+    ASSERT_EQ(a.rgb->GetNumberOfValues(), b.rgb->GetNumberOfValues());
+    int64_t differ = 0;
+    for (vtkIdType k = 0; k < a.rgb->GetNumberOfValues(); ++k)
+    {
+      differ += a.rgb->GetValue(k) != b.rgb->GetValue(k);
+    }
+    EXPECT_EQ(differ, 0) << mode;
+    // The legend shows the one colour drawn, not the map's ramp: no pixel
+    // of the map's red end at the right edge.
+    int red = 0;
+    for (int y = 0; y < a.height; ++y)
+    {
+      for (int x = a.width - 60; x < a.width; ++x)
+      {
+        const unsigned char* p = a.At(x, y);
+        red += p[0] > 150 && p[2] < 60;
+      }
+    }
+    EXPECT_EQ(red, 0) << mode;
+  }
+}
+
 TEST(ColorByTest, MisspellingsAreOneLineAndExitTwo)
 {
   const std::string field = WriteField();

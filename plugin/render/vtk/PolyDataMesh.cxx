@@ -38,6 +38,16 @@ Mesh Convert(vtkPolyData* input, WorldFrame& frame, bool normalize,
 /// fixed buffer of 64 (Raster.h kMaxPolygonVertices).
 constexpr vtkIdType kMaxWholePolygon = 63;
 
+/// A field whose values span at most this many float ulps of their
+/// magnitude is constant: the renderers carry scalars as floats and
+/// interpolate them with perspective (value / w over 1 / w), which moves
+/// a constant by one to three ulps from pixel to pixel; stretched over the
+/// whole colour map, that rounding noise speckled a constant field (a unit
+/// vector's magnitude, 1 +- 2e-16 in double) with both of the map's ends.
+/// 16 ulps (a relative spread of 2e-6) is above that noise, and a real
+/// field of so few float steps cannot be told from its own rounding.
+constexpr double kConstantFieldUlps = 16.0;
+
 /// True when the polygon turns the same way at every corner (collinear
 /// corners allowed), measured against its Newell normal.
 bool IsConvex(vtkPoints* points, vtkIdList* ids)
@@ -311,6 +321,13 @@ Mesh Convert(vtkPolyData* input, WorldFrame& frame, bool normalize, const Scalar
     }
     range[0] = lo <= hi ? lo : 0.0;
     range[1] = lo <= hi ? hi : 1.0;
+    const double ulp = std::numeric_limits<float>::epsilon() *
+      std::max(std::abs(range[0]), std::abs(range[1]));
+    if (range[1] - range[0] <= kConstantFieldUlps * ulp)
+    {
+      // Constant up to rounding: one value, drawn as a constant field is.
+      range[0] = range[1] = 0.5 * (range[0] + range[1]);
+    }
   }
   // Cell normals apply to polygons only when the polydata has no verts or
   // lines before them in cell order.

@@ -50,7 +50,9 @@ std::string ParseScalarField(const std::string& spec, ScalarField& field);
  * the polygons the conversion makes). Throws std::invalid_argument with one
  * line naming the arrays there are when the field is not found or its
  * component does not exist. `range` gets the finite values' [min, max]
- * ([0, 1] when there are none).
+ * ([0, 1] when there are none; their middle twice when they span at most a
+ * few float ulps, kConstantFieldUlps: a field constant up to rounding is
+ * drawn as a constant one).
  */
 Mesh MeshFromPolyData(vtkPolyData* polydata, WorldFrame& frame, const ScalarField& field,
   double range[2]);

@@ -195,6 +195,10 @@ std::string CpuBackend::Draw(
   // The hand-over: colour (display values, alpha = covered) and depth of
   // the rectangle the surface covers (most of a view is background),
   // bottom row first as OpenGL stores textures.
+  if (this->FinishForTiming)
+  {
+    window->WaitForCompletion(); // glFinish
+  }
   const auto start = std::chrono::steady_clock::now();
   int i0 = width, i1 = -1, j0 = height, j1 = -1;
   for (int j = 0; j < height; ++j)
@@ -302,6 +306,10 @@ std::string CpuBackend::Draw(
   this->Quad->Render();
   this->ColorTexture->Deactivate();
   this->DepthTexture->Deactivate();
+  if (this->FinishForTiming)
+  {
+    window->WaitForCompletion(); // glFinish
+  }
   this->HandOverMs =
     std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return "";

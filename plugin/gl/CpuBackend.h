@@ -54,6 +54,11 @@ public:
   const render::RenderStats& LastStats() const { return this->Stats; }
   /// Milliseconds of the last hand-over (texture uploads and the quad).
   double LastHandOverMilliseconds() const { return this->HandOverMs; }
+  /// Timing: finish OpenGL's work before and after the hand-over (glFinish),
+  /// so that LastHandOverMilliseconds includes the quad's fragments, which a
+  /// software rasterizer otherwise runs later in the frame. Off in use: it
+  /// stalls the pipeline (the render benchmark turns it on).
+  void SetFinishForTiming(bool finish) { this->FinishForTiming = finish; }
   /// Times the mesh was converted (a camera move does not convert it).
   int Conversions() const { return this->ConversionCount; }
 
@@ -71,6 +76,7 @@ private:
   /// A polarization image's false colours (Settings::polarizationImage).
   render::Image Polarization;
   double HandOverMs = 0;
+  bool FinishForTiming = false;
   std::vector<unsigned char> Rgba;
   std::vector<float> Depth;
   std::unique_ptr<vtkOpenGLQuadHelper> Quad;

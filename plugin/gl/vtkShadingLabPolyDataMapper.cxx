@@ -542,6 +542,11 @@ double vtkShadingLabPolyDataMapper::GetCpuHandOverMilliseconds() const
   return this->Internal->Cpu.LastHandOverMilliseconds();
 }
 
+void vtkShadingLabPolyDataMapper::SetCpuHandOverTimingFinishes(bool finish)
+{
+  this->Internal->Cpu.SetFinishForTiming(finish);
+}
+
 int vtkShadingLabPolyDataMapper::GetCpuMeshConversions() const
 {
   return this->Internal->Cpu.Conversions();

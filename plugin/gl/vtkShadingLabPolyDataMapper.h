@@ -120,6 +120,9 @@ public:
   /// move converts nothing).
   double GetCpuRenderMilliseconds() const;
   double GetCpuHandOverMilliseconds() const;
+  /// Benchmarks: make GetCpuHandOverMilliseconds include OpenGL's share of
+  /// the hand-over (glFinish before and after it; stalls the pipeline).
+  void SetCpuHandOverTimingFinishes(bool finish);
   int GetCpuMeshConversions() const;
   /// The last render's backend and, for Auto, why ("cpu: OpenGL renderer
   /// 'llvmpipe ...' is a software rasterizer, 996000 polygons >= 100000").

@@ -38,17 +38,20 @@ void ColorLegend::paintEvent(QPaintEvent*)
   painter.drawText(8, 4 + metrics.ascent(), this->Title);
   const int top = 10 + line, bottom = this->height() - line / 2 - 6;
   const int barX = 10, barW = 18, barH = std::max(10, bottom - top);
-  const int bins = static_cast<int>(this->Map.colors.size());
   for (int y = 0; y < barH; ++y)
   {
-    const double t = 1.0 - (y + 0.5) / barH; // the maximum at the top
-    const Vec3<float>& c = this->Map.colors[static_cast<size_t>(std::min(bins - 1, static_cast<int>(t * bins)))];
+    // The maximum at the top (a constant field: its one colour).
+    const Vec3<float> c = this->Map.LegendColor(1.0 - (y + 0.5) / barH);
     painter.setPen(QColor::fromRgbF(c.x, c.y, c.z));
     painter.drawLine(barX, top + y, barX + barW - 1, top + y);
   }
   painter.setPen(Qt::white);
   for (int k = 0; k <= 4; ++k)
   {
+    if (this->Map.IsConstant() && k != 2)
+    {
+      continue; // one value: one tick, at the middle
+    }
     const int y = top + (barH - 1) * (4 - k) / 4;
     painter.drawLine(barX + barW, y, barX + barW + 4, y);
     const double value = this->Map.LegendTick(k, 4);

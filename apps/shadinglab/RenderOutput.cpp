@@ -124,19 +124,10 @@ void DrawColorLegend(std::vector<uint8_t>& canvas, int canvasWidth, int canvasHe
     }
   }
   DrawLabel(canvas, W, H, boxX + 4, y0 - 2 * font - 4, title, font);
-  // A constant field (a range of zero width; PolyDataMesh.h's range is one
-  // value also for one constant up to rounding) is drawn in the map's one
-  // colour for it: the legend shows that colour and that value, not a ramp
-  // the picture does not use.
-  const bool constant = !(map.rangeMax > map.rangeMin);
-  // The bar: the maximum at the top.
-  const int bins = static_cast<int>(map.colors.size());
+  // The bar: the maximum at the top (a constant field: its one colour).
   for (int y = 0; y < barH; ++y)
   {
-    const double t = 1.0 - (y + 0.5) / barH;
-    const Vec3<float> c = constant
-      ? map.Map(map.rangeMin)
-      : map.colors[static_cast<size_t>(std::min(bins - 1, static_cast<int>(t * bins)))];
+    const Vec3<float> c = map.LegendColor(1.0 - (y + 0.5) / barH);
     for (int x = x0; x < x0 + barW; ++x)
     {
       if (uint8_t* p = pixel(x, y0 + y))
@@ -150,7 +141,7 @@ void DrawColorLegend(std::vector<uint8_t>& canvas, int canvasWidth, int canvasHe
   // Five ticks with their values (one, at the middle, for a constant).
   for (int k = 0; k <= 4; ++k)
   {
-    if (constant && k != 2)
+    if (map.IsConstant() && k != 2)
     {
       continue;
     }

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// The colour maps' legend ticks: evenly spaced, and an end that is zero but
-// for float rounding prints as 0.
+// The colour maps' legends: ticks evenly spaced, an end that is zero but
+// for float rounding printed as 0, and a constant field's bar its one colour.
 #include "shadinglab/render/ColorMap.h"
 
 #include <gtest/gtest.h>
@@ -24,4 +24,25 @@ TEST(ColorMapTest, LegendTicksAreEvenAndNearZeroIsZero)
   map.rangeMin = 1e-12;
   map.rangeMax = 3e-12;
   EXPECT_EQ(map.LegendTick(0, 2), 1e-12);
+}
+
+TEST(ColorMapTest, AConstantFieldsLegendIsTheOneColourDrawn)
+{
+  sr::ColorMap map;
+  ASSERT_TRUE(sr::FindColorMap("cool-to-warm", map));
+  map.rangeMin = 0.0;
+  map.rangeMax = 2.0;
+  EXPECT_FALSE(map.IsConstant());
+  EXPECT_EQ(map.LegendColor(0.0).x, map.colors.front().x);
+  EXPECT_EQ(map.LegendColor(1.0).x, map.colors.back().x);
+  EXPECT_EQ(map.LegendColor(0.999).z, map.Map(1.998).z);
+  map.rangeMin = map.rangeMax = 1.0;
+  EXPECT_TRUE(map.IsConstant());
+  for (double t : { 0.0, 0.5, 1.0 })
+  {
+    const auto c = map.LegendColor(t), drawn = map.Map(1.0 + 1e-7);
+    EXPECT_EQ(c.x, drawn.x);
+    EXPECT_EQ(c.y, drawn.y);
+    EXPECT_EQ(c.z, drawn.z);
+  }
 }

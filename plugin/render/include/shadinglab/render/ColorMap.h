@@ -47,6 +47,16 @@ struct ColorMap
     return this->colors[static_cast<size_t>(std::min(bins - 1, bin))];
   }
 
+  /// A range of zero width: every value maps to one colour (a constant
+  /// field; MeshFromPolyData gives one also for a field constant up to
+  /// rounding).
+  bool IsConstant() const { return !(this->rangeMax > this->rangeMin); }
+
+  /// A legend bar's colour at fraction t of its height (0: the minimum):
+  /// the map's bin there, or for a constant field the one colour drawn (a
+  /// ramp the picture does not use would misstate it).
+  Vec3<float> LegendColor(double t) const;
+
   /// The value of tick k of `count` + 1 evenly spaced legend ticks (0: the
   /// range's minimum). A value within kLegendZeroFraction of the range's
   /// width from zero is 0: float data and rounding put a range's end at

@@ -20,13 +20,10 @@ using shadinglab::testing::RunCli;
 
 namespace
 {
-/// A 20 x 20 height field z = x y as legacy VTK: point array "height"
-/// (one component), point vectors "flow" (three), cell array "patch".
-std::string WriteField()
+/// An n x n height field z = 0.3 x y over [-1, 1]^2 as legacy VTK polygons
+/// (quads), up to its attributes.
+void WriteGrid(std::ostream& f, int n)
 {
-  const std::string path = PerTestTempPath("shadinglab_field", ".vtk");
-  std::ofstream f(path);
-  const int n = 20;
   f << "# vtk DataFile Version 3.0\nfield\nASCII\nDATASET POLYDATA\nPOINTS " << n * n << " float\n";
   for (int j = 0; j < n; ++j)
   {
@@ -46,6 +43,16 @@ std::string WriteField()
       f << "4 " << a << " " << a + 1 << " " << a + n + 1 << " " << a + n << "\n";
     }
   }
+}
+
+/// A 20 x 20 height field z = x y as legacy VTK: point array "height"
+/// (one component), point vectors "flow" (three), cell array "patch".
+std::string WriteField()
+{
+  const std::string path = PerTestTempPath("shadinglab_field", ".vtk");
+  std::ofstream f(path);
+  const int n = 20;
+  WriteGrid(f, n);
   f << "POINT_DATA " << n * n << "\nSCALARS height float 1\nLOOKUP_TABLE default\n";
   for (int j = 0; j < n; ++j)
   {
@@ -59,6 +66,7 @@ std::string WriteField()
   {
     f << "3 4 0\n";
   }
+  const int cells = (n - 1) * (n - 1);
   f << "CELL_DATA " << cells << "\nSCALARS patch int 1\nLOOKUP_TABLE default\n";
   for (int c = 0; c < cells; ++c)
   {
@@ -152,26 +160,7 @@ TEST(ColorByTest, AFieldConstantUpToRoundingIsDrawnAsAConstantOne)
     const std::string path = PerTestTempPath(stem, ".vtk");
     std::ofstream f(path);
     const int n = 12;
-    f << "# vtk DataFile Version 3.0\nfield\nASCII\nDATASET POLYDATA\nPOINTS " << n * n
-      << " float\n";
-    for (int j = 0; j < n; ++j)
-    {
-      for (int i = 0; i < n; ++i)
-      {
-        const double x = -1 + 2.0 * i / (n - 1), y = -1 + 2.0 * j / (n - 1);
-        f << x << " " << y << " " << 0.3 * x * y << "\n";
-      }
-    }
-    const int cells = (n - 1) * (n - 1);
-    f << "POLYGONS " << cells << " " << 5 * cells << "\n";
-    for (int j = 0; j + 1 < n; ++j)
-    {
-      for (int i = 0; i + 1 < n; ++i)
-      {
-        const int a = j * n + i;
-        f << "4 " << a << " " << a + 1 << " " << a + n + 1 << " " << a + n << "\n";
-      }
-    }
+    WriteGrid(f, n);
     f << "POINT_DATA " << n * n << "\nSCALARS s double 1\nLOOKUP_TABLE default\n";
     for (int k = 0; k < n * n; ++k)
     {

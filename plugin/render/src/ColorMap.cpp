@@ -58,13 +58,8 @@ bool FindColorMap(const std::string& name, ColorMap& map)
 
 Vec3<float> ColorMap::LegendColor(double t) const
 {
-  if (this->IsConstant() || this->colors.empty())
-  {
-    return this->Map(this->rangeMin);
-  }
-  const int bins = static_cast<int>(this->colors.size());
-  const int bin = static_cast<int>(std::clamp(t, 0.0, 1.0) * bins);
-  return this->colors[static_cast<size_t>(std::min(bins - 1, bin))];
+  // Map's own bin (a constant field's one colour included).
+  return this->Map(this->rangeMin + std::clamp(t, 0.0, 1.0) * (this->rangeMax - this->rangeMin));
 }
 
 double ColorMap::LegendTick(int k, int count) const

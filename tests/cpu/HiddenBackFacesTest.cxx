@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <string>
 
@@ -264,4 +265,128 @@ TEST(HiddenBackFacesTest, BoundsAreExactForAnyThreadsBehindThem)
   render::Mesh empty;
   empty.Bounds(b, sl::cpu::SpreadOver(pool, 2));
   EXPECT_GT(b[0], b[1]); // no points: an empty box
+}
+
+TEST(HiddenBackFacesTest, RunsFacingAwayAreSkippedWholeForTheSamePicture)
+{
+  // From a mesh's second culled frame on, binning skips runs of
+  // kClusterPolygons triangles whose cone of normals faces away
+  // (HiddenBackFaces.h). Only back faces go: the same pixels, depths and
+  // scan-converted polygons as the first frame, which tests each triangle,
+  // from cameras all round (near, far, parallel) on meshes whose runs are
+  // strips (UV sphere, torus), patches (icosphere), an irregular decimated
+  // surface and a marching-cubes isosurface.
+  const render::Mesh meshes[] = { MeshOf(sl::datasets::MakeUVSphere(160, 80)),
+    MeshOf(sl::datasets::MakeTorus(1.0, 0.4, 160, 64)), MeshOf(sl::datasets::MakeIcosphere(5)),
+    MeshOf(sl::datasets::MakeNoisyDecimatedSphere(5, 0.02, 0.5)),
+    MeshOf(sl::datasets::MakeMetaballIsosurface(40)) };
+  int64_t skippedInAll = 0, polygonsInAll = 0;
+  for (const render::Mesh& mesh : meshes)
+  {
+    double b[6];
+    mesh.Bounds(b);
+    const Vec3d centre(0.5 * (b[0] + b[1]), 0.5 * (b[2] + b[3]), 0.5 * (b[4] + b[5]));
+    const double size = std::max({ b[1] - b[0], b[3] - b[2], b[5] - b[4] });
+    for (int k = 0; k < 12; ++k)
+    {
+      // Directions spread over the sphere (a Fibonacci lattice).
+      const double z = 1.0 - (k + 0.5) / 6.0;
+      const double phi = k * 2.399963229728653;
+      const double rxy = std::sqrt(std::max(0.0, 1.0 - z * z));
+      const Vec3d dir(rxy * std::cos(phi), z, rxy * std::sin(phi));
+      for (double distance : { 0.9, 3.0 })
+      {
+        for (bool parallel : { false, true })
+        {
+          render::Camera cam = Looking(centre + dir * (distance * size), centre, parallel);
+          cam.viewUp = std::abs(dir.y) > 0.9 ? Vec3d(1, 0, 0) : Vec3d(0, 1, 0);
+          cam.parallelScale = 0.6 * size;
+          render::RenderOptions opt;
+          opt.width = 160;
+          opt.height = 120;
+          opt.threads = 2;
+          opt.keepDepth = true;
+          opt.mode = render::ShadingMode::Phong;
+          const render::Scene scene{ &mesh, cam, sl::Lighting<double>(), sl::Material<double>() };
+          // The reference: back faces culled one by one (asked, on a
+          // renderer's first frame, which has no cones yet).
+          render::RenderOptions asked = opt;
+          asked.cullBackFaces = true;
+          sl::cpu::SoftwareRenderer fresh;
+          render::RenderStats first, second;
+          const render::Image one = fresh.Render(scene, asked, &first);
+          // Hidden back faces found by the closed-mesh test, from the
+          // renderer's third frame on with cones (ClusterConeCache).
+          sl::cpu::SoftwareRenderer renderer;
+          renderer.Render(scene, opt);
+          renderer.Render(scene, opt);
+          const render::Image& two = renderer.Render(scene, opt, &second);
+          SCOPED_TRACE("mesh of " + std::to_string(mesh.NumberOfPolygons()) + " polygons, view " +
+            std::to_string(k) + " at " + std::to_string(distance) + (parallel ? " parallel" : ""));
+          if (!second.hiddenBackFacesCulled)
+          {
+            continue; // the near camera inside the bounds: nothing culled
+          }
+          EXPECT_EQ(first.culledInClusters, 0);
+          EXPECT_EQ(two.rgb, one.rgb);
+          EXPECT_EQ(two.covered, one.covered);
+          EXPECT_EQ(two.depth, one.depth);
+          EXPECT_EQ(second.rasterized, first.rasterized);
+          EXPECT_EQ(second.triangles, first.triangles);
+          // The runs' back faces are no longer counted one by one.
+          EXPECT_LE(second.culled, first.culled);
+          EXPECT_GE(second.culled + second.culledInClusters, first.culled);
+          skippedInAll += second.culledInClusters;
+          polygonsInAll += second.polygons;
+        }
+      }
+    }
+  }
+  // About half of each closed mesh faces away; much of it in whole runs.
+  std::printf("culled in runs: %lld of %lld polygons\n", static_cast<long long>(skippedInAll),
+    static_cast<long long>(polygonsInAll));
+  EXPECT_GT(skippedInAll, polygonsInAll / 4);
+}
+
+TEST(HiddenBackFacesTest, AskedCullingOfAnOpenMeshSkipsRunsAndFollowsTheMesh)
+{
+  // --cull on an open mesh (the corrugated plane, from behind and in
+  // front), and a new mesh in the same renderer gets its own cones: after
+  // the sphere's frames, the sphere turned inside out is drawn as a fresh
+  // renderer draws it (inside faces now front faces).
+  const render::Mesh plane = MeshOf(sl::datasets::MakeCorrugatedPlane(8, 40, 0.05));
+  const render::Mesh sphere = MeshOf(sl::datasets::MakeUVSphere(120, 60));
+  const render::Mesh inside = Reversed(sphere);
+  render::RenderOptions opt;
+  opt.width = 160;
+  opt.height = 120;
+  opt.threads = 2;
+  opt.cullBackFaces = true;
+  opt.mode = render::ShadingMode::Gouraud;
+  for (double side : { 1.0, -1.0 })
+  {
+    const auto cam = Looking(Vec3d(0.3, 0.4 * side, 2.5 * side), Vec3d(0, 0, 0));
+    sl::cpu::SoftwareRenderer renderer;
+    const render::Scene scene{ &plane, cam, sl::Lighting<double>(), sl::Material<double>() };
+    render::RenderStats first, second;
+    const render::Image one = renderer.Render(scene, opt, &first);
+    const render::Image& two = renderer.Render(scene, opt, &second);
+    EXPECT_EQ(two.rgb, one.rgb) << side;
+    EXPECT_EQ(second.rasterized, first.rasterized) << side;
+  }
+  const auto cam = Looking(Vec3d(0.5, 1.0, 3.0), Vec3d(0, 0, 0));
+  sl::cpu::SoftwareRenderer renderer, fresh;
+  render::RenderStats stats;
+  for (int frame = 0; frame < 2; ++frame)
+  {
+    renderer.Render({ &sphere, cam, sl::Lighting<double>(), sl::Material<double>() }, opt, &stats);
+  }
+  EXPECT_GT(stats.culledInClusters, stats.polygons / 8);
+  const render::Scene turned{ &inside, cam, sl::Lighting<double>(), sl::Material<double>() };
+  const render::Image expected = fresh.Render(turned, opt);
+  for (int frame = 0; frame < 3; ++frame)
+  {
+    EXPECT_EQ(renderer.Render(turned, opt, &stats).rgb, expected.rgb) << "frame " << frame;
+  }
+  EXPECT_GT(stats.culledInClusters, stats.polygons / 8);
 }

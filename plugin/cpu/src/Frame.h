@@ -4,6 +4,7 @@
 // rasterizer (Rasterizer.h) and the shading stages (ShadingStages.h).
 #pragma once
 
+#include "HiddenBackFaces.h"
 #include "Raster.h"
 
 #include "shadinglab/model/FastPhong.h"
@@ -40,6 +41,10 @@ struct Frame
   SpecularPowerTable PowerTable; ///< fast-phong's x^n, as Bishop & Weimer
   float FastPhongMinCos = 0.0f;  ///< cos of RenderOptions::fastPhongMaxSpread
   bool CullBack = false;         ///< back faces are culled (asked, or hidden)
+  /// With CullBack, the mesh's runs of kClusterPolygons polygons, binning
+  /// skipping those ClusterFacesAway from ConeEye (HiddenBackFaces.h); or nullptr.
+  const ClusterCone* Cones = nullptr;
+  ClusterEye ConeEye;
   PixelUniforms Pixels{};        ///< what the Phong stage's queued pixels are shaded with
   /// Where the scan records RenderOptions::traceRow (written by the one
   /// thread whose band holds the row), or nullptr.

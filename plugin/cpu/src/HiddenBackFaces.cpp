@@ -3,6 +3,8 @@
 
 #include "Geometry.h"
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
 #include <numeric>
 #include <vector>
@@ -12,6 +14,17 @@ namespace shadinglab::cpu
 
 namespace
 {
+
+/// The cosine by which ClusterFacesAway's bound must clear zero, relative
+/// to the eye's distance: every triangle of a culled run then makes more
+/// than ~87 degrees with every ray to it. The per-triangle test takes the
+/// sign of the projected area in float screen coordinates, which for a
+/// sub-pixel triangle a thousand pixels from the origin moves by ~1e-4 px^2
+/// (coordinates to 6e-5 px); a triangle 0.1 px across tilted 3 degrees past
+/// edge-on still projects to ~3e-4 px^2 with that sign, and one nearer
+/// edge-on than that is left to the per-triangle test, which decides it as
+/// it always did.
+constexpr double kClusterFacingMargin = 0.05;
 
 /// Union-find over vertices (mesh/core/Geometry.h).
 uint32_t Root(std::vector<uint32_t>& parent, uint32_t v)
@@ -125,6 +138,168 @@ bool IsClosedOutwardTriangleMesh(const render::Mesh& mesh)
     }
   }
   return true;
+}
+
+std::vector<ClusterCone> ClusterConesOf(
+  const render::Mesh& mesh, const render::Mesh::TaskRunner& run)
+{
+  const int64_t np = mesh.NumberOfPolygons(), nv = mesh.NumberOfPoints();
+  const int64_t runs = (np + kClusterPolygons - 1) / kClusterPolygons;
+  std::vector<ClusterCone> cones(static_cast<size_t>(runs));
+  auto point = [&](int64_t v, double out[3])
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      out[c] = mesh.points[3 * v + c];
+    }
+  };
+  auto build = [&](int64_t r)
+  {
+    ClusterCone& cone = cones[static_cast<size_t>(r)];
+    const int64_t begin = r * kClusterPolygons, end = std::min(np, begin + kClusterPolygons);
+    double normals[kClusterPolygons][3];
+    double sum[3] = { 0, 0, 0 };
+    double lo[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL }, hi[3] = { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };
+    for (int64_t p = begin; p < end; ++p)
+    {
+      const int64_t first = mesh.offsets[p];
+      if (mesh.offsets[p + 1] - first != 3)
+      {
+        return; // not a triangle: its facing may differ across its surface
+      }
+      double q[3][3];
+      for (int k = 0; k < 3; ++k)
+      {
+        const int64_t v = mesh.connectivity[first + k];
+        if (v < 0 || v >= nv)
+        {
+          return;
+        }
+        point(v, q[k]);
+        for (int c = 0; c < 3; ++c)
+        {
+          lo[c] = std::min(lo[c], q[k][c]);
+          hi[c] = std::max(hi[c], q[k][c]);
+        }
+      }
+      const double e1[3] = { q[1][0] - q[0][0], q[1][1] - q[0][1], q[1][2] - q[0][2] };
+      const double e2[3] = { q[2][0] - q[0][0], q[2][1] - q[0][1], q[2][2] - q[0][2] };
+      double* n = normals[p - begin];
+      n[0] = e1[1] * e2[2] - e1[2] * e2[1];
+      n[1] = e1[2] * e2[0] - e1[0] * e2[2];
+      n[2] = e1[0] * e2[1] - e1[1] * e2[0];
+      const double length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+      if (!(length > 0.0) || !std::isfinite(length))
+      {
+        return; // no normal: no facing to vouch for
+      }
+      for (int c = 0; c < 3; ++c)
+      {
+        n[c] /= length;
+        sum[c] += n[c];
+      }
+    }
+    const double length = std::sqrt(sum[0] * sum[0] + sum[1] * sum[1] + sum[2] * sum[2]);
+    if (!(length > 0.0) || !std::isfinite(length))
+    {
+      return;
+    }
+    double cosSpread = 1.0;
+    for (int c = 0; c < 3; ++c)
+    {
+      cone.axis[c] = sum[c] / length;
+      cone.centre[c] = 0.5 * (lo[c] + hi[c]);
+    }
+    for (int64_t p = begin; p < end; ++p)
+    {
+      const double* n = normals[p - begin];
+      cosSpread = std::min(cosSpread,
+        n[0] * cone.axis[0] + n[1] * cone.axis[1] + n[2] * cone.axis[2]);
+      for (int k = 0; k < 3; ++k)
+      {
+        double q[3];
+        point(mesh.connectivity[mesh.offsets[p] + k], q);
+        const double dx = q[0] - cone.centre[0], dy = q[1] - cone.centre[1],
+                     dz = q[2] - cone.centre[2];
+        cone.radius = std::max(cone.radius, std::sqrt(dx * dx + dy * dy + dz * dz));
+      }
+    }
+    if (!(cosSpread > 0.0))
+    {
+      return; // normals over a half-space: the run never faces away whole
+    }
+    cone.cosSpread = cosSpread;
+    cone.sinSpread = std::sqrt(std::max(0.0, 1.0 - cosSpread * cosSpread));
+    cone.usable = std::isfinite(cone.radius);
+  };
+  const int tasks = static_cast<int>(std::min<int64_t>(runs, 64));
+  auto task = [&](int t)
+  {
+    for (int64_t r = runs * t / tasks; r < runs * (t + 1) / tasks; ++r)
+    {
+      build(r);
+    }
+  };
+  if (run && tasks > 1)
+  {
+    run(tasks, task);
+  }
+  else
+  {
+    for (int t = 0; t < tasks; ++t)
+    {
+      task(t);
+    }
+  }
+  return cones;
+}
+
+bool ClusterFacesAway(const ClusterCone& cone, const ClusterEye& eye)
+{
+  if (!cone.usable)
+  {
+    return false;
+  }
+  // cos(phi + theta) = cos phi cos theta - sin phi sin theta: the least
+  // cosine between a normal of the cone and the direction to the centre.
+  auto leastCos = [&](double cosPhi)
+  {
+    cosPhi = std::clamp(cosPhi, -1.0, 1.0);
+    return cosPhi * cone.cosSpread - std::sqrt(1.0 - cosPhi * cosPhi) * cone.sinSpread;
+  };
+  if (eye.parallel)
+  {
+    const double cosPhi = cone.axis[0] * eye.forward[0] + cone.axis[1] * eye.forward[1] +
+      cone.axis[2] * eye.forward[2];
+    return leastCos(cosPhi) > kClusterFacingMargin;
+  }
+  const double d[3] = { cone.centre[0] - eye.position[0], cone.centre[1] - eye.position[1],
+    cone.centre[2] - eye.position[2] };
+  const double distance = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+  if (!(distance > cone.radius))
+  {
+    return false; // the eye inside the run's sphere
+  }
+  const double cosPhi = (cone.axis[0] * d[0] + cone.axis[1] * d[1] + cone.axis[2] * d[2]) / distance;
+  // n . (p - e) > margin |p - e| for every point p, as |p - e| <= distance + radius.
+  return distance * leastCos(cosPhi) - cone.radius >
+    kClusterFacingMargin * (distance + cone.radius);
+}
+
+const std::vector<ClusterCone>* ClusterConeCache::ConesOf(
+  const render::Mesh& mesh, uint64_t fingerprint, const render::Mesh::TaskRunner& run)
+{
+  if (this->Fingerprint != fingerprint)
+  {
+    if (this->Seen != fingerprint) // not on the mesh's second frame
+    {
+      this->Seen = fingerprint;
+      return nullptr;
+    }
+    this->Cones = ClusterConesOf(mesh, run);
+    this->Fingerprint = fingerprint;
+  }
+  return &this->Cones;
 }
 
 bool ClosedMeshCache::IsClosedOutward(const render::Mesh& mesh, uint64_t fingerprint, bool mayTest)

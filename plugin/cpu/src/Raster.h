@@ -209,6 +209,7 @@ struct alignas(kCacheLine) ThreadState
   int64_t clippedPolygons = 0, degenerate = 0, rasterized = 0, shaded = 0, fastPhongExact = 0;
   int64_t binned = 0; ///< polygon-band pairs binned (RenderStats::binned)
   int64_t culled = 0; ///< back faces culled (by the binning worker or the owner)
+  int64_t culledInClusters = 0; ///< polygons of runs binning skipped whole (Frame::Cones)
   int64_t triangles = 0; ///< triangles of the polygons this thread binned (n - 2 each)
   int64_t covered = 0; ///< covered pixels in this thread's bands (full resolution)
   /// The depth of the band being drawn (kBandRows rows), whose first pixel

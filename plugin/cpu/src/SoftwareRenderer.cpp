@@ -191,6 +191,7 @@ private:
   Frame FrameState;
   RasterBuffers Buffers;
   ClosedMeshCache Closed;
+  ClusterConeCache Cones;
   std::vector<float> ComputedNormals; ///< area-weighted, for a mesh without normals
   std::optional<uint64_t> NormalsFor;  ///< the content hash they were made for
 
@@ -291,6 +292,23 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh,
     this->Closed.IsClosedOutward(mesh, contentHash(),
       imagePixels >= kCullTestMinPixelsPerPolygon * static_cast<double>(polygons));
   F.CullBack = F.Opt.cullBackFaces || hiddenBackFaces;
+  F.Cones = nullptr;
+  if (F.CullBack && !F.Opt.countCoverage && polygons >= kClusterPolygons)
+  {
+    const auto* cones =
+      this->Cones.ConesOf(mesh, contentHash(), SpreadOver(this->Buffers.Pool, F.Threads));
+    if (cones && !cones->empty())
+    {
+      F.Cones = cones->data();
+      const render::CameraBasis basis = render::BasisOf(F.Cam);
+      for (int c = 0; c < 3; ++c)
+      {
+        F.ConeEye.position[c] = F.Cam.position[c];
+        F.ConeEye.forward[c] = basis.forward[c];
+      }
+      F.ConeEye.parallel = F.Cam.parallel;
+    }
+  }
   // Pixels per triangle: the projected box over the triangles (about half
   // of a closed mesh's triangles face the viewer and cover about half the
   // box: the halves cancel); 0 (exact Phong) when the box crosses the near plane.
@@ -448,6 +466,7 @@ void SoftwareRenderer::Internals::FillStats(
     stats.pixelsShaded += st.shaded;
     stats.fastPhongExact += st.fastPhongExact;
     stats.culled += st.culled;
+    stats.culledInClusters += st.culledInClusters;
   }
   stats.hiddenBackFacesCulled = facts.hiddenBackFaces;
   stats.fastPhongAsPhong = facts.fastPhongAsPhong;

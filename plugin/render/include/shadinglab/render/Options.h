@@ -249,6 +249,10 @@ struct RenderStats
   /// far plane, culled back faces, or between pixel centres (CPU).
   int64_t skipped = 0;
   int64_t culled = 0;         ///< back faces culled before set-up (of `skipped`; CPU)
+  /// Back faces culled in whole runs before binning read them, found facing
+  /// away by their cone of normals (of `skipped`, not in `culled`; from a
+  /// mesh's second frame with back faces culled; CPU).
+  int64_t culledInClusters = 0;
   /// Back faces were culled because none can be seen (closed outward mesh,
   /// camera outside; CPU), without --cull.
   bool hiddenBackFacesCulled = false;

@@ -650,6 +650,7 @@ void BM_CpuParaViewSphere(benchmark::State& state)
   opt.mode = static_cast<render::ShadingMode>(mode);
   opt.threads = 2;
   opt.keepDepth = true; // as the CPU backend asks, for the hand-over
+  opt.displayBytes = true;
   sl::Material<double> material;
   material.model = static_cast<sl::ReflectanceModel>(model);
   render::Scene s{ &mesh, camera, Headlight(camera), material };

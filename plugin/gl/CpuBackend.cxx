@@ -25,7 +25,6 @@
 #include <cmath>
 #include <iterator>
 #include <stdexcept>
-#include <thread>
 #include <vector>
 
 namespace shadinglab::gl
@@ -38,11 +37,6 @@ namespace
 /// default table has 256, and its transfer functions are smooth at that
 /// resolution (the GL path's colour texture has 256 texels too).
 constexpr int kLookupSamples = 256;
-
-/// Fewest image rows a hand-over thread converts: 64 rows of a 1080p-wide
-/// rectangle take ~0.3 ms, several times what starting a thread costs
-/// (~0.05 ms), so a thread is only started where it pays.
-constexpr int kMinHandOverRows = 64;
 
 } // namespace
 
@@ -160,6 +154,7 @@ std::string CpuBackend::Draw(
   {
     try
     {
+      options.displayBytes = true; // what the hand-over uploads
       image = &this->Renderer.Render(scene, options, &this->Stats);
     }
     catch (const std::exception& e)
@@ -192,14 +187,32 @@ std::string CpuBackend::Draw(
     }
   }
 
-  // The hand-over: colour (display values, alpha = covered) and depth of
+  // The hand-over: colour (display bytes, alpha = covered) and depth of
   // the rectangle the surface covers (most of a view is background),
-  // bottom row first as OpenGL stores textures.
+  // uploaded from the frame's own rows (the renderer wrote the bytes band by
+  // band, RenderOptions::displayBytes; the polarization image, already
+  // display values, is rounded here).
   if (this->FinishForTiming)
   {
     window->WaitForCompletion(); // glFinish
   }
   const auto start = std::chrono::steady_clock::now();
+  const uint8_t* bytes = image->displayBytes.data();
+  if (image->displayBytes.empty())
+  {
+    const size_t pixels = static_cast<size_t>(width) * height;
+    this->Rgba.resize(4 * pixels);
+    for (size_t i = 0; i < pixels; ++i)
+    {
+      const Vec3<float> c = render::ApplyDisplay(render::DisplayTransform::Clamp,
+        Vec3<float>(image->rgb[3 * i], image->rgb[3 * i + 1], image->rgb[3 * i + 2]));
+      this->Rgba[4 * i] = render::ToByte(c.x);
+      this->Rgba[4 * i + 1] = render::ToByte(c.y);
+      this->Rgba[4 * i + 2] = render::ToByte(c.z);
+      this->Rgba[4 * i + 3] = image->covered[i] ? 255 : 0;
+    }
+    bytes = this->Rgba.data();
+  }
   int i0 = width, i1 = -1, j0 = height, j1 = -1;
   for (int j = 0; j < height; ++j)
   {
@@ -222,59 +235,19 @@ std::string CpuBackend::Draw(
     return ""; // nothing of the surface in view
   }
   const int w = i1 - i0 + 1, h = j1 - j0 + 1;
-  const size_t pixels = static_cast<size_t>(w) * h;
-  this->Rgba.resize(4 * pixels);
-  this->Depth.resize(pixels);
-  const bool applied = image->displayApplied;
-  const render::DisplayTransform display =
-    applied ? render::DisplayTransform::Clamp : options.display;
-  auto convertRows = [&](int rowBegin, int rowEnd) {
-    for (int r = rowBegin; r < rowEnd; ++r)
-    {
-      // Texture row r is image row j1 - r (the image's row 0 is the top).
-      const size_t src = static_cast<size_t>(j1 - r) * width + i0;
-      const size_t dst = static_cast<size_t>(r) * w;
-      for (int i = 0; i < w; ++i)
-      {
-        const size_t s = src + i, d = dst + i;
-        if (!image->covered[s])
-        {
-          this->Rgba[4 * d + 3] = 0;
-          this->Depth[d] = 1.0f;
-          continue;
-        }
-        // As Image::ToRGB8: the display transform, then rounding to 8 bits.
-        Vec3<float> c(image->rgb[3 * s], image->rgb[3 * s + 1], image->rgb[3 * s + 2]);
-        c = render::ApplyDisplay(display, c);
-        this->Rgba[4 * d] = render::ToByte(c.x);
-        this->Rgba[4 * d + 1] = render::ToByte(c.y);
-        this->Rgba[4 * d + 2] = render::ToByte(c.z);
-        this->Rgba[4 * d + 3] = 255;
-        this->Depth[d] = image->depth[s];
-      }
-    }
-  };
-  // The conversion is most of the hand-over (a million pixels of display
-  // transform and rounding): the rows are shared among the renderer's
-  // thread count, each thread at least kMinHandOverRows of them.
-  const int hardware = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  const int threads = std::max(1,
-    std::min(options.threads > 0 ? options.threads : hardware, h / kMinHandOverRows));
-  std::vector<std::thread> helpers;
-  for (int t = 1; t < threads; ++t)
-  {
-    helpers.emplace_back(convertRows, static_cast<int>(static_cast<int64_t>(h) * t / threads),
-      static_cast<int>(static_cast<int64_t>(h) * (t + 1) / threads));
-  }
-  convertRows(0, h / threads);
-  for (std::thread& helper : helpers)
-  {
-    helper.join();
-  }
+  // Texture row r is image row j0 + r (the image's row 0 is the top; the
+  // quad's shader turns it over), read from the frame with its row length.
+  const size_t corner = static_cast<size_t>(j0) * width + i0;
+  window->GetState()->vtkglPixelStorei(GL_UNPACK_ROW_LENGTH, width);
   this->ColorTexture->SetContext(window);
   this->DepthTexture->SetContext(window);
-  if (!this->ColorTexture->Create2DFromRaw(w, h, 4, VTK_UNSIGNED_CHAR, this->Rgba.data()) ||
-    !this->DepthTexture->Create2DFromRaw(w, h, 1, VTK_FLOAT, this->Depth.data()))
+  const bool uploaded =
+    this->ColorTexture->Create2DFromRaw(w, h, 4, VTK_UNSIGNED_CHAR,
+      const_cast<uint8_t*>(bytes + 4 * corner)) &&
+    this->DepthTexture->Create2DFromRaw(w, h, 1, VTK_FLOAT,
+      const_cast<float*>(image->depth.data() + corner));
+  window->GetState()->vtkglPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+  if (!uploaded)
   {
     return "could not upload the image as textures";
   }

@@ -77,8 +77,8 @@ private:
   render::Image Polarization;
   double HandOverMs = 0;
   bool FinishForTiming = false;
+  /// The polarization image's display bytes (Image::displayBytes' layout).
   std::vector<unsigned char> Rgba;
-  std::vector<float> Depth;
   std::unique_ptr<vtkOpenGLQuadHelper> Quad;
   vtkNew<vtkTextureObject> ColorTexture;
   vtkNew<vtkTextureObject> DepthTexture;

@@ -6,6 +6,7 @@
 #include "RenderTestUtil.h"
 #include "vtkSoftwareShadingRenderer.h"
 #include "shadinglab/cpu/SoftwareRenderer.h"
+#include "shadinglab/render/Display.h"
 
 #include <vtkCellArray.h>
 #include <vtkImageData.h>
@@ -264,6 +265,64 @@ TEST(CpuRendererTest, OneRendererOverManyFramesDrawsWhatFreshOnesDo)
     EXPECT_EQ(again.coverage, fresh.coverage);
     EXPECT_EQ(again.coverage.empty(), !f.coverage);
   }
+}
+
+TEST(CpuRendererTest, DisplayBytesAreTheImagesBytesWhereCovered)
+{
+  // RenderOptions::displayBytes (the VTK mapper's CPU hand-over): each band
+  // converted as it is finished gives, on covered pixels, the bytes
+  // Image::ToRGB8 gives of the whole frame, alpha 255 there and 0 elsewhere;
+  // frames with and without them alternate in one renderer, for every mode
+  // and display transform, with thread counts that split the bands
+  // differently.
+  const render::Mesh torus = MeshOf(sl::datasets::MakeTorus(1.0, 0.4, 48, 24), true);
+  const auto cam = CameraLookingAt(Vec3d(0.5, 2.0, 3.0), Vec3d(0, 0, 0), 35);
+  sl::cpu::SoftwareRenderer kept;
+  int checked = 0;
+  for (auto mode : { render::ShadingMode::Flat, render::ShadingMode::Gouraud,
+         render::ShadingMode::Phong, render::ShadingMode::FastPhong })
+  {
+    for (auto display : { render::DisplayTransform::Clamp, render::DisplayTransform::Neutral,
+           render::DisplayTransform::SRGB })
+    {
+      for (int threads : { 1, 3 })
+      {
+        render::RenderOptions opt;
+        opt.width = 97;
+        opt.height = 61;
+        opt.mode = mode;
+        opt.display = display;
+        opt.threads = threads;
+        opt.keepDepth = true;
+        const render::Image plain =
+          test::RenderWith(kept, torus, cam, OneLight(Vec3f(0, 0, 1)), BlinnPhong(), opt);
+        EXPECT_TRUE(plain.displayBytes.empty());
+        opt.displayBytes = true;
+        const render::Image bytes =
+          test::RenderWith(kept, torus, cam, OneLight(Vec3f(0, 0, 1)), BlinnPhong(), opt);
+        const std::vector<uint8_t> rgb8 = plain.ToRGB8(display);
+        ASSERT_EQ(bytes.displayBytes.size(), 4 * plain.covered.size());
+        EXPECT_EQ(bytes.covered, plain.covered);
+        EXPECT_EQ(bytes.depth, plain.depth);
+        int differing = 0, covered = 0;
+        for (size_t i = 0; i < plain.covered.size(); ++i)
+        {
+          const uint8_t* b = &bytes.displayBytes[4 * i];
+          differing += b[3] != (plain.covered[i] ? 255 : 0);
+          if (plain.covered[i])
+          {
+            ++covered;
+            differing += b[0] != rgb8[3 * i] || b[1] != rgb8[3 * i + 1] || b[2] != rgb8[3 * i + 2];
+          }
+        }
+        EXPECT_GT(covered, 1000);
+        EXPECT_EQ(differing, 0) << render::ShadingModeName(mode) << " "
+                                << render::DisplayTransformName(display) << " threads " << threads;
+        ++checked;
+      }
+    }
+  }
+  EXPECT_EQ(checked, 24);
 }
 
 TEST(CpuRendererTest, TessellatedPlaneHasNoCracksOrOverlaps)

@@ -55,6 +55,7 @@ struct Frame
   uint8_t* Covered = nullptr;
   uint16_t* Coverage = nullptr;
   float* Depth = nullptr; ///< the frame's depth (RenderOptions::keepDepth), or nullptr
+  uint8_t* DisplayBytes = nullptr; ///< RGBA8 (RenderOptions::displayBytes), or nullptr
 
   Vec3f NormalOf(int64_t v) const
   {

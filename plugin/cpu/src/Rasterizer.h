@@ -15,6 +15,7 @@
 #pragma once
 
 #include "Frame.h"
+#include "shadinglab/render/Display.h"
 #include "WorkerPool.h"
 
 #include <atomic>
@@ -288,11 +289,14 @@ private:
     {
       const size_t first = static_cast<size_t>(b) * kBandRows * F.Width;
       const size_t last = static_cast<size_t>(std::min(F.Height, (b + 1) * kBandRows)) * F.Width;
-      for (size_t i = first; i < last; ++i)
+      if (!F.DisplayBytes) // (with them, an uncovered pixel's colour is not read)
       {
-        F.Rgb[3 * i] = bg.x;
-        F.Rgb[3 * i + 1] = bg.y;
-        F.Rgb[3 * i + 2] = bg.z;
+        for (size_t i = first; i < last; ++i)
+        {
+          F.Rgb[3 * i] = bg.x;
+          F.Rgb[3 * i + 1] = bg.y;
+          F.Rgb[3 * i + 2] = bg.z;
+        }
       }
       state.bandFirst = first;
       std::fill(state.bandDepth, state.bandDepth + (last - first),
@@ -307,11 +311,41 @@ private:
       {
         std::copy(state.bandDepth, state.bandDepth + (last - first), F.Depth + first);
       }
-      // The band's covered pixels, counted while it is in cache, for the stats.
-      for (size_t i = first; i < last; ++i)
+      // The band's covered pixels, counted while it is in cache, for the
+      // stats, and converted to display bytes (RenderOptions::displayBytes).
+      if (F.DisplayBytes)
       {
-        state.covered += F.Covered[i];
+        this->DisplayBand(first, last, state);
       }
+      else
+      {
+        for (size_t i = first; i < last; ++i)
+        {
+          state.covered += F.Covered[i];
+        }
+      }
+    }
+  }
+
+  /// RenderOptions::displayBytes for pixels [first, last): as
+  /// Image::ToRGB8, the display transform, then rounding to 8 bits.
+  void DisplayBand(size_t first, size_t last, ThreadState& state) const
+  {
+    const render::DisplayTransform display = F.Opt.display;
+    for (size_t i = first; i < last; ++i)
+    {
+      uint8_t* out = F.DisplayBytes + 4 * i;
+      if (!F.Covered[i])
+      {
+        out[3] = 0;
+        continue;
+      }
+      ++state.covered;
+      const Vec3f c = render::ApplyDisplay(display, Vec3f(F.Rgb[3 * i], F.Rgb[3 * i + 1], F.Rgb[3 * i + 2]));
+      out[0] = render::ToByte(c.x);
+      out[1] = render::ToByte(c.y);
+      out[2] = render::ToByte(c.z);
+      out[3] = 255;
     }
   }
 

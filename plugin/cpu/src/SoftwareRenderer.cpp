@@ -212,6 +212,7 @@ private:
   std::vector<uint8_t> Covered;
   std::vector<uint16_t> Coverage;
   std::vector<float> Depth;
+  std::vector<uint8_t> DisplayBytes;
   Image Output;
 };
 
@@ -362,10 +363,17 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh,
     this->Depth.swap(image.depth); // the last frame's buffer, as Rgb's
     this->Depth.resize(pixels);
   }
+  const bool displayBytes = F.Opt.displayBytes && ssaa == 1;
+  if (displayBytes)
+  {
+    this->DisplayBytes.swap(image.displayBytes); // the last frame's buffer, as Rgb's
+    this->DisplayBytes.resize(4 * pixels);
+  }
   F.Rgb = this->Rgb.data();
   F.Covered = this->Covered.data();
   F.Coverage = this->Coverage.data();
   F.Depth = F.Opt.keepDepth ? this->Depth.data() : nullptr;
+  F.DisplayBytes = displayBytes ? this->DisplayBytes.data() : nullptr;
 
   render::ScanTrace trace;
   trace.row = F.Opt.traceRow;
@@ -442,12 +450,21 @@ void SoftwareRenderer::Internals::ResolveImage()
     {
       image.depth.clear();
     }
+    if (F.DisplayBytes)
+    {
+      image.displayBytes.swap(this->DisplayBytes);
+    }
+    else
+    {
+      image.displayBytes.clear();
+    }
   }
   else
   {
     render::DownsampleBox(this->Rgb, this->Covered, F.Width, F.Height, F.Opt.ssaa, image);
     image.coverage.clear();
     image.depth.clear();
+    image.displayBytes.clear();
   }
 }
 

@@ -10,12 +10,14 @@ uniform sampler2D slCpuDepth; // R32F: normalized device depth z/w in [-1, 1]
 //VTK::Output::Dec
 void main()
 {
-  vec4 color = texture(slCpuColor, texCoord);
+  // The textures' first row is the rectangle's top row (the image's order).
+  vec2 at = vec2(texCoord.x, 1.0 - texCoord.y);
+  vec4 color = texture(slCpuColor, at);
   if (color.a < 0.5)
   {
     discard;
   }
   gl_FragData[0] = vec4(color.rgb, 1.0);
   // Window depth with glDepthRange(0, 1), as VTK keeps it.
-  gl_FragDepth = 0.5 * texture(slCpuDepth, texCoord).r + 0.5;
+  gl_FragDepth = 0.5 * texture(slCpuDepth, at).r + 0.5;
 }

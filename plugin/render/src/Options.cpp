@@ -115,6 +115,10 @@ std::string ValidateOptions(const RenderOptions& options)
   {
     return "depth output needs supersampling 1 (a pixel's samples have several depths)";
   }
+  if (options.displayBytes && options.ssaa != 1)
+  {
+    return "display bytes need supersampling 1 (they are written band by band)";
+  }
   if (!IsFinite(options.background))
   {
     return "background colour is not finite";

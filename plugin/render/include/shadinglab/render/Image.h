@@ -31,6 +31,10 @@ struct Image
   /// (OpenGL's convention; +inf where nothing was drawn), when
   /// RenderOptions::keepDepth asked for it (CPU, no supersampling).
   std::vector<float> depth;
+  /// Per pixel RGBA8, when RenderOptions::displayBytes asked for them: the
+  /// display values of covered pixels, alpha 255 there and 0 elsewhere
+  /// (where `rgb` is then not written either).
+  std::vector<uint8_t> displayBytes;
 
   /// `rgb` holds display values already, of `appliedDisplay`.
   bool displayApplied = false;

@@ -204,6 +204,13 @@ struct RenderOptions
   /// the image into a depth-tested framebuffer (the VTK mapper's CPU
   /// backend). CPU only, without supersampling.
   bool keepDepth = false;
+  /// Also write Image::displayBytes (RGBA8: `display` applied and rounded
+  /// as Image::ToRGB8 does, alpha 255 where covered and 0 elsewhere), each
+  /// band converted as it is finished, while it is in the core's cache; and
+  /// leave the linear colour of uncovered pixels unwritten (no background
+  /// fill, ~25 MB a 1080p frame). What the VTK mapper's CPU backend hands
+  /// to OpenGL. CPU only, without supersampling.
+  bool displayBytes = false;
 };
 
 /// One span of a traced row: its ends (the edge crossings x_4, x_5 of

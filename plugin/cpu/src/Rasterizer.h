@@ -14,6 +14,7 @@
 // thread count.
 #pragma once
 
+#include "BinFour.h"
 #include "Frame.h"
 #include "shadinglab/render/Display.h"
 #include "WorkerPool.h"
@@ -37,13 +38,6 @@ using raster::kAttrZ;
 using raster::ScreenVertex;
 using raster::ThreadState;
 using raster::TwiceSignedArea;
-
-/// A vertex's screen position, depth and attribute scale (ScreenVertex's
-/// x, y, a[kAttrZ], a[kAttrInvW]): all that binning reads of a vertex.
-struct ProjectedVertex
-{
-  float x, y, z, invW;
-};
 
 /// Buffers the rasterizer keeps across frames (no reallocation at a steady size).
 struct RasterBuffers
@@ -435,26 +429,81 @@ private:
     return degenerate;
   }
 
-  /// Bins polygons [begin, end) one by one.
+  /// Bins polygons [begin, end): four triangles at a time where they are
+  /// (BinFour.h), the others one by one.
   int64_t BinRun(int64_t begin, int64_t end, std::vector<int64_t>* lists, ThreadState& state)
   {
-    const auto& offsets = F.MeshData->offsets;
     int64_t degenerate = 0;
-    for (int64_t p = begin; p < end; ++p)
+    int64_t p = begin;
+#if defined(__SSE2__)
+    const auto& offsets = F.MeshData->offsets;
+    const auto& conn = F.MeshData->connectivity;
+    for (; p + 4 <= end; p += 4)
     {
       const int64_t first = offsets[p];
-      const int64_t size = offsets[p + 1] - first;
-      state.triangles += render::TrianglesInPolygon(size); // for the stats
-      const int n = static_cast<int>(std::min<int64_t>(size, kMaxPolygonVertices - 1));
-      if (n < 3)
+      bool triangles = true;
+      for (int t = 1; t <= 4; ++t)
       {
+        triangles &= offsets[p + t] == first + 3 * t;
+      }
+      int64_t ids[4][3];
+      const ProjectedVertex* v[3][4];
+      bool anyBehind = false;
+      for (int t = 0; t < 4 && triangles; ++t)
+      {
+        for (int k = 0; k < 3; ++k)
+        {
+          const int64_t id = conn[first + 3 * t + k];
+          ids[t][k] = id;
+          v[k][t] = &this->Projected[id];
+          anyBehind |= this->Behind[id] != 0;
+        }
+      }
+      if (!triangles || anyBehind)
+      {
+        // A polygon of another size, or a vertex behind the near plane
+        // (whose projection is not computed): one by one.
+        for (int t = 0; t < 4; ++t)
+        {
+          degenerate += this->BinOne(p + t, lists, state);
+        }
         continue;
       }
-      // Triangles, most meshes' polygons, with their loops unrolled.
-      degenerate += n == 3 ? this->BinPolygon<3>(p, first, n, lists, state)
-                           : this->BinPolygon<0>(p, first, n, lists, state);
+      const FourTriangleTests tests = TestFourTriangles(v, F.Width, F.Height, this->ColumnTest);
+      state.triangles += 4;
+      for (int t = 0; t < 4; ++t)
+      {
+        const Facing facing = (tests.degenerate >> t & 1) ? Facing::Degenerate
+          : (tests.back >> t & 1)                           ? Facing::Back
+                                                            : Facing::Front;
+        degenerate += this->BinTested(p + t, ids[t], 3, tests.j0[t], tests.j1[t],
+          (tests.hasRow >> t & 1) != 0, (tests.rejected >> t & 1) != 0,
+          (tests.noColumn >> t & 1) != 0, facing, lists, state);
+      }
+    }
+#endif
+    for (; p < end; ++p)
+    {
+      degenerate += this->BinOne(p, lists, state);
     }
     return degenerate;
+  }
+
+  /// Bins polygon p alone.
+  int64_t BinOne(int64_t p, std::vector<int64_t>* lists, ThreadState& state)
+  {
+    const auto& offsets = F.MeshData->offsets;
+    const int64_t first = offsets[p];
+    const int64_t size = offsets[p + 1] - first;
+    state.triangles += render::TrianglesInPolygon(size); // for the stats
+    const int n = static_cast<int>(std::min<int64_t>(size, kMaxPolygonVertices - 1));
+    if (n < 3)
+    {
+      return 0;
+    }
+    // Triangles, most meshes' polygons, with their loops unrolled.
+    return n == 3 ? this->BinPolygon<3>(p, first, n, lists, state)
+                  : this->BinPolygon<0>(p, first, n, lists, state);
   }
 
   /// Bins polygon p (its n vertices from connectivity[first]; N = n known
@@ -510,47 +559,15 @@ private:
     // floats, would drop it without counting it); and between pixel
     // columns, no centre i + 0.5 in [xmin, xmax), as between rows (most
     // triangles of a mesh finer than the pixels: ParaView's 1M sphere at
-    // 1080p). A polygon that cannot is not binned and its vertices need no
-    // shading.
+    // 1080p). (BinFour.h tests four triangles at once the same way.)
     const int j0 = std::max(0, CeilToInt(ymin - 0.5f));
     const int j1 = std::min(F.Height, CeilToInt(ymax - 0.5f));
     const bool hasRow = j1 > j0;
     const bool rejected = (xmax < 0) | (xmin > F.Width) | (zmin > 1.0f);
     const bool noColumn = this->ColumnTest &
-      (CeilToInt(xmax - 0.5f + kColumnMargin) <= CeilToInt(xmin - 0.5f - kColumnMargin));
-    const bool reaches = hasRow & !rejected & !noColumn;
-    // The polygon's facing, once, tested first: back faces come in runs
-    // (a mesh's neighbours are near in index order), so the culling branch
-    // is predicted, while whether a polygon of a pixel or less reaches a
-    // pixel centre is a coin toss (tested first, it cost every back face a
-    // misprediction). The counts are DrawSourcePolygon's: a degenerate
-    // polygon counts unless it was rejected in x or depth, a culled back face
-    // only where it reaches a pixel; the facing of the others goes in the entry.
-    const Facing facing = FacingOf(TwiceSignedArea(sv, count));
-    if (facing == Facing::Degenerate)
-    {
-      return !(hasRow & rejected);
-    }
-    if (facing == Facing::Back && F.CullBack)
-    {
-      state.culled += reaches;
-      return 0;
-    }
-    if (!reaches)
-    {
-      return 0;
-    }
-    for (int k = 0; k < count; ++k)
-    {
-      this->Buffers.Needed[ids[k]].store(1, std::memory_order_relaxed);
-    }
-    const int64_t flags = facing == Facing::Back ? kEntryBack : 0;
-    for (int b = j0 / kBandRows; b <= (j1 - 1) / kBandRows; ++b)
-    {
-      lists[b].push_back(BinEntry(p, flags | (b == j0 / kBandRows ? kEntryOwner : 0)));
-      ++state.binned;
-    }
-    return 0;
+      (CeilToInt(xmax - 0.5f + kBinColumnMargin) <= CeilToInt(xmin - 0.5f - kBinColumnMargin));
+    return this->BinTested(p, ids, count, j0, j1, hasRow, rejected, noColumn,
+      FacingOf(TwiceSignedArea(sv, count)), lists, state);
   }
 
   /// Rows [rowBegin, rowEnd) that polygon `first`'s part in front of the
@@ -606,6 +623,46 @@ private:
       return Facing::Degenerate;
     }
     return area > 0 ? Facing::Back : Facing::Front;
+  }
+
+  /// The rest of BinPolygon, once the tests are known. A polygon that
+  /// cannot reach a pixel is not binned and its vertices need no shading.
+  /// The facing is tested first: back faces come in runs (a mesh's
+  /// neighbours are near in index order), so the culling branch is
+  /// predicted, while whether a polygon of a pixel or less reaches a pixel
+  /// centre is a coin toss (tested first, it cost every back face a
+  /// misprediction). The counts are DrawSourcePolygon's: a degenerate
+  /// polygon counts unless it was rejected in x or depth, a culled back
+  /// face only where it reaches a pixel; the facing of the others goes in
+  /// the entry. Returns 1 for a counted degenerate polygon.
+  int64_t BinTested(int64_t p, const int64_t* ids, int count, int j0, int j1, bool hasRow,
+    bool rejected, bool noColumn, Facing facing, std::vector<int64_t>* lists, ThreadState& state)
+  {
+    const bool reaches = hasRow & !rejected & !noColumn;
+    if (facing == Facing::Degenerate)
+    {
+      return !(hasRow & rejected);
+    }
+    if (facing == Facing::Back && F.CullBack)
+    {
+      state.culled += reaches;
+      return 0;
+    }
+    if (!reaches)
+    {
+      return 0;
+    }
+    for (int k = 0; k < count; ++k)
+    {
+      this->Buffers.Needed[ids[k]].store(1, std::memory_order_relaxed);
+    }
+    const int64_t flags = facing == Facing::Back ? kEntryBack : 0;
+    for (int b = j0 / kBandRows; b <= (j1 - 1) / kBandRows; ++b)
+    {
+      lists[b].push_back(BinEntry(p, flags | (b == j0 / kBandRows ? kEntryOwner : 0)));
+      ++state.binned;
+    }
+    return 0;
   }
 
   /// Draws the pixels of a bin entry's polygon in one band.
@@ -822,15 +879,6 @@ private:
   /// a pixel centre could then land a row apart; one row covers that, and
   /// a band too many only costs a set-up that finds no row.
   static constexpr int kClipRowMargin = 1;
-  /// Pixels added on each side of a polygon's x range by the column test
-  /// of binning: the plane scan computes each row's crossings in float from
-  /// an edge's endpoints, which can land a few ulps outside the vertices'
-  /// range (an ulp is 0.008 px at 65,536 px, the widest supersampled
-  /// frame); 1/16 px is well above that, and a polygon kept by the margin
-  /// only costs a set-up that finds no pixel. (The lecture's incremental
-  /// scan carries its crossings from row to row, its error growing with
-  /// the rows: no column test there.)
-  static constexpr float kColumnMargin = 1.0f / 16.0f;
   /// Binning's pieces: about this many per thread, so a thread that drew
   /// the cheap ones takes more, and of at least kMinPolygonChunk polygons
   /// (~50-100 us of binning), so that a band's lists stay few: a band

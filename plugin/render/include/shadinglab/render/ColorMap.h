@@ -29,8 +29,10 @@ struct ColorMap
   /// The bin of `s` (vtkLookupTable's indexing: floor((s - min) / (max -
   /// min) * bins), clamped), or the NaN colour. A range of zero width maps
   /// everything to the first bin.
-  /// Inline: the CPU renderer maps every pixel's interpolated scalar.
-  Vec3<float> Map(double s) const
+  /// Always inlined: the CPU renderer maps every pixel's interpolated
+  /// scalar, and GCC made it a call per pixel once the rasterizer grew
+  /// (~5% of a Phong frame of ParaView's 1M sphere by Elevation).
+  [[gnu::always_inline]] Vec3<float> Map(double s) const
   {
     if (std::isnan(s) || this->colors.empty())
     {

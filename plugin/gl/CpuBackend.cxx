@@ -202,15 +202,8 @@ std::string CpuBackend::Draw(
   {
     const size_t pixels = static_cast<size_t>(width) * height;
     this->Rgba.resize(4 * pixels);
-    for (size_t i = 0; i < pixels; ++i)
-    {
-      const Vec3<float> c = render::ApplyDisplay(render::DisplayTransform::Clamp,
-        Vec3<float>(image->rgb[3 * i], image->rgb[3 * i + 1], image->rgb[3 * i + 2]));
-      this->Rgba[4 * i] = render::ToByte(c.x);
-      this->Rgba[4 * i + 1] = render::ToByte(c.y);
-      this->Rgba[4 * i + 2] = render::ToByte(c.z);
-      this->Rgba[4 * i + 3] = image->covered[i] ? 255 : 0;
-    }
+    render::ToDisplayBytes(render::DisplayTransform::Clamp, image->rgb.data(), image->covered.data(), 0,
+      pixels, this->Rgba.data());
     bytes = this->Rgba.data();
   }
   int i0 = width, i1 = -1, j0 = height, j1 = -1;

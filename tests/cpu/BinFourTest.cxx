@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Binning's four-at-once tests (plugin/cpu/src/BinFour.h) against the
-// scalar tests they stand for (Rasterizer::BinPolygon): every lane must
+// scalar tests they stand for (TestPolygon, Rasterizer::BinPolygon's): every lane must
 // give the scalar rows, reject, column test and facing bit for bit, on
 // triangles made to sit on the rules' edges: vertices on pixel centres and
 // half-integers, sub-pixel and zero-area triangles, areas around
@@ -19,38 +19,6 @@ namespace raster = shadinglab::cpu::raster;
 
 namespace
 {
-
-struct Scalar
-{
-  int j0, j1;
-  bool hasRow, rejected, noColumn, degenerate, back;
-};
-
-/// BinPolygon's tests, written out as it computes them.
-Scalar ScalarTests(const cpu::ProjectedVertex* const* sv, int width, int height)
-{
-  float ymin = std::numeric_limits<float>::infinity(), ymax = -ymin;
-  float xmin = ymin, xmax = -ymin, zmin = ymin;
-  for (int k = 0; k < 3; ++k)
-  {
-    ymin = std::min(ymin, sv[k]->y);
-    ymax = std::max(ymax, sv[k]->y);
-    xmin = std::min(xmin, sv[k]->x);
-    xmax = std::max(xmax, sv[k]->x);
-    zmin = std::min(zmin, sv[k]->z);
-  }
-  Scalar s;
-  s.j0 = std::max(0, raster::CeilToInt(ymin - 0.5f));
-  s.j1 = std::min(height, raster::CeilToInt(ymax - 0.5f));
-  s.hasRow = s.j1 > s.j0;
-  s.rejected = (xmax < 0) | (xmin > width) | (zmin > 1.0f);
-  s.noColumn = raster::CeilToInt(xmax - 0.5f + cpu::kBinColumnMargin) <=
-    raster::CeilToInt(xmin - 0.5f - cpu::kBinColumnMargin);
-  const double area = raster::TwiceSignedArea(sv, 3);
-  s.degenerate = !(std::abs(area) * 0.5 >= raster::kDegenerateArea) || !std::isfinite(area);
-  s.back = area > 0;
-  return s;
-}
 
 float Pick(std::mt19937& rng)
 {
@@ -115,22 +83,24 @@ TEST(BinFourTest, EveryLaneIsTheScalarTestBitForBit)
       for (int t = 0; t < 4; ++t)
       {
         const cpu::ProjectedVertex* sv[3] = { &verts[t][0], &verts[t][1], &verts[t][2] };
-        const Scalar s = ScalarTests(sv, width, height);
+        const cpu::PolygonTests s = cpu::TestPolygon<3>(sv, 3, width, height, columnTest);
+        const bool sDegenerate =
+          !(std::abs(s.twiceArea) * 0.5 >= raster::kDegenerateArea) || !std::isfinite(s.twiceArea);
         SCOPED_TRACE("trial " + std::to_string(trial) + " lane " + std::to_string(t));
         ASSERT_EQ(four.j0[t], s.j0);
         ASSERT_EQ(four.j1[t], s.j1);
         ASSERT_EQ((four.hasRow >> t & 1) != 0, s.hasRow);
         ASSERT_EQ((four.rejected >> t & 1) != 0, s.rejected);
-        ASSERT_EQ((four.noColumn >> t & 1) != 0, columnTest && s.noColumn);
-        ASSERT_EQ((four.degenerate >> t & 1) != 0, s.degenerate);
-        if (!s.degenerate)
+        ASSERT_EQ((four.noColumn >> t & 1) != 0, s.noColumn);
+        ASSERT_EQ((four.degenerate >> t & 1) != 0, sDegenerate);
+        if (!sDegenerate)
         {
-          ASSERT_EQ((four.back >> t & 1) != 0, s.back);
+          ASSERT_EQ((four.back >> t & 1) != 0, s.twiceArea > 0);
         }
         ++checked;
         rows += s.hasRow;
-        degenerate += s.degenerate;
-        back += !s.degenerate && s.back;
+        degenerate += sDegenerate;
+        back += !sDegenerate && s.twiceArea > 0;
       }
     }
   }

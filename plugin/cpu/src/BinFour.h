@@ -14,6 +14,7 @@
 #include <emmintrin.h>
 #endif
 
+#include <algorithm>
 #include <cfloat>
 #include <limits>
 
@@ -36,6 +37,48 @@ struct ProjectedVertex
 /// scan carries its crossings from row to row, its error growing with
 /// the rows: no column test there.)
 inline constexpr float kBinColumnMargin = 1.0f / 16.0f;
+
+/// One polygon's binning tests (Rasterizer::BinPolygon's), from its
+/// vertices' screen bounds: rows [j0, j1) (in [0, height]); rejected: left,
+/// right or beyond the far plane (DrawPolygon's trivial reject, same test,
+/// same floats); noColumn: no pixel centre i + 0.5 in [xmin, xmax) with
+/// columnTest (Rasterizer::ColumnTest), as between rows; and twice its
+/// signed area (raster::TwiceSignedArea), whose facing FacingOf reads.
+struct PolygonTests
+{
+  int j0, j1;
+  bool hasRow, rejected, noColumn;
+  double twiceArea;
+};
+
+/// The scalar tests, for n vertices (N = n known at compile time, or 0).
+/// TestFourTriangles computes them lane for lane.
+template<int N = 0>
+inline PolygonTests TestPolygon(
+  const ProjectedVertex* const* sv, int n, int width, int height, bool columnTest)
+{
+  using raster::CeilToInt;
+  const int count = N > 0 ? N : n;
+  float ymin = std::numeric_limits<float>::infinity(), ymax = -ymin;
+  float xmin = ymin, xmax = -ymin, zmin = ymin;
+  for (int k = 0; k < count; ++k)
+  {
+    ymin = std::min(ymin, sv[k]->y);
+    ymax = std::max(ymax, sv[k]->y);
+    xmin = std::min(xmin, sv[k]->x);
+    xmax = std::max(xmax, sv[k]->x);
+    zmin = std::min(zmin, sv[k]->z);
+  }
+  PolygonTests t;
+  t.j0 = std::max(0, CeilToInt(ymin - 0.5f));
+  t.j1 = std::min(height, CeilToInt(ymax - 0.5f));
+  t.hasRow = t.j1 > t.j0;
+  t.rejected = (xmax < 0) | (xmin > width) | (zmin > 1.0f);
+  t.noColumn = columnTest &
+    (CeilToInt(xmax - 0.5f + kBinColumnMargin) <= CeilToInt(xmin - 0.5f - kBinColumnMargin));
+  t.twiceArea = raster::TwiceSignedArea(sv, count);
+  return t;
+}
 
 /// The tests of four triangles, lane t for triangle t: rows [j0, j1) (in
 /// [0, height]), and bit t of each mask.

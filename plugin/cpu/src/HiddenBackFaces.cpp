@@ -291,9 +291,8 @@ const std::vector<ClusterCone>* ClusterConeCache::ConesOf(
 {
   if (this->Fingerprint != fingerprint)
   {
-    if (this->Seen != fingerprint) // not on the mesh's second frame
+    if (!this->Sightings.SeenBefore(fingerprint))
     {
-      this->Seen = fingerprint;
       return nullptr;
     }
     this->Cones = ClusterConesOf(mesh, run);
@@ -306,9 +305,8 @@ bool ClosedMeshCache::IsClosedOutward(const render::Mesh& mesh, uint64_t fingerp
 {
   if (this->Fingerprint != fingerprint)
   {
-    if (!mayTest && this->Untested != fingerprint) // not on the mesh's second frame
+    if (!mayTest && !this->Sightings.SeenBefore(fingerprint))
     {
-      this->Untested = fingerprint;
       return false;
     }
     this->Closed = IsClosedOutwardTriangleMesh(mesh);

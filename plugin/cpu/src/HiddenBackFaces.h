@@ -24,6 +24,25 @@
 namespace shadinglab::cpu
 {
 
+/// The rule of this file's caches: what costs a pass over the mesh is
+/// built on the second frame a mesh (its content hash) is drawn, so that a
+/// renderer drawing a mesh once (the CLI) does not pay for what that frame
+/// cannot earn back, and one redrawing it (the explorer, ParaView) pays once.
+class SecondSighting
+{
+public:
+  /// Whether the previous call was for the same mesh; remembers this one.
+  bool SeenBefore(uint64_t fingerprint)
+  {
+    const bool seen = this->Last == fingerprint;
+    this->Last = fingerprint;
+    return seen;
+  }
+
+private:
+  std::optional<uint64_t> Last;
+};
+
 /// Whether the mesh is a closed, consistently and outward oriented triangle
 /// mesh, remembered for the last mesh seen (recomputed when its arrays change).
 class ClosedMeshCache
@@ -34,15 +53,13 @@ public:
   /// caches. `mayTest`: whether the test may run on a mesh's first frame
   /// if the answer is not cached (it costs ~120 ns per triangle, once);
   /// without it an unknown mesh is treated as open on that frame, and
-  /// tested on its second: a renderer that draws a mesh once (the CLI)
-  /// does not pay for a test that frame cannot earn back, one that redraws
-  /// it (the explorer, ParaView) pays once and culls from then on.
+  /// tested on its second (SecondSighting).
   bool IsClosedOutward(const render::Mesh& mesh, uint64_t fingerprint, bool mayTest);
 
 private:
   std::optional<uint64_t> Fingerprint; ///< the mesh the answer is for
   bool Closed = false;
-  std::optional<uint64_t> Untested; ///< a mesh drawn once without the test
+  SecondSighting Sightings; ///< meshes drawn without the test
 };
 
 /// The test itself, without the cache.
@@ -103,8 +120,7 @@ struct ClusterEye
 bool ClusterFacesAway(const ClusterCone& cone, const ClusterEye& eye);
 
 /// The cones of the last mesh culled, built on the second frame a mesh is
-/// drawn with back faces culled (as ClosedMeshCache's test: a one-frame
-/// render does not pay for cones it cannot earn back; ~20 ns a triangle).
+/// drawn with back faces culled (SecondSighting; ~20 ns a triangle).
 class ClusterConeCache
 {
 public:
@@ -114,7 +130,7 @@ public:
 
 private:
   std::optional<uint64_t> Fingerprint; ///< the mesh Cones are for
-  std::optional<uint64_t> Seen;        ///< a mesh drawn once without cones
+  SecondSighting Sightings;            ///< meshes drawn without cones
   std::vector<ClusterCone> Cones;
 };
 

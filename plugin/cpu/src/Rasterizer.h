@@ -321,26 +321,11 @@ private:
     }
   }
 
-  /// RenderOptions::displayBytes for pixels [first, last): as
-  /// Image::ToRGB8, the display transform, then rounding to 8 bits.
+  /// RenderOptions::displayBytes for pixels [first, last), counting the
+  /// covered ones.
   void DisplayBand(size_t first, size_t last, ThreadState& state) const
   {
-    const render::DisplayTransform display = F.Opt.display;
-    for (size_t i = first; i < last; ++i)
-    {
-      uint8_t* out = F.DisplayBytes + 4 * i;
-      if (!F.Covered[i])
-      {
-        out[3] = 0;
-        continue;
-      }
-      ++state.covered;
-      const Vec3f c = render::ApplyDisplay(display, Vec3f(F.Rgb[3 * i], F.Rgb[3 * i + 1], F.Rgb[3 * i + 2]));
-      out[0] = render::ToByte(c.x);
-      out[1] = render::ToByte(c.y);
-      out[2] = render::ToByte(c.z);
-      out[3] = 255;
-    }
+    state.covered += render::ToDisplayBytes(F.Opt.display, F.Rgb, F.Covered, first, last, F.DisplayBytes);
   }
 
   /// A bin's entry: polygon p shifted left by kEntryFlagBits, and what
@@ -518,8 +503,6 @@ private:
     const ProjectedVertex* sv[kMaxPolygonVertices];
     int64_t ids[kMaxPolygonVertices];
     bool anyBehind = false, allBehind = true;
-    float ymin = std::numeric_limits<float>::infinity(), ymax = -ymin;
-    float xmin = ymin, xmax = -ymin, zmin = ymin;
     for (int k = 0; k < count; ++k)
     {
       const int64_t v = conn[first + k];
@@ -527,11 +510,6 @@ private:
       sv[k] = &this->Projected[v];
       anyBehind |= this->Behind[v] != 0;
       allBehind &= this->Behind[v] != 0;
-      ymin = std::min(ymin, sv[k]->y);
-      ymax = std::max(ymax, sv[k]->y);
-      xmin = std::min(xmin, sv[k]->x);
-      xmax = std::max(xmax, sv[k]->x);
-      zmin = std::min(zmin, sv[k]->z);
     }
     if (allBehind)
     {
@@ -554,20 +532,12 @@ private:
       }
       return 0;
     }
-    // Whether the polygon can reach a pixel: a pixel row; left, right or
-    // beyond the far plane (DrawPolygon's trivial reject, same test, same
-    // floats, would drop it without counting it); and between pixel
-    // columns, no centre i + 0.5 in [xmin, xmax), as between rows (most
-    // triangles of a mesh finer than the pixels: ParaView's 1M sphere at
-    // 1080p). (BinFour.h tests four triangles at once the same way.)
-    const int j0 = std::max(0, CeilToInt(ymin - 0.5f));
-    const int j1 = std::min(F.Height, CeilToInt(ymax - 0.5f));
-    const bool hasRow = j1 > j0;
-    const bool rejected = (xmax < 0) | (xmin > F.Width) | (zmin > 1.0f);
-    const bool noColumn = this->ColumnTest &
-      (CeilToInt(xmax - 0.5f + kBinColumnMargin) <= CeilToInt(xmin - 0.5f - kBinColumnMargin));
-    return this->BinTested(p, ids, count, j0, j1, hasRow, rejected, noColumn,
-      FacingOf(TwiceSignedArea(sv, count)), lists, state);
+    // Whether the polygon can reach a pixel (most triangles of a mesh
+    // finer than the pixels, ParaView's 1M sphere at 1080p, fall between
+    // pixel rows or columns), and its facing.
+    const PolygonTests t = TestPolygon<N>(sv, count, F.Width, F.Height, this->ColumnTest);
+    return this->BinTested(p, ids, count, t.j0, t.j1, t.hasRow, t.rejected, t.noColumn,
+      FacingOf(t.twiceArea), lists, state);
   }
 
   /// Rows [rowBegin, rowEnd) that polygon `first`'s part in front of the

@@ -77,6 +77,34 @@ inline uint8_t ToByte(float v)
   return static_cast<uint8_t>(static_cast<double>(v * 255.0f) + 0.5);
 }
 
+/// Pixels [first, last) of linear RGB (three floats a pixel) as RGBA8
+/// display bytes, four a pixel: ApplyDisplay, then ToByte, alpha 255 where
+/// `covered` and 0 elsewhere (an uncovered pixel's colour bytes are left as
+/// they are: whoever reads them blends by alpha). Returns the number of
+/// covered pixels. What the CPU renderer hands to OpenGL
+/// (RenderOptions::displayBytes), as Image::ToRGB8 rounds.
+inline size_t ToDisplayBytes(DisplayTransform transform, const float* rgb, const uint8_t* covered,
+  size_t first, size_t last, uint8_t* rgba)
+{
+  size_t count = 0;
+  for (size_t i = first; i < last; ++i)
+  {
+    uint8_t* out = rgba + 4 * i;
+    if (!covered[i])
+    {
+      out[3] = 0;
+      continue;
+    }
+    ++count;
+    const Vec3<float> c = ApplyDisplay(transform, Vec3<float>(rgb[3 * i], rgb[3 * i + 1], rgb[3 * i + 2]));
+    out[0] = ToByte(c.x);
+    out[1] = ToByte(c.y);
+    out[2] = ToByte(c.z);
+    out[3] = 255;
+  }
+  return count;
+}
+
 const char* DisplayTransformName(DisplayTransform transform);
 
 } // namespace shadinglab::render

@@ -157,6 +157,21 @@ std::vector<ClusterCone> ClusterConesOf(
   {
     ClusterCone& cone = cones[static_cast<size_t>(r)];
     const int64_t begin = r * kClusterPolygons, end = std::min(np, begin + kClusterPolygons);
+    int64_t lowest = nv, highest = -1;
+    for (int64_t i = mesh.offsets[begin]; i < mesh.offsets[end]; ++i)
+    {
+      const int64_t v = mesh.connectivity[i];
+      if (v >= 0 && v < nv)
+      {
+        lowest = std::min(lowest, v);
+        highest = std::max(highest, v);
+      }
+    }
+    if (highest >= lowest)
+    {
+      cone.firstVertex = lowest;
+      cone.endVertex = highest + 1;
+    }
     double normals[kClusterPolygons][3];
     double sum[3] = { 0, 0, 0 };
     double lo[3] = { HUGE_VAL, HUGE_VAL, HUGE_VAL }, hi[3] = { -HUGE_VAL, -HUGE_VAL, -HUGE_VAL };

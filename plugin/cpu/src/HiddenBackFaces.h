@@ -91,7 +91,9 @@ inline constexpr int64_t kClusterPolygons = 64;
 
 /// A run's cone of normals and bounding sphere; `usable` false when the run
 /// has a polygon that is not a triangle, a triangle without a normal (zero
-/// area, not finite) or normals spread over a half-space or more.
+/// area, not finite) or normals spread over a half-space or more. Every run
+/// has its vertex range: the vertices its polygons use lie in
+/// [firstVertex, endVertex) (empty for a run without a valid vertex).
 struct ClusterCone
 {
   double centre[3] = { 0, 0, 0 };
@@ -99,6 +101,7 @@ struct ClusterCone
   double axis[3] = { 0, 0, 0 };
   double cosSpread = 0, sinSpread = 1; ///< cos and sin of the half-angle theta
   bool usable = false;
+  int64_t firstVertex = 0, endVertex = 0;
 };
 
 /// The cones of every run of kClusterPolygons polygons (the last may be shorter).

@@ -58,6 +58,10 @@ struct RasterBuffers
   int64_t NeededCapacity = 0;
   /// Per thread, the depth of the band it draws (ThreadState::bandDepth).
   std::vector<std::vector<float>> BandDepth;
+  /// With cones (Frame::Cones): per run, whether it faces away this frame;
+  /// per block of Rasterizer::kVertexBlock vertices, whether a run that
+  /// does not face away uses a vertex in it (only such blocks are projected).
+  std::vector<uint8_t> RunAway, VertexBlocks;
   WorkerPool Pool; ///< the frame's threads, kept across frames
 };
 
@@ -82,6 +86,7 @@ public:
   int64_t Run(std::vector<ThreadState>& states)
   {
     // (Binning worker w keeps its culled and triangle counts in states[w].)
+    this->TestRuns();
     this->ProjectPositions();
     const int T = F.Threads;
     this->Bands = (F.Height + kBandRows - 1) / kBandRows;
@@ -143,6 +148,42 @@ public:
   }
 
 private:
+  /// With cones: which runs face away this frame (ClusterFacesAway), and
+  /// the vertex blocks the others use. A closed mesh seen from outside
+  /// turns about half its runs away, and the vertices only those runs use
+  /// need no projection (a mesh's neighbours are near in index order, so a
+  /// run's vertices span a short range: ~530 on ParaView's 1M sphere).
+  void TestRuns()
+  {
+    if (!F.Cones)
+    {
+      return;
+    }
+    const int64_t polygons = F.MeshData->NumberOfPolygons();
+    const int64_t runs = (polygons + kClusterPolygons - 1) / kClusterPolygons;
+    auto& away = this->Buffers.RunAway;
+    away.resize(static_cast<size_t>(runs));
+    ParallelFor(this->Buffers.Pool, runs, F.Threads,
+      [&](int64_t b, int64_t e, int)
+      {
+        for (int64_t r = b; r < e; ++r)
+        {
+          away[static_cast<size_t>(r)] = ClusterFacesAway(F.Cones[r], F.ConeEye);
+        }
+      });
+    auto& blocks = this->Buffers.VertexBlocks;
+    blocks.assign(static_cast<size_t>(F.MeshData->NumberOfPoints() / kVertexBlock + 1), 0);
+    for (int64_t r = 0; r < runs; ++r)
+    {
+      const ClusterCone& cone = F.Cones[r];
+      if (!away[static_cast<size_t>(r)] && cone.endVertex > cone.firstVertex)
+      {
+        std::fill(blocks.begin() + cone.firstVertex / kVertexBlock,
+          blocks.begin() + (cone.endVertex - 1) / kVertexBlock + 1, uint8_t(1));
+      }
+    }
+  }
+
   /// The vertex stage, first half: clip coordinates and screen positions of
   /// every vertex (in parallel). The stage's attributes (for Gouraud, the
   /// whole lighting model) wait for ShadeVertices, after binning has marked
@@ -165,9 +206,14 @@ private:
       F.Threads,
       [&](int64_t b, int64_t e, int)
       {
+        const uint8_t* blocks = F.Cones ? this->Buffers.VertexBlocks.data() : nullptr;
         for (int64_t v = b; v < e; ++v)
         {
           needed[v].store(0, std::memory_order_relaxed);
+          if (blocks && !blocks[v / kVertexBlock])
+          {
+            continue; // used by runs facing away only (TestRuns): never read
+          }
           const double p[3] = {
             mesh.points[3 * v], mesh.points[3 * v + 1], mesh.points[3 * v + 2]
           };
@@ -402,7 +448,7 @@ private:
     for (int64_t run = begin; run < end; run += kClusterPolygons)
     {
       const int64_t runEnd = std::min(end, run + kClusterPolygons);
-      if (F.Cones && ClusterFacesAway(F.Cones[run / kClusterPolygons], F.ConeEye))
+      if (F.Cones && this->Buffers.RunAway[static_cast<size_t>(run / kClusterPolygons)])
       {
         // Every polygon of the run a triangle facing away (ClusterCone).
         state.triangles += runEnd - run;
@@ -831,6 +877,10 @@ private:
   /// Gouraud lighting: 1.03 ms on one thread, 0.87 on two). 2,048 vertices
   /// are ~25-100 us of lighting, far above a piece's fetch from the counter.
   static constexpr int64_t kVertexChunk = 2048;
+  /// Vertices per block of TestRuns' marks: a run of ParaView's 1M sphere
+  /// spans ~530 vertices, so blocks of 256 waste at most two partial
+  /// blocks a run, and the marks of 500k vertices are 2k bytes.
+  static constexpr int64_t kVertexBlock = 256;
   /// DrawList's prefetch distances, in bin entries: the offsets of the
   /// entry kAheadOffsets ahead, its connectivity when it is
   /// kAheadConnectivity ahead, its vertices at kAheadVertices (a miss to

@@ -23,7 +23,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <iterator>
+#include <cstring>
 #include <stdexcept>
 #include <vector>
 
@@ -206,19 +206,29 @@ std::string CpuBackend::Draw(
       pixels, this->Rgba.data());
     bytes = this->Rgba.data();
   }
+  // The covered rectangle, on the calling thread while OpenGL waits: each
+  // row searched from both ends with the C library's vectorized byte
+  // search (std::find compared a byte at a time: ~0.5 ms a 1080p frame).
   int i0 = width, i1 = -1, j0 = height, j1 = -1;
   for (int j = 0; j < height; ++j)
   {
     const uint8_t* row = &image->covered[static_cast<size_t>(j) * width];
-    const uint8_t* first = std::find(row, row + width, uint8_t(1));
-    if (first == row + width)
+    const auto* first = static_cast<const uint8_t*>(std::memchr(row, 1, static_cast<size_t>(width)));
+    if (!first)
     {
       continue;
     }
-    const int last = static_cast<int>(width - 1 - (std::find(std::make_reverse_iterator(row + width),
-      std::make_reverse_iterator(row), uint8_t(1)) - std::make_reverse_iterator(row + width)));
+#if defined(__GLIBC__)
+    const auto* last = static_cast<const uint8_t*>(memrchr(row, 1, static_cast<size_t>(width)));
+#else
+    const uint8_t* last = row + width - 1;
+    while (*last != 1)
+    {
+      --last;
+    }
+#endif
     i0 = std::min(i0, static_cast<int>(first - row));
-    i1 = std::max(i1, last);
+    i1 = std::max(i1, static_cast<int>(last - row));
     j0 = std::min(j0, j);
     j1 = std::max(j1, j);
   }

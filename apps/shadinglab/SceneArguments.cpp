@@ -6,7 +6,6 @@
 #include "MeshIO.h"
 #include "MeshArrays.h"
 #include "MeshPipeline.h"
-#include "RepairCheck.h"
 #include "PolyDataMesh.h"
 #include "shadinglab/cpu/SoftwareRenderer.h"
 #include "shadinglab/model/Materials.h"
@@ -221,9 +220,7 @@ void ReadAndPrepare(const Arguments& args, const std::string& input, SceneArgume
   {
     // Faces whose neighbours run their shared edges the same way average
     // opposite normals into speckles: make the orientation consistent.
-    mesh::FlatPolygons flat;
-    mesh::FlatPolygonsFromPolyData(polydata, flat);
-    if (polydata->GetNumberOfStrips() == 0 && mesh::CheckRepairNeeds(flat).inconsistentEdges > 0)
+    if (polydata->GetNumberOfStrips() == 0 && mesh::InconsistentlyOriented(polydata))
     {
       preparation.repair = true;
       AddNotice(scene, "faces oriented inconsistently: made consistent (as 'normals' does)");

@@ -553,7 +553,10 @@ void BM_ShadingLabCpuBackend(benchmark::State& state)
 }
 
 /// The GL path's spectral Fresnel (a 16-sample loop per light per pixel)
-/// against RGB: Phong/Cook-Torrance gold, range(1) 0 RGB, 1 spectral.
+/// and polarized Fresnel against RGB: Phong/Cook-Torrance gold, range(1)
+/// 0 RGB, 1 spectral, 2 RGB through an analyser at 30 degrees (eq.
+/// 8.3-8.4), 3 and polarized light at 45 degrees (eq. 8.6), as
+/// BM_CpuSpectral's range(2).
 void BM_ShadingLabGLSpectral(benchmark::State& state)
 {
   if (!std::getenv("DISPLAY"))
@@ -562,17 +565,28 @@ void BM_ShadingLabGLSpectral(benchmark::State& state)
     return;
   }
   const Scene& scene = GetScene(static_cast<int>(state.range(0)));
-  const bool spectral = state.range(1) != 0;
+  const int variant = static_cast<int>(state.range(1));
+  const bool spectral = variant == 1;
   vtkNew<vtkShadingLabPolyDataMapper> mapper;
   mapper->SetInputData(scene.polydata);
   mapper->SetSetting("mode", "phong");
   mapper->SetSetting("material", "gold");
   mapper->SetSetting("spectral", spectral ? "on" : "off");
+  if (variant >= 2)
+  {
+    mapper->SetSetting("polarizer", "30");
+  }
+  if (variant == 3)
+  {
+    mapper->SetSetting("light-polarizer", "45");
+  }
   vtkNew<vtkActor> actor;
   actor->SetMapper(mapper);
   TimeFrames(state, scene, actor);
-  state.SetLabel(std::string("shadinglab-gl phong/cook-torrance gold ") +
-    (spectral ? "spectral (16)" : "RGB") + " llvmpipe");
+  const char* what[] = { "RGB", "spectral (16)", "RGB through an analyser",
+    "RGB, polarized light through an analyser" };
+  state.SetLabel(std::string("shadinglab-gl phong/cook-torrance gold ") + what[variant] +
+    " llvmpipe");
 }
 
 /// {mode, model}: every shading mode with Blinn-Phong, and Cook-Torrance per pixel.
@@ -842,7 +856,7 @@ BENCHMARK(BM_CpuSpectral)
   ->Unit(benchmark::kMillisecond)
   ->UseManualTime();
 BENCHMARK(BM_ShadingLabGLSpectral)
-  ->ArgsProduct({ { 0, 1 }, { 0, 1 } })
+  ->ArgsProduct({ { 0, 1 }, { 0, 1, 2, 3 } })
   ->Unit(benchmark::kMillisecond)
   ->UseRealTime();
 BENCHMARK(BM_MachineScaling)->DenseRange(0, 1)->Unit(benchmark::kMillisecond)->UseManualTime();

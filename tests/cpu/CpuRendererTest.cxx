@@ -611,6 +611,72 @@ TEST(CpuRendererTest, ComputedNormalsAreKeptUntilTheMeshChanges)
   EXPECT_TRUE(stats.normalsCached);
 }
 
+TEST(CpuRendererTest, FlatFramesWithKeptAreaVectorsDrawWhatFreshOnesDo)
+{
+  // Flat shading keeps the polygons' area vectors from a mesh's second
+  // frame on when the caller gives its content hash (the CPU backend,
+  // Scene::meshHash): triangles, quads and a mesh of irregular triangles,
+  // drawn in turn by one renderer, each frame as a fresh renderer draws it.
+  vtkNew<vtkPolyData> quads;
+  {
+    vtkNew<vtkPoints> points;
+    vtkNew<vtkCellArray> cells;
+    const int n = 12;
+    for (int j = 0; j <= n; ++j)
+    {
+      for (int i = 0; i <= n; ++i)
+      {
+        const double x = i / double(n) - 0.5, y = j / double(n) - 0.5;
+        points->InsertNextPoint(x, y, 0.3 * std::sin(3.0 * x) * std::cos(4.0 * y));
+      }
+    }
+    for (int j = 0; j < n; ++j)
+    {
+      for (int i = 0; i < n; ++i)
+      {
+        const vtkIdType a = j * (n + 1) + i;
+        const vtkIdType quad[4] = { a, a + 1, a + n + 2, a + n + 1 };
+        cells->InsertNextCell(4, quad);
+      }
+    }
+    quads->SetPoints(points);
+    quads->SetPolys(cells);
+  }
+  const render::Mesh meshes[] = { MeshOf(sl::datasets::MakeTorus(1.0, 0.4, 48, 24)),
+    render::MeshFromPolyData(quads), MeshOf(sl::datasets::MakeNoisyDecimatedSphere(4, 0.03, 0.5)) };
+  const auto cam = CameraLookingAt(Vec3d(0.5, 1.5, 2.5), Vec3d(0, 0, 0), 40);
+  render::RenderOptions opt;
+  opt.width = 96;
+  opt.height = 72;
+  opt.mode = render::ShadingMode::Flat;
+  opt.threads = 2;
+  const auto light = OneLight(Vec3f(0, 0, 1));
+  sl::cpu::SoftwareRenderer kept;
+  int keptFrames = 0;
+  for (int round = 0; round < 2; ++round)
+  {
+    for (const render::Mesh& mesh : meshes)
+    {
+      render::Scene scene{ &mesh, cam, light.Cast<double>(), BlinnPhong().Cast<double>() };
+      scene.meshHash = mesh.ContentHash();
+      for (int frame = 0; frame < 2; ++frame)
+      {
+        render::RenderStats stats;
+        const render::Image again = kept.Render(scene, opt, &stats);
+        const render::Image fresh = test::RenderCpu(mesh, cam, light, BlinnPhong(), opt);
+        SCOPED_TRACE("mesh of " + std::to_string(mesh.NumberOfPolygons()) + " polygons, round " +
+          std::to_string(round) + ", frame " + std::to_string(frame));
+        // Kept on a mesh's second frame in a row, not on its first.
+        EXPECT_EQ(stats.areaVectorsKept, frame == 1);
+        keptFrames += stats.areaVectorsKept;
+        EXPECT_EQ(again.rgb, fresh.rgb);
+        EXPECT_EQ(again.covered, fresh.covered);
+      }
+    }
+  }
+  EXPECT_EQ(keptFrames, 6);
+}
+
 TEST(CpuRendererTest, DegenerateTrianglesAreSkipped)
 {
   render::Mesh mesh;

@@ -34,6 +34,9 @@ struct Frame
   raster::Matrix4 ViewProjection{};
   Vec3f Eye, ToEye;
   const float* NormalData = nullptr; ///< the mesh's normals or computed ones
+  /// Flat shading: per polygon, Newell's area vector (FlatStage::Geometry),
+  /// kept across frames of one mesh; or nullptr (computed per polygon).
+  const float* AreaVectors = nullptr;
   int NumAttributes = 0;             ///< interpolated values beyond z and 1/w
   int NormalSlot = -1, PositionSlot = -1, ColorSlot = -1;
   int ScalarSlot = -1; ///< the interpolated scalar (colour by point data)

@@ -39,6 +39,17 @@ constexpr float kDegenerateArea = 1e-10f;
 /// Largest polygon after near-plane clipping: one more vertex than the input.
 constexpr int kMaxPolygonVertices = 64;
 
+/// A hint that `address` will be read soon (a no-op where the compiler
+/// has none).
+inline void Prefetch(const void* address)
+{
+#if defined(__GNUC__) || defined(__clang__)
+  __builtin_prefetch(address, 0, 3);
+#else
+  (void)address;
+#endif
+}
+
 /// ceil(x) as an int for the pixel-centre rules, without a libm call (this
 /// build targets baseline x86-64, where std::ceil is not a single
 /// instruction). x is clamped to +-1e9 pixels first: beyond any viewport, and

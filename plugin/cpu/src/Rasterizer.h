@@ -35,6 +35,7 @@ using raster::kMaxPolygonVertices;
 using raster::kAttrFirst;
 using raster::kAttrInvW;
 using raster::kAttrZ;
+using raster::Prefetch;
 using raster::ScreenVertex;
 using raster::ThreadState;
 using raster::TwiceSignedArea;
@@ -423,18 +424,10 @@ private:
           Prefetch(v);
           Prefetch(v + sizeof(ScreenVertex) - 1);
         }
+        this->Stage.PrefetchPolygon(p, &conn[first], offsets[p + 1] - first);
       }
       this->DrawSourcePolygon(list[e], band, state);
     }
-  }
-
-  static void Prefetch(const void* address)
-  {
-#if defined(__GNUC__) || defined(__clang__)
-    __builtin_prefetch(address, 0, 3);
-#else
-    (void)address;
-#endif
   }
 
   static int64_t RoundUp(int64_t n, int64_t multiple) { return (n + multiple - 1) / multiple * multiple; }

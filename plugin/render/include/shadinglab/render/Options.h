@@ -275,6 +275,9 @@ struct RenderStats
   bool normalsComputed = false; ///< the mesh had no normals: area-weighted ones were made
   /// ... and were those of an earlier frame, the mesh's arrays unchanged (CPU).
   bool normalsCached = false;
+  /// Flat: the polygons' area vectors were kept from an earlier frame of
+  /// the same mesh (CPU; SoftwareRenderer, with the scene's meshHash).
+  bool areaVectorsKept = false;
   /// The mode drawn: RenderOptions::mode, or Auto's choice.
   ShadingMode drawnMode = ShadingMode::Phong;
   /// Auto: the choice's reasons (predictors, each mode's predicted error

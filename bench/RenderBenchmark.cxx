@@ -12,10 +12,13 @@
 // hidden back faces off in BM_Cpu (both meshes are closed), to compare.
 #include "AnalyticMeshes.h"
 #include "PolyDataMesh.h"
+#include "VtkCamera.h"
+#include "VtkLights.h"
 #include "shadinglab/model/Spectrum.h"
 #include "shadinglab/cpu/SoftwareRenderer.h"
 #include "shadinglab/render/AutoMode.h"
 #include "shadinglab/render/ColorMap.h"
+#include "shadinglab/render/Settings.h"
 #include "shadinglab/model/Materials.h"
 #include "vtkShadingLabPolyDataMapper.h"
 
@@ -24,6 +27,7 @@
 #include <vtkActor.h>
 #include <vtkCamera.h>
 #include <vtkElevationFilter.h>
+#include <vtkLightKit.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
@@ -90,6 +94,21 @@ sl::Lighting<double> Headlight(const render::Camera& cam)
   l.lightCount = 1;
   l.lights[0].vector = sl::NormalizeOr(cam.position - cam.focalPoint, sl::Vec3d(0, 0, 1));
   return l;
+}
+
+/// The lights of ParaView's render view: its light kit (vtkLightKit's
+/// defaults: head, key, fill and two back lights, intensities 0.25, 0.75,
+/// 0.25, 0.21, 0.21) following the camera, converted as the CPU backend
+/// converts a renderer's lights (LightingFromVtk, the settings' defaults).
+sl::Lighting<double> ParaViewLights(const render::Camera& cam)
+{
+  vtkNew<vtkRenderer> renderer;
+  render::ApplyToVtkCamera(cam, renderer->GetActiveCamera());
+  vtkNew<vtkLightKit> kit;
+  kit->AddLightsToRenderer(renderer);
+  renderer->UpdateLightsGeometryToFollowCamera();
+  const render::Settings defaults;
+  return render::LightingFromVtk(renderer, defaults.lightIntensity, defaults.lightSolidAngle);
 }
 
 void BM_Cpu(benchmark::State& state)
@@ -622,9 +641,9 @@ void GlArgs(benchmark::internal::Benchmark* b)
 /// PhiResolution 500: 998,000 triangles, with normals) coloured by
 /// Elevation through Cool to Warm, 1920x1080, seen as ParaView's
 /// ResetCamera leaves it (from +z, 30-degree view angle, the bounding
-/// sphere filling the view: most triangles cover less than a pixel), two
-/// threads, as the CPU backend draws it. range(0): {mode, model} of
-/// kModeModels.
+/// sphere filling the view: most triangles cover less than a pixel), lit
+/// by ParaView's five lights (ParaViewLights), two threads, as the CPU
+/// backend draws it. range(0): {mode, model} of kModeModels.
 void BM_CpuParaViewSphere(benchmark::State& state)
 {
   static const render::Mesh mesh = []
@@ -667,7 +686,7 @@ void BM_CpuParaViewSphere(benchmark::State& state)
   opt.displayBytes = true;
   sl::Material<double> material;
   material.model = static_cast<sl::ReflectanceModel>(model);
-  render::Scene s{ &mesh, camera, Headlight(camera), material };
+  render::Scene s{ &mesh, camera, ParaViewLights(camera), material };
   s.colorMap = &map;
   // As the CPU backend: the mesh hashed once per conversion, not per frame.
   s.meshHash = mesh.ContentHash();
@@ -684,7 +703,8 @@ void BM_CpuParaViewSphere(benchmark::State& state)
   state.counters["culled"] = static_cast<double>(stats.culled);
   state.counters["pixels_covered"] = static_cast<double>(stats.pixelsCovered);
   state.SetLabel(std::string(render::ShadingModeName(opt.mode)) + "/" +
-    sl::ReflectanceModelName(material.model) + ", ParaView's 1M sphere by Elevation");
+    sl::ReflectanceModelName(material.model) + ", ParaView's 1M sphere by Elevation, " +
+    std::to_string(s.lighting.lightCount) + " lights");
 }
 
 /// The work a scene does not need is skipped: the same frame with the mesh

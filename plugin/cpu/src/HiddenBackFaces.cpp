@@ -304,16 +304,8 @@ bool ClusterFacesAway(const ClusterCone& cone, const ClusterEye& eye)
 const std::vector<ClusterCone>* ClusterConeCache::ConesOf(
   const render::Mesh& mesh, uint64_t fingerprint, const render::Mesh::TaskRunner& run)
 {
-  if (this->Fingerprint != fingerprint)
-  {
-    if (!this->Sightings.SeenBefore(fingerprint))
-    {
-      return nullptr;
-    }
-    this->Cones = ClusterConesOf(mesh, run);
-    this->Fingerprint = fingerprint;
-  }
-  return &this->Cones;
+  return this->Cones.Get(
+    fingerprint, [&](std::vector<ClusterCone>& cones) { cones = ClusterConesOf(mesh, run); });
 }
 
 bool ClosedMeshCache::IsClosedOutward(const render::Mesh& mesh, uint64_t fingerprint, bool mayTest)

@@ -17,31 +17,14 @@
 
 #include "shadinglab/render/Scene.h"
 
+#include "MeshCache.h"
+
 #include <cstdint>
 #include <optional>
 #include <vector>
 
 namespace shadinglab::cpu
 {
-
-/// The rule of this file's caches: what costs a pass over the mesh is
-/// built on the second frame a mesh (its content hash) is drawn, so that a
-/// renderer drawing a mesh once (the CLI) does not pay for what that frame
-/// cannot earn back, and one redrawing it (the explorer, ParaView) pays once.
-class SecondSighting
-{
-public:
-  /// Whether the previous call was for the same mesh; remembers this one.
-  bool SeenBefore(uint64_t fingerprint)
-  {
-    const bool seen = this->Last == fingerprint;
-    this->Last = fingerprint;
-    return seen;
-  }
-
-private:
-  std::optional<uint64_t> Last;
-};
 
 /// Whether the mesh is a closed, consistently and outward oriented triangle
 /// mesh, remembered for the last mesh seen (recomputed when its arrays change).
@@ -123,7 +106,7 @@ struct ClusterEye
 bool ClusterFacesAway(const ClusterCone& cone, const ClusterEye& eye);
 
 /// The cones of the last mesh culled, built on the second frame a mesh is
-/// drawn with back faces culled (SecondSighting; ~20 ns a triangle).
+/// drawn with back faces culled (SecondFrameCache; ~20 ns a triangle).
 class ClusterConeCache
 {
 public:
@@ -132,9 +115,7 @@ public:
     const render::Mesh& mesh, uint64_t fingerprint, const render::Mesh::TaskRunner& run);
 
 private:
-  std::optional<uint64_t> Fingerprint; ///< the mesh Cones are for
-  SecondSighting Sightings;            ///< meshes drawn without cones
-  std::vector<ClusterCone> Cones;
+  SecondFrameCache<std::vector<ClusterCone>> Cones;
 };
 
 } // namespace shadinglab::cpu

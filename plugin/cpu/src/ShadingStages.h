@@ -178,12 +178,6 @@ struct CoverageStage : StageBase
   }
 };
 
-/// Flat (docs/model.md eq. 2.1): one intensity per polygon, computed when
-/// its first pixel passes the depth test (hidden polygons are never lit).
-/// A polygon of at most kQueuedArea px has its pixels shaded in SIMD
-/// batches instead (WideShading.h, as Phong's), every one from the
-/// polygon's normal and point: the same intensity, at a few ns a pixel
-/// where a polygon's own Shade calls cost tens.
 /// Newell's area vector of polygon p (mesh::NewellAreaVector in float, from
 /// the mesh's points): the flat stage's face normal before normalizing.
 inline Vec3f AreaVectorOf(const render::Mesh& mesh, int64_t p)
@@ -198,6 +192,12 @@ inline Vec3f AreaVectorOf(const render::Mesh& mesh, int64_t p)
     });
 }
 
+/// Flat (docs/model.md eq. 2.1): one intensity per polygon, computed when
+/// its first pixel passes the depth test (hidden polygons are never lit).
+/// A polygon of at most kQueuedArea px has its pixels shaded in SIMD
+/// batches instead (WideShading.h, as Phong's), every one from the
+/// polygon's normal and point: the same intensity, at a few ns a pixel
+/// where a polygon's own Shade calls cost tens.
 struct FlatStage : StageBase
 {
   struct Polygon

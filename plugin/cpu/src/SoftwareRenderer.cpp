@@ -7,6 +7,7 @@
 #include "shadinglab/cpu/SoftwareRenderer.h"
 
 #include "HiddenBackFaces.h"
+#include "MeshCache.h"
 #include "FastPhongStage.h"
 #include "Rasterizer.h"
 #include "ShadingStages.h"
@@ -208,40 +209,34 @@ private:
     return this->MeshBounds;
   }
 
-  std::vector<float> AreaVectors; ///< flat shading's, per polygon (AreaVectorsOf)
-  std::optional<uint64_t> AreaVectorsFor; ///< the content hash they were made for
-  SecondSighting AreaVectorSightings;
+  SecondFrameCache<std::vector<float>> AreaVectors; ///< flat shading's (AreaVectorsOf)
 
   /// Flat shading's per-polygon area vectors (AreaVectorOf), kept for the
-  /// mesh of content hash `hash` from its second flat frame on (a one-frame
-  /// render does not pay for them; SecondSighting); nullptr before. Each
-  /// lit polygon otherwise reads its points again every frame, missing the
-  /// cache (flat frames of ParaView's 1M sphere x0.984 with them).
+  /// mesh of content hash `hash` from its second flat frame on
+  /// (SecondFrameCache); nullptr before. Each lit polygon otherwise reads
+  /// its points again every frame, missing the cache (flat frames of
+  /// ParaView's 1M sphere x0.984 with them).
   const float* AreaVectorsOf(const Mesh& mesh, uint64_t hash)
   {
-    if (this->AreaVectorsFor != hash)
-    {
-      if (!this->AreaVectorSightings.SeenBefore(hash))
+    const std::vector<float>* kept = this->AreaVectors.Get(hash,
+      [&](std::vector<float>& vectors)
       {
-        return nullptr;
-      }
-      const int64_t polygons = mesh.NumberOfPolygons();
-      this->AreaVectors.resize(static_cast<size_t>(3 * polygons));
-      ParallelFor(this->Buffers.Pool, polygons, this->FrameState.Threads,
-        [&](int64_t b, int64_t e, int)
-        {
-          for (int64_t p = b; p < e; ++p)
+        const int64_t polygons = mesh.NumberOfPolygons();
+        vectors.resize(static_cast<size_t>(3 * polygons));
+        ParallelFor(this->Buffers.Pool, polygons, this->FrameState.Threads,
+          [&](int64_t b, int64_t e, int)
           {
-            const Vec3f a = AreaVectorOf(mesh, p);
-            float* out = &this->AreaVectors[static_cast<size_t>(3 * p)];
-            out[0] = a.x;
-            out[1] = a.y;
-            out[2] = a.z;
-          }
-        });
-      this->AreaVectorsFor = hash;
-    }
-    return this->AreaVectors.data();
+            for (int64_t p = b; p < e; ++p)
+            {
+              const Vec3f a = AreaVectorOf(mesh, p);
+              float* out = &vectors[static_cast<size_t>(3 * p)];
+              out[0] = a.x;
+              out[1] = a.y;
+              out[2] = a.z;
+            }
+          });
+      });
+    return kept ? kept->data() : nullptr;
   }
 
   std::vector<float> ComputedNormals; ///< area-weighted, for a mesh without normals

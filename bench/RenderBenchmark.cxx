@@ -646,7 +646,15 @@ void GlArgs(benchmark::internal::Benchmark* b)
 /// backend draws it. range(0): {mode, model} of kModeModels.
 void BM_CpuParaViewSphere(benchmark::State& state)
 {
-  static const render::Mesh mesh = []
+  // The mesh in the local frame MeshFromPolyData gives it (centred, scaled
+  // to a unit bounding sphere), with that frame: the CPU backend moves the
+  // camera and the lights into it (render::ToLocal), and so does this.
+  struct LocalMesh
+  {
+    render::Mesh mesh;
+    render::WorldFrame frame;
+  };
+  static const LocalMesh local = []
   {
     vtkNew<vtkSphereSource> sphere;
     sphere->SetThetaResolution(1000);
@@ -656,13 +664,15 @@ void BM_CpuParaViewSphere(benchmark::State& state)
     elevation->SetLowPoint(0, 0, -0.5);
     elevation->SetHighPoint(0, 0, 0.5);
     elevation->Update();
-    render::WorldFrame frame;
+    LocalMesh out;
     render::ScalarField field;
     field.name = "Elevation";
     double range[2];
-    return render::MeshFromPolyData(
-      vtkPolyData::SafeDownCast(elevation->GetOutput()), frame, field, range);
+    out.mesh = render::MeshFromPolyData(
+      vtkPolyData::SafeDownCast(elevation->GetOutput()), out.frame, field, range);
+    return out;
   }();
+  const render::Mesh& mesh = local.mesh;
   static const render::ColorMap map = []
   {
     render::ColorMap m;
@@ -673,8 +683,8 @@ void BM_CpuParaViewSphere(benchmark::State& state)
   camera.focalPoint = sl::Vec3d(0, 0, 0);
   camera.viewUp = sl::Vec3d(0, 1, 0);
   camera.viewAngle = 30.0;
-  // vtkRenderer::ResetCamera: the bounding sphere (radius sqrt(3)/2 of the
-  // unit box) fits the view angle.
+  // vtkRenderer::ResetCamera, in world coordinates: the bounding sphere
+  // (radius sqrt(3)/2 of the unit box) fits the view angle.
   camera.position = sl::Vec3d(0, 0, std::sqrt(3.0) / 2.0 / std::sin(15.0 * sl::kPi<double> / 180.0));
   const auto [mode, model] = kModeModels[state.range(0)];
   render::RenderOptions opt;
@@ -686,7 +696,10 @@ void BM_CpuParaViewSphere(benchmark::State& state)
   opt.displayBytes = true;
   sl::Material<double> material;
   material.model = static_cast<sl::ReflectanceModel>(model);
-  render::Scene s{ &mesh, camera, ParaViewLights(camera), material };
+  sl::Lighting<double> lights = ParaViewLights(camera);
+  render::ToLocal(local.frame, camera);
+  render::ToLocal(local.frame, lights);
+  render::Scene s{ &mesh, camera, lights, material };
   s.colorMap = &map;
   // As the CPU backend: the mesh hashed once per conversion, not per frame.
   s.meshHash = mesh.ContentHash();
@@ -701,6 +714,7 @@ void BM_CpuParaViewSphere(benchmark::State& state)
   state.counters["rasterized"] = static_cast<double>(stats.rasterized);
   state.counters["binned"] = static_cast<double>(stats.binned);
   state.counters["culled"] = static_cast<double>(stats.culled);
+  state.counters["culled_in_runs"] = static_cast<double>(stats.culledInClusters);
   state.counters["pixels_covered"] = static_cast<double>(stats.pixelsCovered);
   state.SetLabel(std::string(render::ShadingModeName(opt.mode)) + "/" +
     sl::ReflectanceModelName(material.model) + ", ParaView's 1M sphere by Elevation, " +

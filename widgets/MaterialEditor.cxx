@@ -8,8 +8,9 @@
 
 #include <QComboBox>
 #include <QDoubleSpinBox>
-#include <QFormLayout>
+#include <QGridLayout>
 #include <QHBoxLayout>
+#include <QLabel>
 #include <QSignalBlocker>
 #include <QSlider>
 
@@ -33,9 +34,12 @@ MaterialEditor::MaterialEditor(QWidget* parent)
   , Lobes(new QComboBox(this))
   , Spectrum(new QComboBox(this))
 {
-  auto* form = new QFormLayout(this);
-  this->Form = form;
-  form->setContentsMargins(0, 0, 0, 0);
+  // A grid, not a QFormLayout: Qt 5's form keeps the height of a row whose
+  // label and field are hidden, which left a gap wherever the chosen model
+  // hides a parameter (Lambert: ks and shininess between kd and albedo).
+  this->Grid = new QGridLayout(this);
+  this->Grid->setContentsMargins(0, 0, 0, 0);
+  this->Grid->setColumnStretch(1, 1);
   this->Preset->addItem("(custom)");
   for (const MaterialPreset& preset : MaterialPresets())
   {
@@ -43,18 +47,18 @@ MaterialEditor::MaterialEditor(QWidget* parent)
     this->Preset->setItemData(this->Preset->count() - 1,
       QString::fromStdString(preset.source), Qt::ToolTipRole);
   }
-  form->addRow("Preset", this->Preset);
+  this->AddField("Preset", this->Preset);
   for (const ReflectanceModelRow& row : kReflectanceModels)
   {
     this->Model->addItem(row.label, static_cast<int>(row.value));
   }
-  form->addRow("Model", this->Model);
+  this->AddField("Model", this->Model);
   this->Variant->addItem("Cook-Torrance 1982 (1/pi)");
   this->Variant->addItem("Walter 2007 (1/4)");
-  form->addRow("CT variant", this->Variant);
+  this->AddField("CT variant", this->Variant);
   this->Lobes->addItem("1 Beckmann lobe");
   this->Lobes->addItem("2 lobes (mixture)");
-  form->addRow("Roughness", this->Lobes);
+  this->AddField("Roughness", this->Lobes);
   this->Spectrum->addItem("RGB: eta, k per channel");
   for (const std::string& name : PresetDispersionNames())
   {
@@ -65,7 +69,7 @@ MaterialEditor::MaterialEditor(QWidget* parent)
   this->Spectrum->addItem("spectral (the scene's)", QString());
   this->Spectrum->setToolTip("F per wavelength from measured n and k, 16 samples under D65 "
                              "(docs/model.md section 7), or three RGB samples");
-  form->addRow("Fresnel", this->Spectrum);
+  this->AddField("Fresnel", this->Spectrum);
   this->AddRow("kd", "kd", 0.0, 1.0, false, &this->Value.kd);
   this->AddRow("ks", "ks", 0.0, 1.0, false, &this->Value.ks);
   this->AddRow("shininess", "shininess n", 1.0, 1000.0, true, &this->Value.shininess);
@@ -93,7 +97,7 @@ MaterialEditor::MaterialEditor(QWidget* parent)
     h->setContentsMargins(0, 0, 0, 0);
     h->addWidget(row.slider, 1);
     h->addWidget(row.box);
-    form->addRow(row.label, line);
+    this->AddField(row.label, line);
   }
   connect(this->Preset, QOverload<int>::of(&QComboBox::activated), this, [this](int index) {
     if (index <= 0)
@@ -153,6 +157,16 @@ MaterialEditor::MaterialEditor(QWidget* parent)
     this->Emit();
   });
   this->Refresh();
+}
+
+void MaterialEditor::AddField(const QString& label, QWidget* field)
+{
+  const int row = static_cast<int>(this->Labels.size());
+  auto* text = new QLabel(label, this);
+  text->setBuddy(field);
+  this->Grid->addWidget(text, row, 0);
+  this->Grid->addWidget(field, row, 1);
+  this->Labels.insert(field, text);
 }
 
 void MaterialEditor::AddRow(const char* key, const QString& label, double lo, double hi,
@@ -276,7 +290,7 @@ void MaterialEditor::ShowModelParameters()
   const ReflectanceModel model = this->Value.model;
   auto show = [this](QWidget* field, bool visible) {
     field->setVisible(visible);
-    if (QWidget* label = this->Form->labelForField(field))
+    if (QWidget* label = this->Labels.value(field))
     {
       label->setVisible(visible);
     }

@@ -8,12 +8,13 @@
 
 #include "shadinglab/model/Shading.h"
 
+#include <QHash>
 #include <QWidget>
 
 #include <vector>
 
 class QComboBox;
-class QFormLayout;
+class QGridLayout;
 class QDoubleSpinBox;
 class QSlider;
 
@@ -51,6 +52,8 @@ private:
   };
   /// A slider and spin box for `target`, the setting `key`'s value (or one
   /// channel of it).
+  /// One row of the grid: `label`, then `field`.
+  void AddField(const QString& label, QWidget* field);
   void AddRow(const char* key, const QString& label, double lo, double hi, bool logScale,
     double* target);
   void OnRowEdited(int index, double value);
@@ -69,7 +72,8 @@ private:
   /// spectrum (a preset's data) through SetSpectral.
   QComboBox* Spectrum;
   std::vector<Row> Rows;
-  QFormLayout* Form = nullptr;
+  QGridLayout* Grid = nullptr;
+  QHash<QWidget*, QWidget*> Labels; ///< each field's label (hidden with it)
   bool Updating = false;
 };
 

@@ -4,6 +4,8 @@
 #include "ExplorerGLTest.h"
 #include "ExplorerTestUtil.h"
 
+#include <QLayout>
+
 void ExplorerGLTest::CameraLinkMovesAllPanels()
 {
   // A CPU and a GPU panel: a drag in either moves the one camera and
@@ -119,6 +121,16 @@ void ExplorerGLTest::MaterialEditorShowsTheModelsParameters()
   editor.SetMaterial(m);
   QVERIFY(shown("kd") && shown("albedo R") && shown("ambient"));
   QVERIFY(!shown("ks") && !shown("shininess n") && !shown("eta R") && !shown("m (lobe 1)"));
+  // A hidden parameter leaves no gap: kd's row is followed by albedo R's at
+  // the pitch of albedo R to G (Qt 5's QFormLayout kept hidden rows' height).
+  editor.resize(editor.sizeHint());
+  editor.layout()->activate();
+  auto top = [&editor](const char* label) {
+    return editor.findChild<QSlider*>(label)->parentWidget()->geometry().top();
+  };
+  const int pitch = top("albedo G") - top("albedo R");
+  QVERIFY(pitch > 0);
+  QCOMPARE(top("albedo R") - top("kd"), pitch);
   m.model = ReflectanceModel::BlinnPhong;
   editor.SetMaterial(m);
   QVERIFY(shown("ks") && shown("shininess n") && shown("specular R"));

@@ -10,6 +10,8 @@
 #include <QtCharts/QValueAxis>
 
 #include <QHBoxLayout>
+#include <QLabel>
+#include <QVBoxLayout>
 
 #include <algorithm>
 #include <cmath>
@@ -24,16 +26,27 @@ ProfilePlot::ProfilePlot(QWidget* parent)
   : QWidget(parent)
   , IntensityView(new QChartView(this))
   , DerivativeView(new QChartView(this))
+  , Legend(new QLabel(this))
 {
-  auto* layout = new QHBoxLayout(this);
+  auto* layout = new QVBoxLayout(this);
   layout->setContentsMargins(0, 0, 0, 0);
   layout->setSpacing(0);
+  auto* charts = new QHBoxLayout;
+  charts->setSpacing(0);
   for (QChartView* view : { this->IntensityView, this->DerivativeView })
   {
     view->setRenderHint(QPainter::Antialiasing);
     view->setMinimumSize(260, 180);
-    layout->addWidget(view);
+    charts->addWidget(view);
   }
+  layout->addLayout(charts, 1);
+  // One legend under both charts, wrapped: a chart's own legend is a single
+  // row that cut five panels' names to "Cub..." (the creases scene).
+  this->Legend->setObjectName("profileLegend");
+  this->Legend->setWordWrap(true);
+  this->Legend->setAlignment(Qt::AlignCenter);
+  this->Legend->setTextFormat(Qt::RichText);
+  layout->addWidget(this->Legend);
   this->Redraw();
 }
 
@@ -184,7 +197,18 @@ void ProfilePlot::Redraw()
   {
     axis->applyNiceNumbers(); // ticks at round values
   }
+  intensity->legend()->hide();
   derivative->legend()->hide();
+  QStringList entries;
+  for (const ProfileCurve& curve : this->Curves)
+  {
+    entries << QString("<span style=\"color:%1\">&#9632;</span>&nbsp;%2")
+                 .arg(curve.color.name(), QString::fromStdString(curve.name)
+                                           .toHtmlEscaped()
+                                           .replace(" ", "&nbsp;")); // wrap between entries
+  }
+  this->Legend->setText(entries.join(" &nbsp;&nbsp; "));
+  this->Legend->setVisible(!entries.isEmpty());
   QChart* oldIntensity = this->IntensityView->chart();
   QChart* oldDerivative = this->DerivativeView->chart();
   this->IntensityView->setChart(intensity);

@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+class QLabel;
+
 namespace QtCharts
 {
 class QChart;
@@ -45,6 +47,7 @@ private:
   void Redraw();
   QtCharts::QChartView* IntensityView;
   QtCharts::QChartView* DerivativeView;
+  QLabel* Legend; ///< each curve's colour and full name, wrapped
   std::vector<ProfileCurve> Curves;
   bool ShowPerceived = false;
 };

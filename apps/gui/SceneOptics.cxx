@@ -48,8 +48,9 @@ Scene Polarization(const SceneOptions& o)
   const Material<double> glass = RoughGlass();
   Material<double> gold = Spectral("gold");
   gold.lobes[0].m = 0.35;
-  // Gold reflects ~10x what glass does: scaled down to glass's brightness.
-  gold.ks = 0.12;
+  // Gold reflects ~10x what glass does: scaled down to glass's brightness
+  // (and below 1: at 0.12 its highlight saturated 132 pixels).
+  gold.ks = 0.09;
   auto through = [&](const char* title, const Material<double>& m, double deg) {
     widgets::PanelSpec p = Panel(title, sphere, ShadingMode::Phong, m, o.backend);
     p.polarizer = deg;
@@ -73,7 +74,7 @@ Scene Polarization(const SceneOptions& o)
   // glass reflects only s-polarized light, vertical in the image.
   s.lightAzimuth = -80;
   s.lightElevation = 5;
-  s.lightIntensity = 2.5;
+  s.lightIntensity = 1.5; // (2.5 saturated 6% of the glass sphere)
   s.plot = PlotKind::Parameter;
   s.explanation =
     "Light reflected by glass at Brewster's angle (tan \u03b8B = \u03b7, 56.6\u00b0 for "
@@ -121,7 +122,7 @@ Scene SpectralScene(const SceneOptions& o)
   s.lightAzimuth = -40;
   s.lightElevation = 20;
   // A dim light keeps the metals below white, so their colours show.
-  s.lightIntensity = 0.08;
+  s.lightIntensity = 0.07; // (0.08 saturated 45 pixels of spectral gold)
   s.plot = PlotKind::Parameter;
   s.explanation =
     "Fresnel's F depends on wavelength: a metal's n and k are functions of \u03bb. With "

@@ -61,7 +61,7 @@ Study OrientationStudy(const Scene& scene, const SceneOptions& options)
   Study study;
   study.title = "Intensity at the square's centre against its rotation";
   study.xTitle = "rotation in the image plane (degrees)";
-  study.yTitle = "luminance at the centre (linear)";
+  study.yTitle = "centre luminance (linear)";
   study.marker = options.rotation;
   cpu::SoftwareRenderer renderer;
   Study::Series polygon{ "polygon scan conversion (eq. 2.3)", {}, {} };
@@ -98,7 +98,6 @@ Study SilhouetteStudy(const Scene& scene, const SceneOptions& options)
   Study study;
   study.title = "Silhouette error against subdivision level";
   study.xTitle = "subdivision level";
-  study.yTitle = "pixels covered differently from level 5";
   cpu::SoftwareRenderer renderer;
   // Level 5 is the reference, unless the mesh would pass kStudyMaxFaces.
   int kLevels = 5;
@@ -107,7 +106,7 @@ Study SilhouetteStudy(const Scene& scene, const SceneOptions& options)
   {
     --kLevels;
   }
-  study.yTitle = "pixels differing from level " + std::to_string(kLevels);
+  study.yTitle = "pixels unlike level " + std::to_string(kLevels);
   std::vector<widgets::PanelSpec> specs;
   for (int level = 0; level <= kLevels; ++level)
   {
@@ -205,7 +204,7 @@ Study FlatConditionsStudy(const Scene& scene, const SceneOptions& options)
   Study study;
   study.title = "Flat shading's mean error against the distance of light and viewer";
   study.xTitle = "log10 of the distance (circumradii)";
-  study.yTitle = "mean |I_flat - I_exact| (1/255)";
+  study.yTitle = "mean error (1/255)";
   study.marker = std::log10(options.distance);
   cpu::SoftwareRenderer renderer;
   const double distances[] = { 1.5, 2, 3, 5, 10, 20, 50, 100, 300, 1000, 3000, 10000 };

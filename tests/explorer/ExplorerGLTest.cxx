@@ -182,7 +182,7 @@ void ExplorerGLTest::EveryScreenshotIsDrawn()
       // background (the full moon may be a single shade, and is).
       const render::Image image = view->Panel(i)->Snapshot();
       const Vec3<float> bg = view->View().background;
-      long covered = 0, lit = 0;
+      long covered = 0, lit = 0, white = 0;
       for (size_t p = 0; p < image.covered.size(); ++p)
       {
         if (image.covered[p])
@@ -191,7 +191,21 @@ void ExplorerGLTest::EveryScreenshotIsDrawn()
           const float* c = &image.rgb[3 * p];
           lit += std::abs(c[0] - bg.x) + std::abs(c[1] - bg.y) + std::abs(c[2] - bg.z) >
             10 * kOne255;
+          white += std::max({ c[0], c[1], c[2] }) >= 1.0f - 0.5f * kOne255;
         }
+      }
+      // The lecture's scenes plot I itself (clamped to [0, 1]): no shaded
+      // pixel saturates, or a highlight's shape is cut off flat (false
+      // colour, the heat maps and the DoLP image, is exempt).
+      const widgets::PanelSpec& spec = view->Panel(i)->Spec();
+      if (spec.errorReference < 0 && !spec.dolpImage)
+      {
+        QVERIFY2(white == 0,
+          qPrintable(QString("%1 panel %2: %3 of %4 covered pixels saturated")
+                       .arg(info.name)
+                       .arg(i)
+                       .arg(white)
+                       .arg(covered)));
       }
       QVERIFY2(covered > 500 && lit > covered / 2,
         qPrintable(QString("%1 panel %2: %3 pixels covered, %4 unlike the background")

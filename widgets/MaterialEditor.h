@@ -50,10 +50,10 @@ private:
     double* target;
     QWidget* line = nullptr; ///< slider and box, one row of the form
   };
-  /// A slider and spin box for `target`, the setting `key`'s value (or one
-  /// channel of it).
   /// One row of the grid: `label`, then `field`.
   void AddField(const QString& label, QWidget* field);
+  /// A slider and spin box for `target`, the setting `key`'s value (or one
+  /// channel of it).
   void AddRow(const char* key, const QString& label, double lo, double hi, bool logScale,
     double* target);
   void OnRowEdited(int index, double value);

@@ -5,7 +5,6 @@
 
 #include <QtCharts/QChart>
 #include <QtCharts/QChartView>
-#include <QtCharts/QLegendMarker>
 #include <QtCharts/QLineSeries>
 #include <QtCharts/QValueAxis>
 
@@ -94,19 +93,12 @@ void AddCurve(QChart* chart, QAbstractAxis* x, QAbstractAxis* y, const QString& 
   const Profile& profile, const std::vector<double>& values, const QPen& pen, double& lo,
   double& hi)
 {
-  bool first = true;
   for (QLineSeries* series : Segments(profile, values, pen))
   {
     series->setName(name);
     chart->addSeries(series);
     series->attachAxis(x);
     series->attachAxis(y);
-    if (!first)
-    {
-      // One legend entry per curve.
-      chart->legend()->markers(series).front()->setVisible(false);
-    }
-    first = false;
     for (const QPointF& p : series->points())
     {
       lo = std::min(lo, p.y());
@@ -150,13 +142,8 @@ void ProfilePlot::Redraw()
     if (this->ShowPerceived)
     {
       QPen dashed(curve.color, 1.5, Qt::DashLine);
-      const int before = intensity->series().size();
       AddCurve(intensity, x1, y1, name + " (perceived)", curve.profile,
         PerceivedProfile(curve.profile), dashed, lo1, hi1);
-      for (int i = before; i < intensity->series().size(); ++i)
-      {
-        intensity->legend()->markers(intensity->series()[i]).front()->setVisible(false);
-      }
     }
     const std::vector<double> d = Derivative(curve.profile);
     AddCurve(derivative, x2, y2, name, curve.profile, d, pen, lo2, hi2);

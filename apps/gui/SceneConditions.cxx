@@ -30,11 +30,6 @@ namespace
 /// The cube's side: its circumscribed sphere is the unit sphere, the
 /// sphere panel's surface (2 / sqrt(3)).
 constexpr double kCubeSide = 1.1547005383792515;
-/// The creases scene's cube: specular coefficient of its plastic. Its
-/// averaged normals turn one corner's highlight towards the light, and
-/// at the corrugation's 0.15 that highlight clipped to white; at 0.05 its
-/// peak stays below 1 (the profile's maximum luminance, measured).
-constexpr double kCubeHighlight = 0.05;
 /// The view's margin around the unit sphere's apparent size.
 constexpr double kViewMargin = 1.15;
 
@@ -111,13 +106,12 @@ Scene Creases(const SceneOptions& o)
   PolyPtr cube = SharedCornerCube(1.0);
   const auto w = o.preparation.weighting;
   const auto b = render::Backend::CPU;
-  Material<double> m = Plastic();
+  // The corrugation, lit from the side, needs a stronger highlight to show
+  // its slopes; the cube keeps the scenes' plastic (at 0.15 its rounded
+  // highlight clipped to white across ~10 px of the profile).
+  const Material<double> cubeMaterial = Plastic();
+  Material<double> m = cubeMaterial;
   m.ks = 0.15;
-  // The cube's rounded highlight at a third of that: at 0.15 it clipped to
-  // white (every channel at 1 across ~10 px of the profile), and a clipped
-  // highlight hides its shape.
-  Material<double> cubeMaterial = m;
-  cubeMaterial.ks = kCubeHighlight;
   s.panels = {
     Panel("Corrugation, averaged normals: shaded flat", WithNormals(corrugated, w, 180.0),
       ShadingMode::Phong, m, b),

@@ -87,7 +87,7 @@ int RunSettings(int argc, char** argv)
   }
   std::cout << "# Settings\n\n"
                "Every setting a user sets, from the one table every front end reads "
-               "(`plugin/render/src/Settings.cpp`). Written by `shadinglab settings --markdown`; "
+               "(`plugin/render/src/SettingsTable.cpp`). Written by `shadinglab settings --markdown`; "
                "do not edit. The key is the command-line flag (`--key`), the property the "
                "ParaView property of the ShadingLab Surface (and the key of "
                "`vtkShadingLabPolyDataMapper::SetSetting`). Choices are accepted in either "

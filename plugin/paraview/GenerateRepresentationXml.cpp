@@ -237,7 +237,7 @@ int main(int argc, char** argv)
     return 2;
   }
   std::ostringstream out;
-  out << "<!-- Generated from plugin/render/src/Settings.cpp by "
+  out << "<!-- Generated from plugin/render/src/SettingsTable.cpp by "
          "plugin/paraview/GenerateRepresentationXml.cpp: do not edit. -->\n"
       << "<ServerManagerConfiguration>\n  <ProxyGroup name=\"representations\">\n"
       << "    <RepresentationProxy name=\"ShadingLabSurfaceRepresentation\"\n"

@@ -8,7 +8,7 @@
 // between front ends. A setting's default is the value Settings{} holds:
 // it is written once, in the struct below.
 //
-// Adding a setting: a field below, one row in src/Settings.cpp, and its use.
+// Adding a setting: a field below, one row in src/SettingsTable.cpp, and its use.
 #pragma once
 
 #include "shadinglab/model/Shading.h"

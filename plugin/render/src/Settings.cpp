@@ -5,12 +5,8 @@
 
 #include "SettingsText.h"
 
-#include "shadinglab/render/ColorMap.h"
-
 #include "shadinglab/model/Materials.h"
 
-#include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>

@@ -10,9 +10,9 @@
 
 #include "shadinglab/model/Materials.h"
 
-#include <algorithm>
 #include <cctype>
-#include <cmath>
+#include <string>
+#include <vector>
 
 namespace shadinglab::render
 {

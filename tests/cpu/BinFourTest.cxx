@@ -4,7 +4,10 @@
 // give the scalar rows, reject, column test and facing bit for bit, on
 // triangles made to sit on the rules' edges: vertices on pixel centres and
 // half-integers, sub-pixel and zero-area triangles, areas around
-// kDegenerateArea, negative, huge, infinite and NaN coordinates.
+// kDegenerateArea, negative, huge, infinite and NaN coordinates. And the
+// span test binning makes on triangles of one pixel row against the scan
+// that draws them (raster::ScanTriangle): binning drops exactly the
+// triangles that would draw no pixel.
 #include "BinFour.h"
 
 #include <gtest/gtest.h>
@@ -50,7 +53,7 @@ TEST(BinFourTest, EveryLaneIsTheScalarTestBitForBit)
   const int width = 200, height = 150;
   std::mt19937 rng(20261204);
   std::uniform_real_distribution<float> small(-0.7f, 0.7f), depth(-1.2f, 1.3f);
-  int checked = 0, rows = 0, degenerate = 0, back = 0;
+  int checked = 0, rows = 0, degenerate = 0, back = 0, emptySpan = 0;
   for (int trial = 0; trial < 50000; ++trial)
   {
     cpu::ProjectedVertex verts[4][3];
@@ -91,7 +94,8 @@ TEST(BinFourTest, EveryLaneIsTheScalarTestBitForBit)
         ASSERT_EQ(four.j1[t], s.j1);
         ASSERT_EQ((four.hasRow >> t & 1) != 0, s.hasRow);
         ASSERT_EQ((four.rejected >> t & 1) != 0, s.rejected);
-        ASSERT_EQ((four.noColumn >> t & 1) != 0, s.noColumn);
+        ASSERT_EQ((four.noPixel >> t & 1) != 0, s.noPixel);
+        ASSERT_EQ(four.column[t], s.column);
         ASSERT_EQ((four.degenerate >> t & 1) != 0, sDegenerate);
         if (!sDegenerate)
         {
@@ -101,6 +105,13 @@ TEST(BinFourTest, EveryLaneIsTheScalarTestBitForBit)
         rows += s.hasRow;
         degenerate += sDegenerate;
         back += !sDegenerate && s.twiceArea > 0;
+        // Dropped by the one-row span test, not by the column test.
+        emptySpan += columnTest && s.noPixel && s.j1 - s.j0 == 1 &&
+          !cpu::TestPolygon<3>(sv, 3, width, height, false).noPixel &&
+          raster::CeilToInt(std::max({ sv[0]->x, sv[1]->x, sv[2]->x }) - 0.5f +
+            cpu::kBinColumnMargin) >
+            raster::CeilToInt(std::min({ sv[0]->x, sv[1]->x, sv[2]->x }) - 0.5f -
+              cpu::kBinColumnMargin);
       }
     }
   }
@@ -109,5 +120,96 @@ TEST(BinFourTest, EveryLaneIsTheScalarTestBitForBit)
   EXPECT_GT(rows, checked / 10);
   EXPECT_GT(degenerate, checked / 20);
   EXPECT_GT(back, checked / 5);
+  EXPECT_GT(emptySpan, checked / 100);
 }
 #endif
+
+// Binning's span test says "no pixel" for a triangle of one pixel row
+// exactly when the scan that would draw it finds no pixel, and hands the
+// draw the column of a single pixel exactly when the scan finds one, that
+// one, with the same attributes: on sub-pixel
+// triangles scattered over a frame, many with vertices on pixel centres
+// and half-integers, where a crossing lands on a centre.
+TEST(BinFourTest, OneRowSpanTestIsTheScansOwn)
+{
+  const int width = 64, height = 48;
+  std::mt19937 rng(20261205);
+  std::uniform_real_distribution<float> at(-2.0f, 66.0f), small(-0.9f, 0.9f);
+  std::uniform_int_distribution<int> grid(-8, 8);
+  int oneRow = 0, dropped = 0, drawn = 0, single = 0;
+  for (int trial = 0; trial < 200000; ++trial)
+  {
+    raster::ScreenVertex verts[3] = {};
+    const float cx = at(rng), cy = at(rng) * 0.75f;
+    for (auto& v : verts)
+    {
+      // Every fourth triangle on a quarter-pixel grid, crossings on centres.
+      v.x = trial % 4 == 0 ? std::floor(cx) + 0.25f * grid(rng) : cx + small(rng);
+      v.y = trial % 4 == 0 ? std::floor(cy) + 0.25f * grid(rng) : cy + small(rng);
+    }
+    cpu::ProjectedVertex projected[3];
+    const cpu::ProjectedVertex* sv[3];
+    const raster::ScreenVertex* tri[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      projected[k] = { verts[k].x, verts[k].y, 0.0f, 1.0f };
+      sv[k] = &projected[k];
+      tri[k] = &verts[k];
+    }
+    const cpu::PolygonTests t = cpu::TestPolygon<3>(sv, 3, width, height, true);
+    if (!t.hasRow || t.rejected || t.j1 - t.j0 != 1)
+    {
+      continue;
+    }
+    int pixels = 0, lastColumn = -1, lastRow = -1;
+    raster::ScanTriangle<raster::kAttrFirst>(width, tri, 0, height, [](int, int) {},
+      [&](int j, int i, const float*)
+      {
+        ++pixels;
+        lastRow = j;
+        lastColumn = i;
+      });
+    SCOPED_TRACE("trial " + std::to_string(trial));
+    ASSERT_EQ(t.noPixel, pixels == 0);
+    // The one pixel binning hands the draw is the scan's one pixel.
+    ASSERT_EQ(t.column >= 0, pixels == 1);
+    if (pixels == 1)
+    {
+      ASSERT_EQ(t.column, lastColumn);
+      ASSERT_EQ(t.j0, lastRow);
+      // And drawn from that hint, the same pixel with the same attributes.
+      float full[raster::kMaxAttributes] = {}, hinted[raster::kMaxAttributes] = {};
+      for (int k = 0; k < 3; ++k)
+      {
+        verts[k].a[raster::kAttrZ] = 0.1f * static_cast<float>(k + 1);
+        verts[k].a[raster::kAttrInvW] = 1.0f;
+      }
+      int hintedPixels = 0;
+      raster::ScanTriangle<raster::kAttrFirst>(width, tri, 0, height, [](int, int) {},
+        [&](int, int, const float* a) { std::copy(a, a + raster::kAttrFirst, full); });
+      raster::ScanTriangle<raster::kAttrFirst>(width, tri, t.j0, t.j0 + 1, [](int, int) {},
+        [&](int j, int i, const float* a)
+        {
+          ++hintedPixels;
+          ASSERT_EQ(j, lastRow);
+          ASSERT_EQ(i, lastColumn);
+          std::copy(a, a + raster::kAttrFirst, hinted);
+        },
+        nullptr, t.column);
+      ASSERT_EQ(hintedPixels, 1);
+      for (int k = 0; k < raster::kAttrFirst; ++k)
+      {
+        ASSERT_EQ(full[k], hinted[k]);
+      }
+    }
+    ++oneRow;
+    dropped += t.noPixel;
+    drawn += pixels > 0;
+    single += pixels == 1;
+  }
+  // Every outcome, many times each.
+  EXPECT_GT(oneRow, 50000);
+  EXPECT_GT(dropped, oneRow / 10);
+  EXPECT_GT(drawn, oneRow / 10);
+  EXPECT_GT(single, oneRow / 10);
+}

@@ -167,6 +167,75 @@ inline void CanonicalEdge(const ScreenVertex*& p, const ScreenVertex*& q)
   }
 }
 
+/// A triangle's edges as the plane scan crosses them, and one row's span:
+/// ScanTriangle draws with these, and binning asks them whether a triangle
+/// of one pixel row covers a pixel centre (TestPolygon), so the two agree
+/// bit for bit. The edges are in canonical order (CanonicalEdge) without
+/// its swap, a coin toss for the branch predictor on triangles of a pixel
+/// or less: the order only picks the base point (the lower end), since a
+/// horizontal edge is never crossed and the slope is the same quotient
+/// from either end (both differences change sign exactly): every crossing
+/// is the one CanonicalEdge's order gives, bit for bit.
+struct TriangleEdges
+{
+  struct Edge
+  {
+    float px, py, qy, invSlope;
+  };
+  Edge edges[3];
+
+  /// V: anything with float x, y (ScreenVertex, ProjectedVertex).
+  template<typename V>
+  explicit TriangleEdges(const V* const* verts)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const V& p = *verts[k];
+      const V& q = *verts[k + 1 < 3 ? k + 1 : 0];
+      const bool pLower = p.y <= q.y;
+      this->edges[k] = { pLower ? p.x : q.x, std::min(p.y, q.y), std::max(p.y, q.y),
+        InverseSlope(p.x, p.y, q.x, q.y) };
+    }
+  }
+
+  float YMin() const
+  {
+    return std::min(this->edges[0].py, std::min(this->edges[1].py, this->edges[2].py));
+  }
+  float YMax() const
+  {
+    return std::max(this->edges[0].qy, std::max(this->edges[1].qy, this->edges[2].qy));
+  }
+
+  /// Row j's crossings xl <= xr (the first two edges crossing yc = j +
+  /// 0.5, half-open in y) and its pixels [i0, i1) within [0, width); false
+  /// when the row has no pixel centre inside. TestFourTriangles computes
+  /// the same lane for lane.
+  bool Span(int j, int width, float& xl, float& xr, int& i0, int& i1) const
+  {
+    const float yc = static_cast<float>(j) + 0.5f;
+    float xs[2];
+    int nc = 0;
+    for (int k = 0; k < 3 && nc < 2; ++k)
+    {
+      const Edge& e = this->edges[k];
+      if (e.py <= yc && yc < e.qy)
+      {
+        xs[nc++] = CrossingX(e.px, e.py, e.invSlope, yc);
+      }
+    }
+    if (nc < 2)
+    {
+      return false;
+    }
+    xl = std::min(xs[0], xs[1]);
+    xr = std::max(xs[0], xs[1]);
+    i0 = std::max(0, CeilToInt(xl - 0.5f));
+    i1 = std::min(width, CeilToInt(xr - 0.5f));
+    return i1 > i0;
+  }
+};
+
 /// Sorts a scanline's few crossings by x (insertion sort: n is small).
 template<typename Crossing>
 void SortCrossings(Crossing* cross, int n)
@@ -251,7 +320,8 @@ void ScanTriangle(int width,
   int rowEnd,
   SpanFn&& beginSpan,
   PixelFn&& pixel,
-  SpanTrace* trace = nullptr)
+  SpanTrace* trace = nullptr,
+  int column = -1)
 {
   const ScreenVertex& v0 = *verts[0];
   const ScreenVertex& v1 = *verts[1];
@@ -269,56 +339,11 @@ void ScanTriangle(int width,
   double invDet = 0, d1[NA] = {}, d2[NA] = {};
   float stepX[NA] = {};
   bool differences = false, gradient = false;
-  // The edges in canonical order (CanonicalEdge) without its swap, a coin
-  // toss for the branch predictor on triangles of a pixel or less: the
-  // order only picks the base point (the lower end), since a horizontal
-  // edge is never crossed and the slope is the same quotient from either
-  // end (both differences change sign exactly): every crossing is the
-  // one CanonicalEdge's order gives, bit for bit. (Selecting a row's two
-  // crossings without branches as well cost larger triangles more than it
-  // saved: x1.05 on the 100k torus.)
-  struct Edge
-  {
-    float px, py, qy, invSlope;
-  };
-  Edge edges[3];
-  for (int k = 0; k < 3; ++k)
-  {
-    const ScreenVertex& p = *verts[k];
-    const ScreenVertex& q = *verts[k + 1 < 3 ? k + 1 : 0];
-    const bool pLower = p.y <= q.y;
-    edges[k] = { pLower ? p.x : q.x, std::min(p.y, q.y), std::max(p.y, q.y),
-      InverseSlope(p.x, p.y, q.x, q.y) };
-  }
-  const float ymin = std::min(edges[0].py, std::min(edges[1].py, edges[2].py));
-  const float ymax = std::max(edges[0].qy, std::max(edges[1].qy, edges[2].qy));
-  const int j0 = std::max(rowBegin, CeilToInt(ymin - 0.5f));
-  const int j1 = std::min(rowEnd, CeilToInt(ymax - 0.5f));
   float value[kMaxAttributes] = {}; // full size: pixel functors index by slot
-  for (int j = j0; j < j1; ++j)
+  // Row j's pixels [i0, i1), its crossings xl, xr (for the trace).
+  auto drawSpan = [&](int j, int i0, int i1, float xl, float xr)
   {
     const float yc = static_cast<float>(j) + 0.5f;
-    float xs[2];
-    int nc = 0;
-    for (int k = 0; k < 3 && nc < 2; ++k)
-    {
-      const Edge& e = edges[k];
-      if (e.py <= yc && yc < e.qy)
-      {
-        xs[nc++] = CrossingX(e.px, e.py, e.invSlope, yc);
-      }
-    }
-    if (nc < 2)
-    {
-      continue;
-    }
-    const float xl = std::min(xs[0], xs[1]), xr = std::max(xs[0], xs[1]);
-    const int i0 = std::max(0, CeilToInt(xl - 0.5f));
-    const int i1 = std::min(width, CeilToInt(xr - 0.5f));
-    if (i1 <= i0)
-    {
-      continue;
-    }
     if (!differences)
     {
       invDet = 1.0 / det;
@@ -375,6 +400,28 @@ void ScanTriangle(int width,
       {
         value[k] += stepX[k];
       }
+    }
+  };
+  if (column >= 0 && !trace)
+  {
+    // Binning found the one pixel (TestPolygon: one row, the span
+    // TriangleEdges::Span finds holds this column only).
+    drawSpan(rowBegin, column, column + 1, 0.0f, 0.0f);
+    return;
+  }
+  // Its edges and each row's span: TriangleEdges. (Selecting a row's two
+  // crossings without branches cost larger triangles more than it saved:
+  // x1.05 on the 100k torus.)
+  const TriangleEdges edges(verts);
+  const int j0 = std::max(rowBegin, CeilToInt(edges.YMin() - 0.5f));
+  const int j1 = std::min(rowEnd, CeilToInt(edges.YMax() - 0.5f));
+  for (int j = j0; j < j1; ++j)
+  {
+    float xl, xr;
+    int i0, i1;
+    if (edges.Span(j, width, xl, xr, i0, i1))
+    {
+      drawSpan(j, i0, i1, xl, xr);
     }
   }
 }
@@ -487,16 +534,18 @@ bool ScanTriangleOf(int na,
   int rowEnd,
   SpanFn&& beginSpan,
   PixelFn&& pixel,
-  SpanTrace* trace)
+  SpanTrace* trace,
+  int column)
 {
   if constexpr (NA <= kMaxAttributes)
   {
     if (na == NA)
     {
-      ScanTriangle<NA>(width, verts, rowBegin, rowEnd, beginSpan, pixel, trace);
+      ScanTriangle<NA>(width, verts, rowBegin, rowEnd, beginSpan, pixel, trace, column);
       return true;
     }
-    return ScanTriangleOf<NA + 1>(na, width, verts, rowBegin, rowEnd, beginSpan, pixel, trace);
+    return ScanTriangleOf<NA + 1>(
+      na, width, verts, rowBegin, rowEnd, beginSpan, pixel, trace, column);
   }
   return false;
 }
@@ -505,6 +554,7 @@ bool ScanTriangleOf(int na,
  * Scan-converts one polygon part (a triangle, or a whole polygon with
  * --polygons direct) into rows [rowBegin, rowEnd): beginSpan(j, i0) at the
  * start of every span, pixel(j, i, attributes) at every pixel centre inside.
+ * column >= 0: a triangle whose one pixel binning found, in row rowBegin.
  */
 template<typename PixelFn, typename SpanFn>
 void ScanConvert(int width,
@@ -515,7 +565,8 @@ void ScanConvert(int width,
   int rowEnd,
   SpanFn&& beginSpan,
   PixelFn&& pixel,
-  SpanTrace* trace = nullptr)
+  SpanTrace* trace = nullptr,
+  int column = -1)
 {
   // The attribute count is fixed per frame; a compile-time count lets the
   // span loop unroll. Every count has its instance (colour by data adds a
@@ -523,7 +574,7 @@ void ScanConvert(int width,
   // ScanPolygon's per-row crossings and sort).
   if (n != 3 ||
     !ScanTriangleOf<kAttrFirst>(
-      kAttrFirst + numAttributes, width, verts, rowBegin, rowEnd, beginSpan, pixel, trace))
+      kAttrFirst + numAttributes, width, verts, rowBegin, rowEnd, beginSpan, pixel, trace, column))
   {
     ScanPolygon(width, numAttributes, verts, n, rowBegin, rowEnd, beginSpan, pixel, trace);
   }

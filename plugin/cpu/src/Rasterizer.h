@@ -375,7 +375,7 @@ private:
     state.covered += render::ToDisplayBytes(F.Opt.display, F.Rgb, F.Covered, first, last, F.DisplayBytes);
   }
 
-  /// A bin's entry: polygon p shifted left by kEntryFlagBits, and what
+  /// A bin's entry: polygon p shifted left by kEntryShift, and what
   /// binning found about it in the low bits, so that drawing neither reads
   /// the near-plane flags nor sums the area and bounds again in every band.
   static constexpr int kEntryFlagBits = 3;
@@ -387,7 +387,23 @@ private:
   /// (Without kEntryMayClip) the polygon's first band, which counts it: the
   /// counters do not depend on the thread count.
   static constexpr int64_t kEntryOwner = 4;
-  static int64_t BinEntry(int64_t p, int64_t flags) { return p << kEntryFlagBits | flags; }
+  /// Above the flags, 1 + the column of a triangle's one pixel when
+  /// binning found it (PolygonTests::column), else 0: 17 bits hold every
+  /// column of the widest frame (kMaxImageSize x kMaxSupersampling =
+  /// 65,536 px); the polygon id above them.
+  static constexpr int kEntryColumnBits = 17;
+  static constexpr int kEntryShift = kEntryFlagBits + kEntryColumnBits;
+  static constexpr int64_t kEntryColumnMask = (int64_t(1) << kEntryColumnBits) - 1;
+  static int64_t BinEntry(int64_t p, int64_t flags, int column = -1)
+  {
+    const int64_t known = column >= 0 && column < kEntryColumnMask ? column + 1 : 0;
+    return p << kEntryShift | known << kEntryFlagBits | flags;
+  }
+  static int64_t EntryPolygon(int64_t entry) { return entry >> kEntryShift; }
+  static int EntryColumn(int64_t entry)
+  {
+    return static_cast<int>(entry >> kEntryFlagBits & kEntryColumnMask) - 1;
+  }
 
   /// Draws one bin list's polygons in order. A band's polygons lie all over
   /// the index range (a band is a latitude of a sphere whose polygons go
@@ -401,7 +417,7 @@ private:
     const auto& offsets = F.MeshData->offsets;
     const auto& conn = F.MeshData->connectivity;
     const size_t m = list.size();
-    auto id = [&](size_t e) { return list[e] >> kEntryFlagBits; };
+    auto id = [&](size_t e) { return EntryPolygon(list[e]); };
     for (size_t e = 0; e < m; ++e)
     {
       if (e + kAheadOffsets < m)
@@ -500,9 +516,9 @@ private:
         const Facing facing = (tests.degenerate >> t & 1) ? Facing::Degenerate
           : (tests.back >> t & 1)                           ? Facing::Back
                                                             : Facing::Front;
-        degenerate += this->BinTested(p + t, ids[t], 3, tests.j0[t], tests.j1[t],
-          (tests.hasRow >> t & 1) != 0, (tests.rejected >> t & 1) != 0,
-          (tests.noColumn >> t & 1) != 0, facing, lists, state);
+        const PolygonTests lane{ tests.j0[t], tests.j1[t], (tests.hasRow >> t & 1) != 0,
+          (tests.rejected >> t & 1) != 0, (tests.noPixel >> t & 1) != 0, 0.0, tests.column[t] };
+        degenerate += this->BinTested(p + t, ids[t], 3, lane, facing, lists, state);
       }
     }
 #endif
@@ -575,8 +591,7 @@ private:
     // finer than the pixels, ParaView's 1M sphere at 1080p, fall between
     // pixel rows or columns), and its facing.
     const PolygonTests t = TestPolygon<N>(sv, count, F.Width, F.Height, this->ColumnTest);
-    return this->BinTested(p, ids, count, t.j0, t.j1, t.hasRow, t.rejected, t.noColumn,
-      FacingOf(t.twiceArea), lists, state);
+    return this->BinTested(p, ids, count, t, FacingOf(t.twiceArea), lists, state);
   }
 
   /// Rows [rowBegin, rowEnd) that polygon `first`'s part in front of the
@@ -644,13 +659,13 @@ private:
   /// polygon counts unless it was rejected in x or depth, a culled back
   /// face only where it reaches a pixel; the facing of the others goes in
   /// the entry. Returns 1 for a counted degenerate polygon.
-  int64_t BinTested(int64_t p, const int64_t* ids, int count, int j0, int j1, bool hasRow,
-    bool rejected, bool noColumn, Facing facing, std::vector<int64_t>* lists, ThreadState& state)
+  int64_t BinTested(int64_t p, const int64_t* ids, int count, const PolygonTests& t,
+    Facing facing, std::vector<int64_t>* lists, ThreadState& state)
   {
-    const bool reaches = hasRow & !rejected & !noColumn;
+    const bool reaches = t.hasRow & !t.rejected & !t.noPixel;
     if (facing == Facing::Degenerate)
     {
-      return !(hasRow & rejected);
+      return !(t.hasRow & t.rejected);
     }
     if (facing == Facing::Back && F.CullBack)
     {
@@ -666,9 +681,10 @@ private:
       this->Buffers.Needed[ids[k]].store(1, std::memory_order_relaxed);
     }
     const int64_t flags = facing == Facing::Back ? kEntryBack : 0;
-    for (int b = j0 / kBandRows; b <= (j1 - 1) / kBandRows; ++b)
+    for (int b = t.j0 / kBandRows; b <= (t.j1 - 1) / kBandRows; ++b)
     {
-      lists[b].push_back(BinEntry(p, flags | (b == j0 / kBandRows ? kEntryOwner : 0)));
+      lists[b].push_back(
+        BinEntry(p, flags | (b == t.j0 / kBandRows ? kEntryOwner : 0), t.column));
       ++state.binned;
     }
     return 0;
@@ -677,7 +693,7 @@ private:
   /// Draws the pixels of a bin entry's polygon in one band.
   void DrawSourcePolygon(int64_t entry, int band, ThreadState& state)
   {
-    const int64_t p = entry >> kEntryFlagBits;
+    const int64_t p = EntryPolygon(entry);
     const auto& offsets = F.MeshData->offsets;
     const auto& conn = F.MeshData->connectivity;
     const int64_t first = offsets[p];
@@ -704,7 +720,7 @@ private:
         verts[k] = &this->Screen[ids[k]];
       }
       this->DrawInBand(p, (entry & kEntryBack) != 0, (entry & kEntryOwner) != 0, false, verts,
-        ids, n, band, state);
+        ids, n, band, state, EntryColumn(entry));
       return;
     }
     bool anyBehind = false;
@@ -824,7 +840,8 @@ private:
     int64_t* ids,
     int count,
     int band,
-    ThreadState& state)
+    ThreadState& state,
+    int column = -1)
   {
     state.clippedPolygons += owner && wasClipped;
     state.rasterized += owner;
@@ -833,6 +850,7 @@ private:
     // faces: vertices relit with flipped normals into `relit`).
     ScreenVertex relit[kMaxPolygonVertices];
     auto polygon = this->Stage.BeginPolygon(p, back, verts, ids, count, relit);
+    polygon.column = count == 3 ? column : -1; // (binning's, for a triangle)
     // Scan-convert each part into this band's rows.
     const int bandBegin = band * kBandRows, bandEnd = std::min(F.Height, bandBegin + kBandRows);
     auto drawPart = [&](const ScreenVertex* const* partVerts, const int64_t* partIds, int m)

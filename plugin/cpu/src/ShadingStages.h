@@ -36,6 +36,9 @@ struct StageBase
   {
     int64_t id;
     bool back;
+    /// A triangle of one pixel binning found (Rasterizer::DrawInBand):
+    /// its column, in the part's one row; -1 otherwise.
+    int column = -1;
   };
   Polygon BeginPolygon(int64_t p,
     bool back,
@@ -60,6 +63,7 @@ struct StageBase
     int n,
     int rowBegin,
     int rowEnd,
+    int column,
     SpanFn&& beginSpan,
     PixelFn&& pixel) const
   {
@@ -68,7 +72,7 @@ struct StageBase
       this->ScanTraced(verts, n, rowBegin, rowEnd, beginSpan, pixel);
       return;
     }
-    this->ScanWith(verts, n, rowBegin, rowEnd, beginSpan, pixel, nullptr);
+    this->ScanWith(verts, n, rowBegin, rowEnd, beginSpan, pixel, nullptr, column);
   }
 
   template<typename SpanFn, typename PixelFn>
@@ -78,7 +82,8 @@ struct StageBase
     int rowEnd,
     SpanFn&& beginSpan,
     PixelFn&& pixel,
-    raster::SpanTrace* spans) const
+    raster::SpanTrace* spans,
+    int column = -1) const
   {
     if (F.Opt.scan == render::ScanConversion::Incremental)
     {
@@ -94,7 +99,8 @@ struct StageBase
       }
       return;
     }
-    ScanConvert(F.Width, F.NumAttributes, verts, n, rowBegin, rowEnd, beginSpan, pixel, spans);
+    ScanConvert(
+      F.Width, F.NumAttributes, verts, n, rowBegin, rowEnd, beginSpan, pixel, spans, column);
   }
 
   /// Scan, recording the traced row (Frame::Trace): the span ends the scan
@@ -144,9 +150,10 @@ struct StageBase
   }
   /// The same, for stages with nothing to do at the start of a span.
   template<typename PixelFn>
-  void Scan(const ScreenVertex* const* verts, int n, int rowBegin, int rowEnd, PixelFn&& pixel) const
+  void Scan(const ScreenVertex* const* verts, int n, int rowBegin, int rowEnd, int column,
+    PixelFn&& pixel) const
   {
-    this->Scan(verts, n, rowBegin, rowEnd, [](int, int) {}, pixel);
+    this->Scan(verts, n, rowBegin, rowEnd, column, [](int, int) {}, pixel);
   }
 };
 
@@ -163,12 +170,12 @@ struct CoverageStage : StageBase
   void DrawPart(const ScreenVertex* const* verts,
     const int64_t*,
     int n,
-    Polygon&,
+    Polygon& poly,
     int rowBegin,
     int rowEnd,
     ThreadState&) const
   {
-    this->Scan(verts, n, rowBegin, rowEnd,
+    this->Scan(verts, n, rowBegin, rowEnd, poly.column,
       [&](int j, int i, const float*)
       {
         const size_t pix = static_cast<size_t>(j) * F.Width + i;
@@ -200,10 +207,8 @@ inline Vec3f AreaVectorOf(const render::Mesh& mesh, int64_t p)
 /// where a polygon's own Shade calls cost tens.
 struct FlatStage : StageBase
 {
-  struct Polygon
+  struct Polygon : StageBase::Polygon
   {
-    int64_t id;
-    bool back;
     bool queued = false; ///< small: pixels go to the SIMD queue
     bool valid = false;  ///< the fields below are computed
     Vec3f color;  ///< the polygon's intensity; with point scalars I(0); queued: rho
@@ -243,7 +248,9 @@ struct FlatStage : StageBase
     int count,
     ScreenVertex*) const
   {
-    Polygon poly{ p, back, false, false, Vec3f(), Vec3f(), Vec3f(), Vec3f() };
+    Polygon poly;
+    poly.id = p;
+    poly.back = back;
     poly.queued = std::abs(raster::TwiceSignedArea(verts, count)) * 0.5 <= kQueuedArea;
     return poly;
   }
@@ -331,7 +338,7 @@ struct FlatStage : StageBase
     ThreadState& state) const
   {
     PixelQueue& q = state.queue;
-    this->Scan(verts, n, rowBegin, rowEnd,
+    this->Scan(verts, n, rowBegin, rowEnd, poly.column,
       [&](int j, int i, const float* a)
       {
         float* out = F.DepthTest(j, i, a, state);
@@ -498,7 +505,7 @@ struct GouraudStage : StageBase
     ThreadState& state) const
   {
     const Vec3f cellRho = F.CellScalars() ? F.CellColorOf(poly.id) : Vec3f();
-    this->Scan(verts, n, rowBegin, rowEnd,
+    this->Scan(verts, n, rowBegin, rowEnd, poly.column,
       [&](int j, int i, const float* a)
       {
         if (float* out = F.DepthTest(j, i, a, state))
@@ -602,7 +609,7 @@ struct PhongStage : StageBase
     const Vec3f cellRho = F.CellScalars() ? F.CellColorOf(poly.id) : Vec3f();
     int64_t shaded = 0;
     PixelQueue& q = state.queue;
-    this->Scan(verts, n, rowBegin, rowEnd,
+    this->Scan(verts, n, rowBegin, rowEnd, poly.column,
       [&](int j, int i, const float* a)
       {
         float* out = F.DepthTest(j, i, a, state);

@@ -850,7 +850,7 @@ private:
     // faces: vertices relit with flipped normals into `relit`).
     ScreenVertex relit[kMaxPolygonVertices];
     auto polygon = this->Stage.BeginPolygon(p, back, verts, ids, count, relit);
-    polygon.column = count == 3 ? column : -1; // (binning's, for a triangle)
+    polygon.column = column; // binning's (a triangle's, or -1)
     // Scan-convert each part into this band's rows.
     const int bandBegin = band * kBandRows, bandEnd = std::min(F.Height, bandBegin + kBandRows);
     auto drawPart = [&](const ScreenVertex* const* partVerts, const int64_t* partIds, int m)

@@ -5,8 +5,8 @@
 // triangles made to sit on the rules' edges: vertices on pixel centres and
 // half-integers, sub-pixel and zero-area triangles, areas around
 // kDegenerateArea, negative, huge, infinite and NaN coordinates. And the
-// span test binning makes on triangles of one pixel row against the scan
-// that draws them (raster::ScanTriangle): binning drops exactly the
+// span test binning makes on triangles of a few pixel rows against the
+// scan that draws them (raster::ScanTriangle): binning drops exactly the
 // triangles that would draw no pixel.
 #include "BinFour.h"
 
@@ -95,7 +95,8 @@ TEST(BinFourTest, EveryLaneIsTheScalarTestBitForBit)
         ASSERT_EQ((four.hasRow >> t & 1) != 0, s.hasRow);
         ASSERT_EQ((four.rejected >> t & 1) != 0, s.rejected);
         ASSERT_EQ((four.noPixel >> t & 1) != 0, s.noPixel);
-        ASSERT_EQ(four.column[t], s.column);
+        ASSERT_EQ(four.pixel[t].column, s.pixel.column);
+        ASSERT_EQ(four.pixel[t].row, s.pixel.row);
         ASSERT_EQ((four.degenerate >> t & 1) != 0, sDegenerate);
         if (!sDegenerate)
         {
@@ -105,8 +106,8 @@ TEST(BinFourTest, EveryLaneIsTheScalarTestBitForBit)
         rows += s.hasRow;
         degenerate += sDegenerate;
         back += !sDegenerate && s.twiceArea > 0;
-        // Dropped by the one-row span test, not by the column test.
-        emptySpan += columnTest && s.noPixel && s.j1 - s.j0 == 1 &&
+        // Dropped by the span test, not by the column test.
+        emptySpan += columnTest && s.noPixel && s.hasRow && s.j1 - s.j0 <= cpu::kBinSpanRows &&
           !cpu::TestPolygon<3>(sv, 3, width, height, false).noPixel &&
           raster::CeilToInt(std::max({ sv[0]->x, sv[1]->x, sv[2]->x }) - 0.5f +
             cpu::kBinColumnMargin) >
@@ -124,28 +125,34 @@ TEST(BinFourTest, EveryLaneIsTheScalarTestBitForBit)
 }
 #endif
 
-// Binning's span test says "no pixel" for a triangle of one pixel row
-// exactly when the scan that would draw it finds no pixel, and hands the
-// draw the column of a single pixel exactly when the scan finds one, that
-// one, with the same attributes: on sub-pixel
-// triangles scattered over a frame, many with vertices on pixel centres
-// and half-integers, where a crossing lands on a centre.
-TEST(BinFourTest, OneRowSpanTestIsTheScansOwn)
+// Binning's span test says "no pixel" for a triangle of at most
+// kBinSpanRows pixel rows exactly when the scan that would draw it finds no
+// pixel, and hands the draw the row and column of a single pixel exactly
+// when the scan finds one, that one, with the same attributes: on
+// sub-pixel and pixel-sized triangles scattered over a frame, many with
+// vertices on pixel centres and half-integers, where a crossing lands on a
+// centre.
+TEST(BinFourTest, FewRowSpanTestIsTheScansOwn)
 {
   const int width = 64, height = 48;
   std::mt19937 rng(20261205);
-  std::uniform_real_distribution<float> at(-2.0f, 66.0f), small(-0.9f, 0.9f);
-  std::uniform_int_distribution<int> grid(-8, 8);
-  int oneRow = 0, dropped = 0, drawn = 0, single = 0;
-  for (int trial = 0; trial < 200000; ++trial)
+  std::uniform_real_distribution<float> at(-2.0f, 66.0f), small(-0.9f, 0.9f), large(-1.6f, 1.6f);
+  std::uniform_int_distribution<int> grid(-8, 8), wideGrid(-12, 12);
+  int tested = 0, dropped = 0, drawn = 0, single = 0;
+  int byRows[cpu::kBinSpanRows + 1] = {}, singleBelowFirstRow = 0;
+  for (int trial = 0; trial < 300000; ++trial)
   {
     raster::ScreenVertex verts[3] = {};
     const float cx = at(rng), cy = at(rng) * 0.75f;
+    const bool wide = trial % 2 == 1; // up to ~3 rows
     for (auto& v : verts)
     {
       // Every fourth triangle on a quarter-pixel grid, crossings on centres.
-      v.x = trial % 4 == 0 ? std::floor(cx) + 0.25f * grid(rng) : cx + small(rng);
-      v.y = trial % 4 == 0 ? std::floor(cy) + 0.25f * grid(rng) : cy + small(rng);
+      const bool onGrid = trial % 4 < 2;
+      v.x = onGrid ? std::floor(cx) + 0.25f * (wide ? wideGrid(rng) : grid(rng))
+                   : cx + (wide ? large(rng) : small(rng));
+      v.y = onGrid ? std::floor(cy) + 0.25f * (wide ? wideGrid(rng) : grid(rng))
+                   : cy + (wide ? large(rng) : small(rng));
     }
     cpu::ProjectedVertex projected[3];
     const cpu::ProjectedVertex* sv[3];
@@ -157,7 +164,8 @@ TEST(BinFourTest, OneRowSpanTestIsTheScansOwn)
       tri[k] = &verts[k];
     }
     const cpu::PolygonTests t = cpu::TestPolygon<3>(sv, 3, width, height, true);
-    if (!t.hasRow || t.rejected || t.j1 - t.j0 != 1)
+    const int rows = t.j1 - t.j0;
+    if (!t.hasRow || t.rejected || rows > cpu::kBinSpanRows)
     {
       continue;
     }
@@ -172,12 +180,13 @@ TEST(BinFourTest, OneRowSpanTestIsTheScansOwn)
     SCOPED_TRACE("trial " + std::to_string(trial));
     ASSERT_EQ(t.noPixel, pixels == 0);
     // The one pixel binning hands the draw is the scan's one pixel.
-    ASSERT_EQ(t.column >= 0, pixels == 1);
+    ASSERT_EQ(t.pixel.column >= 0, pixels == 1);
     if (pixels == 1)
     {
-      ASSERT_EQ(t.column, lastColumn);
-      ASSERT_EQ(t.j0, lastRow);
-      // And drawn from that hint, the same pixel with the same attributes.
+      ASSERT_EQ(t.pixel.column, lastColumn);
+      ASSERT_EQ(t.j0 + t.pixel.row, lastRow);
+      // And drawn from that hint over the triangle's rows, the same pixel
+      // with the same attributes.
       float full[raster::kMaxAttributes] = {}, hinted[raster::kMaxAttributes] = {};
       for (int k = 0; k < 3; ++k)
       {
@@ -187,7 +196,7 @@ TEST(BinFourTest, OneRowSpanTestIsTheScansOwn)
       int hintedPixels = 0;
       raster::ScanTriangle<raster::kAttrFirst>(width, tri, 0, height, [](int, int) {},
         [&](int, int, const float* a) { std::copy(a, a + raster::kAttrFirst, full); });
-      raster::ScanTriangle<raster::kAttrFirst>(width, tri, t.j0, t.j0 + 1, [](int, int) {},
+      raster::ScanTriangle<raster::kAttrFirst>(width, tri, t.j0, t.j1, [](int, int) {},
         [&](int j, int i, const float* a)
         {
           ++hintedPixels;
@@ -195,21 +204,28 @@ TEST(BinFourTest, OneRowSpanTestIsTheScansOwn)
           ASSERT_EQ(i, lastColumn);
           std::copy(a, a + raster::kAttrFirst, hinted);
         },
-        nullptr, t.column);
+        nullptr, t.pixel);
       ASSERT_EQ(hintedPixels, 1);
       for (int k = 0; k < raster::kAttrFirst; ++k)
       {
         ASSERT_EQ(full[k], hinted[k]);
       }
+      singleBelowFirstRow += t.pixel.row > 0;
     }
-    ++oneRow;
+    ++tested;
+    ++byRows[rows];
     dropped += t.noPixel;
     drawn += pixels > 0;
     single += pixels == 1;
   }
-  // Every outcome, many times each.
-  EXPECT_GT(oneRow, 50000);
-  EXPECT_GT(dropped, oneRow / 10);
-  EXPECT_GT(drawn, oneRow / 10);
-  EXPECT_GT(single, oneRow / 10);
+  // Every outcome, many times each, and every row count.
+  EXPECT_GT(tested, 100000);
+  EXPECT_GT(dropped, tested / 10);
+  EXPECT_GT(drawn, tested / 10);
+  EXPECT_GT(single, tested / 10);
+  EXPECT_GT(singleBelowFirstRow, tested / 50);
+  for (int r = 1; r <= cpu::kBinSpanRows; ++r)
+  {
+    EXPECT_GT(byRows[r], tested / 20) << r << " rows";
+  }
 }

@@ -38,17 +38,26 @@ struct ProjectedVertex
 /// the rows: no column test there.)
 inline constexpr float kBinColumnMargin = 1.0f / 16.0f;
 
+/// Triangles of at most this many pixel rows get binning's span test
+/// (TestPolygon). On ParaView's 1M sphere at 1080p, of the ~409,000
+/// triangles in view that reach a pixel row and column, those of one row
+/// are half and those of two nearly all the rest: ~200,000 two-row ones,
+/// 76,000 of them with no pixel centre inside and 102,000 with one. Three
+/// rows take in the few thousand more of a pixel or none; beyond that a
+/// triangle mostly has pixels, and the test would only cost.
+inline constexpr int kBinSpanRows = 3;
+
 /// One polygon's binning tests (Rasterizer::BinPolygon's), from its
 /// vertices' screen bounds: rows [j0, j1) (in [0, height]); rejected: left,
 /// right or beyond the far plane (DrawPolygon's trivial reject, same test,
 /// same floats); noPixel, with columnTest (the plane scan,
 /// Rasterizer::ColumnTest): no pixel centre i + 0.5 in [xmin, xmax), as
-/// between rows, or a triangle of one pixel row whose span in that row
-/// (raster::TriangleEdges::Span, the scan's own test) holds no pixel
-/// centre; and twice its signed area (raster::TwiceSignedArea), whose
-/// facing FacingOf reads. column: where that one row's span holds a single
-/// pixel, its column (the draw then scans nothing: ScanTriangle's
-/// column); -1 otherwise.
+/// between rows, or a triangle of at most kBinSpanRows rows whose span in
+/// each row (raster::TriangleEdges::Span, the scan's own test) holds no
+/// pixel centre; and twice its signed area (raster::TwiceSignedArea), whose
+/// facing FacingOf reads. pixel: where those spans hold a single pixel,
+/// its row (from j0) and column (the draw then scans nothing:
+/// ScanTriangle's onePixel); column -1 otherwise.
 ///
 /// The span test: ParaView's 1M sphere at 1080p has ~409,000 triangles in
 /// view that reach a pixel row and column for 291,000 covered pixels; a
@@ -60,7 +69,7 @@ struct PolygonTests
   int j0, j1;
   bool hasRow, rejected, noPixel;
   double twiceArea;
-  int column = -1;
+  raster::OnePixel pixel;
 };
 
 /// The scalar tests, for n vertices (N = n known at compile time, or 0).
@@ -88,12 +97,23 @@ inline PolygonTests TestPolygon(
   t.rejected = (xmax < 0) | (xmin > width) | (zmin > 1.0f);
   t.noPixel = columnTest &
     (CeilToInt(xmax - 0.5f + kBinColumnMargin) <= CeilToInt(xmin - 0.5f - kBinColumnMargin));
-  if (columnTest && count == 3 && t.j1 - t.j0 == 1 && !t.noPixel)
+  if (columnTest && count == 3 && t.hasRow && t.j1 - t.j0 <= kBinSpanRows && !t.noPixel)
   {
-    float xl, xr;
-    int i0, i1;
-    t.noPixel = !raster::TriangleEdges(sv).Span(t.j0, width, xl, xr, i0, i1);
-    t.column = !t.noPixel && i1 - i0 == 1 ? i0 : -1;
+    const raster::TriangleEdges edges(sv);
+    int pixels = 0;
+    raster::OnePixel last;
+    for (int r = 0; r < t.j1 - t.j0; ++r)
+    {
+      float xl, xr;
+      int i0, i1;
+      if (edges.Span(t.j0 + r, width, xl, xr, i0, i1))
+      {
+        pixels += i1 - i0;
+        last = { r, i0 };
+      }
+    }
+    t.noPixel = pixels == 0;
+    t.pixel = pixels == 1 ? last : raster::OnePixel{};
   }
   t.twiceArea = raster::TwiceSignedArea(sv, count);
   return t;
@@ -107,7 +127,7 @@ struct FourTriangleTests
   int hasRow = 0, rejected = 0, noPixel = 0;
   int degenerate = 0; ///< FacingOf's Degenerate: no area, or not finite
   int back = 0;       ///< positive twice-signed area (y down): a back face
-  int column[4] = { -1, -1, -1, -1 }; ///< PolygonTests::column
+  raster::OnePixel pixel[4]; ///< PolygonTests::pixel
 };
 
 #if defined(__SSE2__)
@@ -140,11 +160,11 @@ inline __m128i AtMost4(__m128i a, __m128i hi)
   return _mm_or_si128(_mm_and_si128(below, a), _mm_andnot_si128(below, hi));
 }
 
-/// Bit t set where row j[t] of triangle t (vertices x[k], y[k] lane t)
-/// holds no pixel centre: raster::TriangleEdges::Span lane for lane, the
-/// same float operations in the same order; column[t] the one pixel's
-/// column where the row holds exactly one, else -1.
-inline int NoPixelInRow4(const __m128 x[3], const __m128 y[3], __m128i j, int width, int column[4])
+/// The pixels of row j[t] of triangle t (vertices x[k], y[k] lane t), 0
+/// where its span holds no pixel centre, and in i0 the span's first
+/// column: raster::TriangleEdges::Span lane for lane, the same float
+/// operations in the same order.
+inline __m128i RowPixels4(const __m128 x[3], const __m128 y[3], __m128i j, int width, __m128i& i0)
 {
   const __m128 half = _mm_set1_ps(0.5f);
   const __m128 yc = _mm_add_ps(_mm_cvtepi32_ps(j), half);
@@ -171,15 +191,57 @@ inline int NoPixelInRow4(const __m128 x[3], const __m128 y[3], __m128i j, int wi
     _mm_and_ps(cross[1], cross[2]));
   // std::min(xs0, xs1) is (xs1 < xs0) ? xs1 : xs0, minps(xs1, xs0); max likewise.
   const __m128 xl = _mm_min_ps(second, first), xr = _mm_max_ps(second, first);
-  const __m128i i0 = AtLeast4(CeilToInt4(_mm_sub_ps(xl, half)), _mm_setzero_si128());
+  i0 = AtLeast4(CeilToInt4(_mm_sub_ps(xl, half)), _mm_setzero_si128());
   const __m128i i1 = AtMost4(CeilToInt4(_mm_sub_ps(xr, half)), _mm_set1_epi32(width));
-  const __m128 pixels = _mm_and_ps(two, _mm_castsi128_ps(_mm_cmpgt_epi32(i1, i0)));
-  const __m128i one = _mm_and_si128(_mm_castps_si128(pixels),
-    _mm_cmpeq_epi32(_mm_sub_epi32(i1, i0), _mm_set1_epi32(1)));
-  // i0 where one, else -1 (all bits set).
-  _mm_storeu_si128(reinterpret_cast<__m128i*>(column),
-    _mm_or_si128(_mm_and_si128(one, i0), _mm_andnot_si128(one, _mm_set1_epi32(-1))));
-  return _mm_movemask_ps(pixels) ^ 0xF;
+  const __m128i pixels = _mm_and_si128(_mm_castps_si128(two), _mm_cmpgt_epi32(i1, i0));
+  return _mm_and_si128(pixels, _mm_sub_epi32(i1, i0));
+}
+
+/// a where mask is set, else b, for ints.
+inline __m128i SelectInt4(__m128i mask, __m128i a, __m128i b)
+{
+  return _mm_or_si128(_mm_and_si128(mask, a), _mm_andnot_si128(mask, b));
+}
+
+/// TestPolygon's span test on the lanes in `candidates` (rows [j0, j1),
+/// at most kBinSpanRows): sets their noPixel bits and their pixel.
+inline void SpanTest4(const __m128 x[3], const __m128 y[3], __m128i j0, __m128i j1, int width,
+  int candidates, FourTriangleTests& out)
+{
+  const __m128i rows = _mm_sub_epi32(j1, j0);
+  __m128i total = _mm_setzero_si128(), row = _mm_setzero_si128(), column = row;
+  for (int r = 0; r < kBinSpanRows; ++r)
+  {
+    const __m128i inRow = _mm_cmpgt_epi32(rows, _mm_set1_epi32(r));
+    if (!(_mm_movemask_ps(_mm_castsi128_ps(inRow)) & candidates))
+    {
+      break;
+    }
+    __m128i i0;
+    const __m128i pixels =
+      _mm_and_si128(inRow, RowPixels4(x, y, _mm_add_epi32(j0, _mm_set1_epi32(r)), width, i0));
+    total = _mm_add_epi32(total, pixels);
+    const __m128i some = _mm_cmpgt_epi32(pixels, _mm_setzero_si128());
+    row = SelectInt4(some, _mm_set1_epi32(r), row);
+    column = SelectInt4(some, i0, column);
+  }
+  const int none = _mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(total, _mm_setzero_si128())));
+  const int one =
+    _mm_movemask_ps(_mm_castsi128_ps(_mm_cmpeq_epi32(total, _mm_set1_epi32(1)))) & candidates;
+  out.noPixel |= candidates & none;
+  if (one)
+  {
+    int rowOf[4], columnOf[4];
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(rowOf), row);
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(columnOf), column);
+    for (int t = 0; t < 4; ++t)
+    {
+      if (one >> t & 1)
+      {
+        out.pixel[t] = { rowOf[t], columnOf[t] };
+      }
+    }
+  }
 }
 
 /// v[k][t]: vertex k of triangle t. Always inlined: GCC kept it a call
@@ -228,17 +290,14 @@ inline int NoPixelInRow4(const __m128 x[3], const __m128 y[3], __m128i j, int wi
     const __m128i right = CeilToInt4(_mm_add_ps(_mm_sub_ps(xmax, half), margin));
     const __m128i left = CeilToInt4(_mm_sub_ps(_mm_sub_ps(xmin, half), margin));
     out.noPixel = _mm_movemask_ps(_mm_castsi128_ps(_mm_cmpgt_epi32(right, left))) ^ 0xF;
-    const int oneRow = _mm_movemask_ps(
-      _mm_castsi128_ps(_mm_cmpeq_epi32(_mm_sub_epi32(j1, j0), _mm_set1_epi32(1))));
-    const int candidates = oneRow & ~out.noPixel;
+    const __m128i rows = _mm_sub_epi32(j1, j0);
+    const int fewRows = _mm_movemask_ps(_mm_castsi128_ps(_mm_and_si128(
+      _mm_cmpgt_epi32(rows, _mm_setzero_si128()),
+      _mm_cmplt_epi32(rows, _mm_set1_epi32(kBinSpanRows + 1)))));
+    const int candidates = fewRows & ~out.noPixel;
     if (candidates)
     {
-      int column[4];
-      out.noPixel |= candidates & NoPixelInRow4(x, y, j0, width, column);
-      for (int t = 0; t < 4; ++t)
-      {
-        out.column[t] = (candidates >> t & 1) ? column[t] : -1;
-      }
+      SpanTest4(x, y, j0, j1, width, candidates, out);
     }
   }
   // raster::TwiceSignedArea in double, lanes {0, 1} then {2, 3}: the sum

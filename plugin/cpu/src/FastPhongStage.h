@@ -158,7 +158,7 @@ struct FastPhongStage : StageBase
     const int W = F.Width;
     float* rgb = F.Rgb;
     uint8_t* covered = F.Covered;
-    this->Scan(verts, 3, rowBegin, rowEnd, poly.column,
+    this->Scan(verts, 3, rowBegin, rowEnd, poly.onePixel,
       [&](int j, int i0)
       {
         if (!ready)

@@ -236,6 +236,16 @@ struct TriangleEdges
   }
 };
 
+/// Binning's finding that a triangle covers exactly one pixel centre
+/// (PolygonTests::pixel): row, counted from the triangle's first row, and
+/// column; column < 0 where none was found. Binning gives it only to a
+/// triangle within one band, whose first row is then the draw's rowBegin.
+struct OnePixel
+{
+  int row = 0;
+  int column = -1;
+};
+
 /// Sorts a scanline's few crossings by x (insertion sort: n is small).
 template<typename Crossing>
 void SortCrossings(Crossing* cross, int n)
@@ -321,7 +331,7 @@ void ScanTriangle(int width,
   SpanFn&& beginSpan,
   PixelFn&& pixel,
   SpanTrace* trace = nullptr,
-  int column = -1)
+  OnePixel onePixel = {})
 {
   const ScreenVertex& v0 = *verts[0];
   const ScreenVertex& v1 = *verts[1];
@@ -402,11 +412,12 @@ void ScanTriangle(int width,
       }
     }
   };
-  if (column >= 0 && !trace)
+  if (onePixel.column >= 0 && !trace)
   {
-    // Binning found the one pixel (TestPolygon: one row, the span
-    // TriangleEdges::Span finds holds this column only).
-    drawSpan(rowBegin, column, column + 1, 0.0f, 0.0f);
+    // Binning found the one pixel (TestPolygon: of the spans
+    // TriangleEdges::Span finds in the triangle's few rows, one holds a
+    // pixel, this one).
+    drawSpan(rowBegin + onePixel.row, onePixel.column, onePixel.column + 1, 0.0f, 0.0f);
     return;
   }
   // Its edges and each row's span: TriangleEdges. (Selecting a row's two
@@ -535,17 +546,17 @@ bool ScanTriangleOf(int na,
   SpanFn&& beginSpan,
   PixelFn&& pixel,
   SpanTrace* trace,
-  int column)
+  OnePixel onePixel)
 {
   if constexpr (NA <= kMaxAttributes)
   {
     if (na == NA)
     {
-      ScanTriangle<NA>(width, verts, rowBegin, rowEnd, beginSpan, pixel, trace, column);
+      ScanTriangle<NA>(width, verts, rowBegin, rowEnd, beginSpan, pixel, trace, onePixel);
       return true;
     }
     return ScanTriangleOf<NA + 1>(
-      na, width, verts, rowBegin, rowEnd, beginSpan, pixel, trace, column);
+      na, width, verts, rowBegin, rowEnd, beginSpan, pixel, trace, onePixel);
   }
   return false;
 }
@@ -554,7 +565,7 @@ bool ScanTriangleOf(int na,
  * Scan-converts one polygon part (a triangle, or a whole polygon with
  * --polygons direct) into rows [rowBegin, rowEnd): beginSpan(j, i0) at the
  * start of every span, pixel(j, i, attributes) at every pixel centre inside.
- * column >= 0: a triangle whose one pixel binning found, in row rowBegin.
+ * onePixel: a triangle's one pixel, where binning found it.
  */
 template<typename PixelFn, typename SpanFn>
 void ScanConvert(int width,
@@ -566,7 +577,7 @@ void ScanConvert(int width,
   SpanFn&& beginSpan,
   PixelFn&& pixel,
   SpanTrace* trace = nullptr,
-  int column = -1)
+  OnePixel onePixel = {})
 {
   // The attribute count is fixed per frame; a compile-time count lets the
   // span loop unroll. Every count has its instance (colour by data adds a
@@ -574,7 +585,7 @@ void ScanConvert(int width,
   // ScanPolygon's per-row crossings and sort).
   if (n != 3 ||
     !ScanTriangleOf<kAttrFirst>(
-      kAttrFirst + numAttributes, width, verts, rowBegin, rowEnd, beginSpan, pixel, trace, column))
+      kAttrFirst + numAttributes, width, verts, rowBegin, rowEnd, beginSpan, pixel, trace, onePixel))
   {
     ScanPolygon(width, numAttributes, verts, n, rowBegin, rowEnd, beginSpan, pixel, trace);
   }

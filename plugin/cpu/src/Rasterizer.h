@@ -388,21 +388,28 @@ private:
   /// counters do not depend on the thread count.
   static constexpr int64_t kEntryOwner = 4;
   /// Above the flags, 1 + the column of a triangle's one pixel when
-  /// binning found it (PolygonTests::column), else 0: 17 bits hold every
+  /// binning found it (PolygonTests::pixel), else 0: 17 bits hold every
   /// column of the widest frame (kMaxImageSize x kMaxSupersampling =
-  /// 65,536 px); the polygon id above them.
+  /// 65,536 px); above them its row from the triangle's first (2 bits:
+  /// kBinSpanRows rows); the polygon id above those.
   static constexpr int kEntryColumnBits = 17;
-  static constexpr int kEntryShift = kEntryFlagBits + kEntryColumnBits;
+  static constexpr int kEntryRowBits = 2;
+  static_assert(kBinSpanRows <= 1 << kEntryRowBits);
+  static constexpr int kEntryShift = kEntryFlagBits + kEntryColumnBits + kEntryRowBits;
   static constexpr int64_t kEntryColumnMask = (int64_t(1) << kEntryColumnBits) - 1;
-  static int64_t BinEntry(int64_t p, int64_t flags, int column = -1)
+  static constexpr int64_t kEntryRowMask = (int64_t(1) << kEntryRowBits) - 1;
+  static int64_t BinEntry(int64_t p, int64_t flags, raster::OnePixel pixel = {})
   {
-    const int64_t known = column >= 0 && column < kEntryColumnMask ? column + 1 : 0;
-    return p << kEntryShift | known << kEntryFlagBits | flags;
+    const bool known = pixel.column >= 0 && pixel.column < kEntryColumnMask;
+    const int64_t column = known ? pixel.column + 1 : 0, row = known ? pixel.row : 0;
+    return p << kEntryShift | row << (kEntryFlagBits + kEntryColumnBits) |
+      column << kEntryFlagBits | flags;
   }
   static int64_t EntryPolygon(int64_t entry) { return entry >> kEntryShift; }
-  static int EntryColumn(int64_t entry)
+  static raster::OnePixel EntryPixel(int64_t entry)
   {
-    return static_cast<int>(entry >> kEntryFlagBits & kEntryColumnMask) - 1;
+    return { static_cast<int>(entry >> (kEntryFlagBits + kEntryColumnBits) & kEntryRowMask),
+      static_cast<int>(entry >> kEntryFlagBits & kEntryColumnMask) - 1 };
   }
 
   /// Draws one bin list's polygons in order. A band's polygons lie all over
@@ -517,7 +524,7 @@ private:
           : (tests.back >> t & 1)                           ? Facing::Back
                                                             : Facing::Front;
         const PolygonTests lane{ tests.j0[t], tests.j1[t], (tests.hasRow >> t & 1) != 0,
-          (tests.rejected >> t & 1) != 0, (tests.noPixel >> t & 1) != 0, 0.0, tests.column[t] };
+          (tests.rejected >> t & 1) != 0, (tests.noPixel >> t & 1) != 0, 0.0, tests.pixel[t] };
         degenerate += this->BinTested(p + t, ids[t], 3, lane, facing, lists, state);
       }
     }
@@ -681,10 +688,13 @@ private:
       this->Buffers.Needed[ids[k]].store(1, std::memory_order_relaxed);
     }
     const int64_t flags = facing == Facing::Back ? kEntryBack : 0;
-    for (int b = t.j0 / kBandRows; b <= (t.j1 - 1) / kBandRows; ++b)
+    const int firstBand = t.j0 / kBandRows, lastBand = (t.j1 - 1) / kBandRows;
+    // A triangle's one pixel goes to a triangle within one band, whose
+    // first row is then the draw's (OnePixel).
+    const raster::OnePixel pixel = firstBand == lastBand ? t.pixel : raster::OnePixel{};
+    for (int b = firstBand; b <= lastBand; ++b)
     {
-      lists[b].push_back(
-        BinEntry(p, flags | (b == t.j0 / kBandRows ? kEntryOwner : 0), t.column));
+      lists[b].push_back(BinEntry(p, flags | (b == firstBand ? kEntryOwner : 0), pixel));
       ++state.binned;
     }
     return 0;
@@ -720,7 +730,7 @@ private:
         verts[k] = &this->Screen[ids[k]];
       }
       this->DrawInBand(p, (entry & kEntryBack) != 0, (entry & kEntryOwner) != 0, false, verts,
-        ids, n, band, state, EntryColumn(entry));
+        ids, n, band, state, EntryPixel(entry));
       return;
     }
     bool anyBehind = false;
@@ -841,7 +851,7 @@ private:
     int count,
     int band,
     ThreadState& state,
-    int column = -1)
+    raster::OnePixel onePixel = {})
   {
     state.clippedPolygons += owner && wasClipped;
     state.rasterized += owner;
@@ -850,7 +860,7 @@ private:
     // faces: vertices relit with flipped normals into `relit`).
     ScreenVertex relit[kMaxPolygonVertices];
     auto polygon = this->Stage.BeginPolygon(p, back, verts, ids, count, relit);
-    polygon.column = column; // binning's (a triangle's, or -1)
+    polygon.onePixel = onePixel; // binning's (a triangle's, or none)
     // Scan-convert each part into this band's rows.
     const int bandBegin = band * kBandRows, bandEnd = std::min(F.Height, bandBegin + kBandRows);
     auto drawPart = [&](const ScreenVertex* const* partVerts, const int64_t* partIds, int m)

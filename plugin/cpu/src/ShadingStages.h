@@ -36,9 +36,8 @@ struct StageBase
   {
     int64_t id;
     bool back;
-    /// A triangle of one pixel binning found (Rasterizer::DrawInBand):
-    /// its column, in the part's one row; -1 otherwise.
-    int column = -1;
+    /// A triangle's one pixel, where binning found it (Rasterizer::DrawInBand).
+    raster::OnePixel onePixel;
   };
   Polygon BeginPolygon(int64_t p,
     bool back,
@@ -63,7 +62,7 @@ struct StageBase
     int n,
     int rowBegin,
     int rowEnd,
-    int column,
+    raster::OnePixel onePixel,
     SpanFn&& beginSpan,
     PixelFn&& pixel) const
   {
@@ -72,7 +71,7 @@ struct StageBase
       this->ScanTraced(verts, n, rowBegin, rowEnd, beginSpan, pixel);
       return;
     }
-    this->ScanWith(verts, n, rowBegin, rowEnd, beginSpan, pixel, nullptr, column);
+    this->ScanWith(verts, n, rowBegin, rowEnd, beginSpan, pixel, nullptr, onePixel);
   }
 
   template<typename SpanFn, typename PixelFn>
@@ -83,7 +82,7 @@ struct StageBase
     SpanFn&& beginSpan,
     PixelFn&& pixel,
     raster::SpanTrace* spans,
-    int column = -1) const
+    raster::OnePixel onePixel = {}) const
   {
     if (F.Opt.scan == render::ScanConversion::Incremental)
     {
@@ -100,7 +99,7 @@ struct StageBase
       return;
     }
     ScanConvert(
-      F.Width, F.NumAttributes, verts, n, rowBegin, rowEnd, beginSpan, pixel, spans, column);
+      F.Width, F.NumAttributes, verts, n, rowBegin, rowEnd, beginSpan, pixel, spans, onePixel);
   }
 
   /// Scan, recording the traced row (Frame::Trace): the span ends the scan
@@ -150,10 +149,10 @@ struct StageBase
   }
   /// The same, for stages with nothing to do at the start of a span.
   template<typename PixelFn>
-  void Scan(const ScreenVertex* const* verts, int n, int rowBegin, int rowEnd, int column,
-    PixelFn&& pixel) const
+  void Scan(const ScreenVertex* const* verts, int n, int rowBegin, int rowEnd,
+    raster::OnePixel onePixel, PixelFn&& pixel) const
   {
-    this->Scan(verts, n, rowBegin, rowEnd, column, [](int, int) {}, pixel);
+    this->Scan(verts, n, rowBegin, rowEnd, onePixel, [](int, int) {}, pixel);
   }
 };
 
@@ -175,7 +174,7 @@ struct CoverageStage : StageBase
     int rowEnd,
     ThreadState&) const
   {
-    this->Scan(verts, n, rowBegin, rowEnd, poly.column,
+    this->Scan(verts, n, rowBegin, rowEnd, poly.onePixel,
       [&](int j, int i, const float*)
       {
         const size_t pix = static_cast<size_t>(j) * F.Width + i;
@@ -338,7 +337,7 @@ struct FlatStage : StageBase
     ThreadState& state) const
   {
     PixelQueue& q = state.queue;
-    this->Scan(verts, n, rowBegin, rowEnd, poly.column,
+    this->Scan(verts, n, rowBegin, rowEnd, poly.onePixel,
       [&](int j, int i, const float* a)
       {
         float* out = F.DepthTest(j, i, a, state);
@@ -505,7 +504,7 @@ struct GouraudStage : StageBase
     ThreadState& state) const
   {
     const Vec3f cellRho = F.CellScalars() ? F.CellColorOf(poly.id) : Vec3f();
-    this->Scan(verts, n, rowBegin, rowEnd, poly.column,
+    this->Scan(verts, n, rowBegin, rowEnd, poly.onePixel,
       [&](int j, int i, const float* a)
       {
         if (float* out = F.DepthTest(j, i, a, state))
@@ -609,7 +608,7 @@ struct PhongStage : StageBase
     const Vec3f cellRho = F.CellScalars() ? F.CellColorOf(poly.id) : Vec3f();
     int64_t shaded = 0;
     PixelQueue& q = state.queue;
-    this->Scan(verts, n, rowBegin, rowEnd, poly.column,
+    this->Scan(verts, n, rowBegin, rowEnd, poly.onePixel,
       [&](int j, int i, const float* a)
       {
         float* out = F.DepthTest(j, i, a, state);

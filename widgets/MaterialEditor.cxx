@@ -14,6 +14,7 @@
 #include <QSignalBlocker>
 #include <QSlider>
 
+#include <algorithm>
 #include <cmath>
 #include <string_view>
 
@@ -115,12 +116,13 @@ MaterialEditor::MaterialEditor(QWidget* parent)
   });
   connect(this->Model, QOverload<int>::of(&QComboBox::activated), this, [this](int index) {
     this->Value.model = static_cast<ReflectanceModel>(this->Model->itemData(index).toInt());
-    this->ShowModelParameters();
+    this->Refresh();
     this->Emit();
   });
   connect(this->Variant, QOverload<int>::of(&QComboBox::activated), this, [this](int index) {
     this->Value.variant =
       index == 1 ? SpecularVariant::Walter2007 : SpecularVariant::CookTorrance1982;
+    this->Refresh();
     this->Emit();
   });
   connect(this->Spectrum, QOverload<int>::of(&QComboBox::activated), this, [this](int index) {
@@ -233,7 +235,6 @@ void MaterialEditor::OnRowEdited(int index, double value)
   }
   // One ambient slider: grey ambient reflectance.
   m.ambient.y = m.ambient.z = m.ambient.x;
-  this->Preset->setCurrentIndex(0);
   this->Refresh();
   this->Emit();
 }
@@ -254,7 +255,6 @@ bool MaterialEditor::SetParameter(const QString& label, double value)
 void MaterialEditor::SetMaterial(const Material<double>& material)
 {
   this->Value = material;
-  this->Preset->setCurrentIndex(0);
   this->Refresh();
 }
 
@@ -270,6 +270,10 @@ void MaterialEditor::Refresh()
     row.slider->setValue(static_cast<int>(std::lround(t * kSliderSteps)));
     row.box->setValue(v);
   }
+  // The preset the material is, or "(custom)": a scene's gold is "gold".
+  const MaterialPreset* preset = PresetMatching(this->Value);
+  this->Preset->setCurrentIndex(
+    preset ? std::max(0, this->Preset->findText(QString::fromStdString(preset->name))) : 0);
   this->Model->setCurrentIndex(this->Model->findData(static_cast<int>(this->Value.model)));
   this->Variant->setCurrentIndex(this->Value.variant == SpecularVariant::Walter2007 ? 1 : 0);
   this->Lobes->setCurrentIndex(std::clamp(this->Value.lobeCount, 1, 2) - 1);

@@ -166,6 +166,25 @@ void ExplorerGLTest::MaterialEditorShowsTheModelsParameters()
   editor.SetMaterial(m);
   QVERIFY(shown("kd") && !shown("ks") && !shown("eta R") && !shown("m (lobe 2)"));
   QVERIFY(!spectrum->isVisibleTo(&editor));
+  // The preset box names the preset a material is ("(custom)" when it is
+  // none): a scene's gold, spectral or not, says "gold"; an edit makes it
+  // custom, and editing it back makes it gold again.
+  auto* preset = editor.findChildren<QComboBox*>().first();
+  QCOMPARE(preset->currentText(), QString("(custom)"));
+  Material<double> gold = FindMaterialPreset("gold")->material;
+  editor.SetMaterial(gold);
+  QCOMPARE(preset->currentText(), QString("gold"));
+  QVERIFY(SetSpectral(gold, *PresetDispersion("gold")).empty());
+  editor.SetMaterial(gold);
+  QCOMPARE(preset->currentText(), QString("gold"));
+  const double m1 = gold.lobes[0].m;
+  QVERIFY(editor.SetParameter("m (lobe 1)", 0.5));
+  QCOMPARE(preset->currentText(), QString("(custom)"));
+  QVERIFY(editor.SetParameter("m (lobe 1)", m1));
+  QCOMPARE(preset->currentText(), QString("gold"));
+  QMetaObject::invokeMethod(preset, "activated", Q_ARG(int, preset->findText("copper")));
+  QCOMPARE(preset->currentText(), QString("copper"));
+  QCOMPARE(editor.GetMaterial().k.x, FindMaterialPreset("copper")->material.k.x);
 }
 
 void ExplorerGLTest::EveryScreenshotIsDrawn()

@@ -10,6 +10,7 @@
 #include "CpuPanel.h"
 #include "MainWindow.h"
 #include "MaterialEditor.h"
+#include "shadinglab/model/Materials.h"
 #include "shadinglab/model/Spectrum.h"
 #include "ScanlineInspector.h"
 #include "ShadingPanel.h"

@@ -126,6 +126,29 @@ const MaterialPreset* FindMaterialPreset(const std::string& name)
   return nullptr;
 }
 
+const MaterialPreset* PresetMatching(const Material<double>& m)
+{
+  auto same = [](const Vec3<double>& a, const Vec3<double>& b)
+  { return a.x == b.x && a.y == b.y && a.z == b.z; };
+  for (const auto& preset : MaterialPresets())
+  {
+    const Material<double>& p = preset.material;
+    bool lobes = p.lobeCount == m.lobeCount;
+    for (int i = 0; lobes && i < p.lobeCount && i < kMaxLobes; ++i)
+    {
+      lobes = p.lobes[i].weight == m.lobes[i].weight && p.lobes[i].m == m.lobes[i].m;
+    }
+    if (lobes && p.model == m.model && p.variant == m.variant && p.kd == m.kd &&
+      p.ks == m.ks && p.shininess == m.shininess && same(p.ambient, m.ambient) &&
+      same(p.diffuseColor, m.diffuseColor) && same(p.specularColor, m.specularColor) &&
+      same(p.eta, m.eta) && same(p.k, m.k))
+    {
+      return &preset;
+    }
+  }
+  return nullptr;
+}
+
 std::string ValidateMaterial(const Material<double>& m)
 {
   std::ostringstream err;

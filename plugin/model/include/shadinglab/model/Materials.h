@@ -25,6 +25,10 @@ const std::vector<MaterialPreset>& MaterialPresets();
 /// The preset with this name, or nullptr.
 const MaterialPreset* FindMaterialPreset(const std::string& name);
 
+/// The preset whose parameters m has, exactly (its spectral samples aside:
+/// a preset with Fresnel per wavelength is still that preset), or nullptr.
+const MaterialPreset* PresetMatching(const Material<double>& m);
+
 } // namespace shadinglab
 
 namespace shadinglab

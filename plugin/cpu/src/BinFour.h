@@ -160,42 +160,57 @@ inline __m128i AtMost4(__m128i a, __m128i hi)
   return _mm_or_si128(_mm_and_si128(below, a), _mm_andnot_si128(below, hi));
 }
 
-/// The pixels of row j[t] of triangle t (vertices x[k], y[k] lane t), 0
-/// where its span holds no pixel centre, and in i0 the span's first
-/// column: raster::TriangleEdges::Span lane for lane, the same float
-/// operations in the same order.
-inline __m128i RowPixels4(const __m128 x[3], const __m128 y[3], __m128i j, int width, __m128i& i0)
+/// The edges of four triangles (vertices x[k], y[k] lane t), as
+/// raster::TriangleEdges holds them: built once, read for every row.
+struct FourTriangleEdges
 {
-  const __m128 half = _mm_set1_ps(0.5f);
-  const __m128 yc = _mm_add_ps(_mm_cvtepi32_ps(j), half);
-  __m128 cross[3], at[3];
-  for (int k = 0; k < 3; ++k)
+  __m128 px[3], py[3], qy[3], invSlope[3];
+
+  FourTriangleEdges(const __m128 x[3], const __m128 y[3])
   {
-    const int n = k + 1 < 3 ? k + 1 : 0;
-    // Edge (p, q) = (k, n): base point the lower end; std::min(p.y, q.y)
-    // is (q.y < p.y) ? q.y : p.y, minps(q.y, p.y), and std::max likewise.
-    const __m128 px = Select4(_mm_cmple_ps(y[k], y[n]), x[k], x[n]);
-    const __m128 py = _mm_min_ps(y[n], y[k]);
-    const __m128 qy = _mm_max_ps(y[n], y[k]);
-    // raster::InverseSlope: (q.x - p.x) / dy where dy != 0 (NaN included), else 0.
-    const __m128 dy = _mm_sub_ps(y[n], y[k]);
-    const __m128 inv = _mm_and_ps(
-      _mm_cmpneq_ps(dy, _mm_setzero_ps()), _mm_div_ps(_mm_sub_ps(x[n], x[k]), dy));
-    cross[k] = _mm_and_ps(_mm_cmple_ps(py, yc), _mm_cmplt_ps(yc, qy));
-    at[k] = _mm_add_ps(px, _mm_mul_ps(_mm_sub_ps(yc, py), inv)); // raster::CrossingX
+    for (int k = 0; k < 3; ++k)
+    {
+      const int n = k + 1 < 3 ? k + 1 : 0;
+      // Edge (p, q) = (k, n): base point the lower end; std::min(p.y, q.y)
+      // is (q.y < p.y) ? q.y : p.y, minps(q.y, p.y), and std::max likewise.
+      this->px[k] = Select4(_mm_cmple_ps(y[k], y[n]), x[k], x[n]);
+      this->py[k] = _mm_min_ps(y[n], y[k]);
+      this->qy[k] = _mm_max_ps(y[n], y[k]);
+      // raster::InverseSlope: (q.x - p.x) / dy where dy != 0 (NaN included), else 0.
+      const __m128 dy = _mm_sub_ps(y[n], y[k]);
+      this->invSlope[k] = _mm_and_ps(
+        _mm_cmpneq_ps(dy, _mm_setzero_ps()), _mm_div_ps(_mm_sub_ps(x[n], x[k]), dy));
+    }
   }
-  // The first two crossing edges in order 0, 1, 2.
-  const __m128 first = Select4(cross[0], at[0], Select4(cross[1], at[1], at[2]));
-  const __m128 second = Select4(cross[0], Select4(cross[1], at[1], at[2]), at[2]);
-  const __m128 two = _mm_or_ps(_mm_and_ps(cross[0], _mm_or_ps(cross[1], cross[2])),
-    _mm_and_ps(cross[1], cross[2]));
-  // std::min(xs0, xs1) is (xs1 < xs0) ? xs1 : xs0, minps(xs1, xs0); max likewise.
-  const __m128 xl = _mm_min_ps(second, first), xr = _mm_max_ps(second, first);
-  i0 = AtLeast4(CeilToInt4(_mm_sub_ps(xl, half)), _mm_setzero_si128());
-  const __m128i i1 = AtMost4(CeilToInt4(_mm_sub_ps(xr, half)), _mm_set1_epi32(width));
-  const __m128i pixels = _mm_and_si128(_mm_castps_si128(two), _mm_cmpgt_epi32(i1, i0));
-  return _mm_and_si128(pixels, _mm_sub_epi32(i1, i0));
-}
+
+  /// The pixels of row j[t] of triangle t, 0 where its span holds no
+  /// pixel centre, and in i0 the span's first column:
+  /// raster::TriangleEdges::Span lane for lane, the same float operations
+  /// in the same order.
+  __m128i RowPixels(__m128i j, int width, __m128i& i0) const
+  {
+    const __m128 half = _mm_set1_ps(0.5f);
+    const __m128 yc = _mm_add_ps(_mm_cvtepi32_ps(j), half);
+    __m128 cross[3], at[3];
+    for (int k = 0; k < 3; ++k)
+    {
+      cross[k] = _mm_and_ps(_mm_cmple_ps(this->py[k], yc), _mm_cmplt_ps(yc, this->qy[k]));
+      at[k] = _mm_add_ps(this->px[k],
+        _mm_mul_ps(_mm_sub_ps(yc, this->py[k]), this->invSlope[k])); // raster::CrossingX
+    }
+    // The first two crossing edges in order 0, 1, 2.
+    const __m128 first = Select4(cross[0], at[0], Select4(cross[1], at[1], at[2]));
+    const __m128 second = Select4(cross[0], Select4(cross[1], at[1], at[2]), at[2]);
+    const __m128 two = _mm_or_ps(_mm_and_ps(cross[0], _mm_or_ps(cross[1], cross[2])),
+      _mm_and_ps(cross[1], cross[2]));
+    // std::min(xs0, xs1) is (xs1 < xs0) ? xs1 : xs0, minps(xs1, xs0); max likewise.
+    const __m128 xl = _mm_min_ps(second, first), xr = _mm_max_ps(second, first);
+    i0 = AtLeast4(CeilToInt4(_mm_sub_ps(xl, half)), _mm_setzero_si128());
+    const __m128i i1 = AtMost4(CeilToInt4(_mm_sub_ps(xr, half)), _mm_set1_epi32(width));
+    const __m128i pixels = _mm_and_si128(_mm_castps_si128(two), _mm_cmpgt_epi32(i1, i0));
+    return _mm_and_si128(pixels, _mm_sub_epi32(i1, i0));
+  }
+};
 
 /// a where mask is set, else b, for ints.
 inline __m128i SelectInt4(__m128i mask, __m128i a, __m128i b)
@@ -205,10 +220,12 @@ inline __m128i SelectInt4(__m128i mask, __m128i a, __m128i b)
 
 /// TestPolygon's span test on the lanes in `candidates` (rows [j0, j1),
 /// at most kBinSpanRows): sets their noPixel bits and their pixel.
-inline void SpanTest4(const __m128 x[3], const __m128 y[3], __m128i j0, __m128i j1, int width,
+/// Inlined, as TestFourTriangles.
+[[gnu::always_inline]] inline void SpanTest4(const __m128 x[3], const __m128 y[3], __m128i j0, __m128i j1, int width,
   int candidates, FourTriangleTests& out)
 {
   const __m128i rows = _mm_sub_epi32(j1, j0);
+  const FourTriangleEdges edges(x, y);
   __m128i total = _mm_setzero_si128(), row = _mm_setzero_si128(), column = row;
   for (int r = 0; r < kBinSpanRows; ++r)
   {
@@ -219,7 +236,7 @@ inline void SpanTest4(const __m128 x[3], const __m128 y[3], __m128i j0, __m128i 
     }
     __m128i i0;
     const __m128i pixels =
-      _mm_and_si128(inRow, RowPixels4(x, y, _mm_add_epi32(j0, _mm_set1_epi32(r)), width, i0));
+      _mm_and_si128(inRow, edges.RowPixels(_mm_add_epi32(j0, _mm_set1_epi32(r)), width, i0));
     total = _mm_add_epi32(total, pixels);
     const __m128i some = _mm_cmpgt_epi32(pixels, _mm_setzero_si128());
     row = SelectInt4(some, _mm_set1_epi32(r), row);

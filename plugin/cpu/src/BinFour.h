@@ -148,16 +148,20 @@ inline __m128 Select4(__m128 mask, __m128 a, __m128 b)
   return _mm_or_ps(_mm_and_ps(mask, a), _mm_andnot_ps(mask, b));
 }
 
+/// a where mask is set, else b, for ints (Select4's twin).
+inline __m128i SelectInt4(__m128i mask, __m128i a, __m128i b)
+{
+  return _mm_or_si128(_mm_and_si128(mask, a), _mm_andnot_si128(mask, b));
+}
+
 /// max(lo, a) and min(a, hi) of four ints without SSE4.1's pmaxsd / pminsd.
 inline __m128i AtLeast4(__m128i a, __m128i lo)
 {
-  const __m128i above = _mm_cmpgt_epi32(a, lo);
-  return _mm_or_si128(_mm_and_si128(above, a), _mm_andnot_si128(above, lo));
+  return SelectInt4(_mm_cmpgt_epi32(a, lo), a, lo);
 }
 inline __m128i AtMost4(__m128i a, __m128i hi)
 {
-  const __m128i below = _mm_cmplt_epi32(a, hi);
-  return _mm_or_si128(_mm_and_si128(below, a), _mm_andnot_si128(below, hi));
+  return SelectInt4(_mm_cmplt_epi32(a, hi), a, hi);
 }
 
 /// The edges of four triangles (vertices x[k], y[k] lane t), as
@@ -212,19 +216,12 @@ struct FourTriangleEdges
   }
 };
 
-/// a where mask is set, else b, for ints.
-inline __m128i SelectInt4(__m128i mask, __m128i a, __m128i b)
-{
-  return _mm_or_si128(_mm_and_si128(mask, a), _mm_andnot_si128(mask, b));
-}
-
-/// TestPolygon's span test on the lanes in `candidates` (rows [j0, j1),
-/// at most kBinSpanRows): sets their noPixel bits and their pixel.
+/// TestPolygon's span test on the lanes in `candidates` (`rows` rows from
+/// j0, at most kBinSpanRows): sets their noPixel bits and their pixel.
 /// Inlined, as TestFourTriangles.
-[[gnu::always_inline]] inline void SpanTest4(const __m128 x[3], const __m128 y[3], __m128i j0, __m128i j1, int width,
-  int candidates, FourTriangleTests& out)
+[[gnu::always_inline]] inline void SpanTest4(const __m128 x[3], const __m128 y[3], __m128i j0,
+  __m128i rows, int width, int candidates, FourTriangleTests& out)
 {
-  const __m128i rows = _mm_sub_epi32(j1, j0);
   const FourTriangleEdges edges(x, y);
   __m128i total = _mm_setzero_si128(), row = _mm_setzero_si128(), column = row;
   for (int r = 0; r < kBinSpanRows; ++r)
@@ -314,7 +311,7 @@ inline __m128i SelectInt4(__m128i mask, __m128i a, __m128i b)
     const int candidates = fewRows & ~out.noPixel;
     if (candidates)
     {
-      SpanTest4(x, y, j0, j1, width, candidates, out);
+      SpanTest4(x, y, j0, rows, width, candidates, out);
     }
   }
   // raster::TwiceSignedArea in double, lanes {0, 1} then {2, 3}: the sum

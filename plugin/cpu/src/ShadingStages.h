@@ -46,7 +46,7 @@ struct StageBase
     int,
     ScreenVertex*) const
   {
-    return { p, back };
+    return { p, back, {} };
   }
   bool Triangulates() const { return this->F.Opt.polygons == render::PolygonHandling::Triangulate; }
   /// Polygon p (its n vertices `ids`) is drawn soon: what the stage reads
@@ -492,7 +492,7 @@ struct GouraudStage : StageBase
         verts[k] = &relit[k];
       }
     }
-    return { p, back };
+    return { p, back, {} };
   }
 
   void DrawPart(const ScreenVertex* const* verts,

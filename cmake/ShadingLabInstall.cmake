@@ -21,6 +21,7 @@ install(FILES ${PROJECT_SOURCE_DIR}/README.md ${PROJECT_SOURCE_DIR}/LICENSE
 # Each library's name in the package: ShadingLab::<name>.
 set(_shadinglab_exported
   shadinglab_warnings Warnings
+  shadinglab_compat Compat
   shadinglab_model Model
   shadinglab_render Render
   shadinglab_render_vtk RenderVTK

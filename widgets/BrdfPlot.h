@@ -14,10 +14,7 @@
 #include <string>
 #include <vector>
 
-namespace QtCharts
-{
-class QChartView;
-}
+#include "QtCompat.h" // QtCharts:: in Qt 5 and 6
 
 namespace shadinglab::widgets
 {

@@ -5,11 +5,7 @@
 
 #include <QString>
 
-namespace QtCharts
-{
-class QChart;
-class QValueAxis;
-}
+#include "QtCompat.h" // QtCharts:: in Qt 5 and 6
 
 namespace shadinglab::widgets
 {

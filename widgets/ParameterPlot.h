@@ -10,10 +10,7 @@
 
 #include <vector>
 
-namespace QtCharts
-{
-class QChartView;
-}
+#include "QtCompat.h" // QtCharts:: in Qt 5 and 6
 
 namespace shadinglab::widgets
 {

@@ -14,11 +14,7 @@
 
 class QLabel;
 
-namespace QtCharts
-{
-class QChart;
-class QChartView;
-}
+#include "QtCompat.h" // QtCharts:: in Qt 5 and 6
 
 namespace shadinglab::widgets
 {

@@ -1,13 +1,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "MeshIO.h"
 
+#include "VtkCompat.h"
+
 #include "MeshPrecheck.h"
 #include "CompositeIO.h"
 
 #include "Geometry.h"
 
 #include <vtkCellArray.h>
-#include <vtkCellTypes.h>
 #include <vtkCleanPolyData.h>
 #include <vtkCellData.h>
 #include <vtkGenericCell.h>
@@ -423,7 +424,7 @@ vtkSmartPointer<vtkDataSet> WithoutBoundaryCopies(vtkDataSet* data)
   vtkNew<vtkGenericCell> cell;
   for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
   {
-    const int dimension = vtkCellTypes::GetDimension(static_cast<unsigned char>(grid->GetCellType(c)));
+    const int dimension = shadinglab::vtkcompat::CellDimension(static_cast<unsigned char>(grid->GetCellType(c)));
     anySurface |= dimension == 2;
     if (dimension != 3)
     {
@@ -443,7 +444,7 @@ vtkSmartPointer<vtkDataSet> WithoutBoundaryCopies(vtkDataSet* data)
   vtkNew<vtkIdList> kept;
   for (vtkIdType c = 0; c < grid->GetNumberOfCells(); ++c)
   {
-    const int dimension = vtkCellTypes::GetDimension(static_cast<unsigned char>(grid->GetCellType(c)));
+    const int dimension = shadinglab::vtkcompat::CellDimension(static_cast<unsigned char>(grid->GetCellType(c)));
     if (dimension == 2)
     {
       grid->GetCell(c, cell);
@@ -495,7 +496,7 @@ vtkSmartPointer<vtkPolyData> SurfaceOf(vtkDataSet* data, const ReadOptions& opti
   bool nonlinear = false;
   for (vtkIdType c = 0; c < data->GetNumberOfCells() && !nonlinear; ++c)
   {
-    nonlinear = !vtkCellTypes::IsLinear(data->GetCellType(c));
+    nonlinear = !shadinglab::vtkcompat::CellIsLinear(static_cast<unsigned char>(data->GetCellType(c)));
   }
   if (nonlinear)
   {

@@ -2,6 +2,7 @@
 #include "MeshArrays.h"
 #include "Orientation.h"
 
+#include <vtkAOSDataArrayTemplate.h>
 #include <vtkCellArray.h>
 #include <vtkDoubleArray.h>
 #include <vtkIdList.h>
@@ -10,7 +11,6 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkTriangleFilter.h>
-#include <vtkTypeInt64Array.h>
 
 #include <algorithm>
 #include <type_traits>
@@ -58,12 +58,17 @@ void FlatPolygonsFromPolyData(vtkPolyData* input, FlatPolygons& out)
   }
   vtkCellArray* polys = input->GetPolys();
   out.numberOfPolygons = polys->GetNumberOfCells();
-  if (polys->IsStorage64Bit())
+  // 64-bit storage is read in place: an AOS array of vtkTypeInt64 in every
+  // VTK from 9.2 to 9.6 (GetOffsetsArray64, its typed getter, is deprecated
+  // in 9.6, whose array may not be a vtkTypeInt64Array).
+  using Int64Array = vtkAOSDataArrayTemplate<vtkTypeInt64>;
+  auto* offsets64 = Int64Array::SafeDownCast(polys->GetOffsetsArray());
+  auto* connectivity64 = Int64Array::SafeDownCast(polys->GetConnectivityArray());
+  if (offsets64 && connectivity64)
   {
     static_assert(sizeof(vtkTypeInt64) == sizeof(int64_t), "64-bit ids");
-    out.offsets = reinterpret_cast<const int64_t*>(polys->GetOffsetsArray64()->GetPointer(0));
-    out.connectivity =
-      reinterpret_cast<const int64_t*>(polys->GetConnectivityArray64()->GetPointer(0));
+    out.offsets = reinterpret_cast<const int64_t*>(offsets64->GetPointer(0));
+    out.connectivity = reinterpret_cast<const int64_t*>(connectivity64->GetPointer(0));
     return;
   }
   vtkNew<vtkIdList> ids;

@@ -11,7 +11,7 @@
 #include "shadinglab_glsl.h"
 
 #include <vtkOpenGLQuadHelper.h>
-#include <vtk_glew.h> // GL_DEPTH_TEST, GL_TRUE
+#include "VtkOpenGL.h" // GL_DEPTH_TEST, GL_TRUE
 #include <vtkOpenGLRenderWindow.h>
 #include <vtkOpenGLShaderCache.h>
 #include <vtkOpenGLState.h>

@@ -4,10 +4,17 @@
 #include "vtkShadingLabPolyDataMapper.h"
 
 #include <vtkActor.h>
+#include <vtkBoundingBox.h>
+#include <vtkCompositeDataIterator.h>
+#include <vtkCompositeDataSet.h>
 #include <vtkCompositeDataDisplayAttributes.h>
 #include <vtkCompositeDataPipeline.h>
 #include <vtkDataObjectTree.h>
 #include <vtkDataObjectTreeIterator.h>
+#include <vtkExecutive.h>
+#include <vtkInformation.h>
+#include <vtkMath.h>
+#include <vtkNew.h>
 #include <vtkObjectFactory.h>
 #include <vtkPolyData.h>
 #include <vtkProperty.h>
@@ -60,22 +67,6 @@ std::string vtkShadingLabCompositePolyDataMapper::GetBackendChoices()
   return out;
 }
 
-vtkPolyDataMapper* vtkShadingLabCompositePolyDataMapper::MakeAMapper()
-{
-  // The superclass makes one mapper per polydata leaf, in traversal order,
-  // and stamps InternalMappersBuildTime after the last: a stamp other than
-  // the one seen at the previous call starts a new build.
-  if (this->InternalMappersBuildTime.GetMTime() != this->BuildSeen)
-  {
-    this->BlockMappers.clear();
-    this->BuildSeen = this->InternalMappersBuildTime.GetMTime();
-  }
-  auto* mapper = vtkShadingLabPolyDataMapper::New();
-  mapper->SetSettings(this->Settings);
-  this->BlockMappers.emplace_back(mapper);
-  return mapper;
-}
-
 void vtkShadingLabCompositePolyDataMapper::SetBlockAttributes(
   vtkCompositeDataDisplayAttributes* attributes)
 {
@@ -83,12 +74,130 @@ void vtkShadingLabCompositePolyDataMapper::SetBlockAttributes(
   this->Modified();
 }
 
+int vtkShadingLabCompositePolyDataMapper::FillInputPortInformation(
+  int vtkNotUsed(port), vtkInformation* info)
+{
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataObject");
+  return 1;
+}
+
+vtkExecutive* vtkShadingLabCompositePolyDataMapper::CreateDefaultExecutive()
+{
+  return vtkCompositeDataPipeline::New();
+}
+
 void vtkShadingLabCompositePolyDataMapper::BuildIfNeeded()
 {
   auto* executive = vtkCompositeDataPipeline::SafeDownCast(this->GetExecutive());
-  if (executive && executive->GetPipelineMTime() > this->InternalMappersBuildTime.GetMTime())
+  if (executive && executive->GetPipelineMTime() > this->BuildTime.GetMTime())
   {
-    this->BuildPolyDataMapper();
+    this->BuildBlockMappers();
+  }
+}
+
+void vtkShadingLabCompositePolyDataMapper::BuildBlockMappers()
+{
+  // One block mapper per polydata leaf, each on a shallow copy (the pipeline
+  // is broken here, as the mapper is the pipeline's end).
+  this->BlockMappers.clear();
+  std::vector<vtkPolyData*> leaves;
+  vtkDataObject* input = this->GetExecutive()->GetInputData(0, 0);
+  if (auto* composite = vtkCompositeDataSet::SafeDownCast(input))
+  {
+    vtkSmartPointer<vtkCompositeDataIterator> it;
+    it.TakeReference(composite->NewIterator());
+    bool warned = false;
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+    {
+      if (auto* pd = vtkPolyData::SafeDownCast(it->GetCurrentDataObject()))
+      {
+        leaves.push_back(pd);
+      }
+      else if (!warned)
+      {
+        vtkErrorMacro("every leaf of the composite input must be vtkPolyData; "
+          << it->GetCurrentDataObject()->GetClassName() << " is not drawn");
+        warned = true;
+      }
+    }
+  }
+  else if (auto* pd = vtkPolyData::SafeDownCast(input))
+  {
+    leaves.push_back(pd);
+  }
+  else if (input)
+  {
+    vtkErrorMacro("this mapper cannot draw input of type " << input->GetClassName());
+  }
+  for (vtkPolyData* leaf : leaves)
+  {
+    auto mapper = vtkSmartPointer<vtkShadingLabPolyDataMapper>::New();
+    mapper->SetSettings(this->Settings);
+    vtkNew<vtkPolyData> copy;
+    copy->ShallowCopy(leaf);
+    mapper->SetInputData(copy);
+    this->BlockMappers.push_back(mapper);
+  }
+  this->BuildTime.Modified();
+}
+
+double* vtkShadingLabCompositePolyDataMapper::GetBounds()
+{
+  vtkDataObject* input = this->GetExecutive()->GetInputData(0, 0);
+  if (!input)
+  {
+    vtkMath::UninitializeBounds(this->Bounds);
+    return this->Bounds;
+  }
+  this->Update();
+  auto* executive = vtkCompositeDataPipeline::SafeDownCast(this->GetExecutive());
+  if (executive->GetPipelineMTime() <= this->BoundsTime.GetMTime())
+  {
+    return this->Bounds;
+  }
+  vtkBoundingBox box;
+  auto add = [&box](vtkPolyData* pd) {
+    double b[6];
+    pd->GetCellsBounds(b);
+    if (vtkMath::AreBoundsInitialized(b))
+    {
+      box.AddBounds(b);
+    }
+  };
+  input = this->GetExecutive()->GetInputData(0, 0);
+  if (auto* composite = vtkCompositeDataSet::SafeDownCast(input))
+  {
+    vtkSmartPointer<vtkCompositeDataIterator> it;
+    it.TakeReference(composite->NewIterator());
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+    {
+      if (auto* pd = vtkPolyData::SafeDownCast(it->GetCurrentDataObject()))
+      {
+        add(pd);
+      }
+    }
+  }
+  else if (auto* pd = vtkPolyData::SafeDownCast(input))
+  {
+    add(pd);
+  }
+  if (box.IsValid())
+  {
+    box.GetBounds(this->Bounds);
+  }
+  else
+  {
+    vtkMath::UninitializeBounds(this->Bounds);
+  }
+  this->BoundsTime.Modified();
+  return this->Bounds;
+}
+
+void vtkShadingLabCompositePolyDataMapper::ReleaseGraphicsResources(vtkWindow* window)
+{
+  for (auto& mapper : this->BlockMappers)
+  {
+    mapper->ReleaseGraphicsResources(window);
   }
 }
 

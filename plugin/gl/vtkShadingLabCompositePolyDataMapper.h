@@ -3,10 +3,15 @@
  * @class   vtkShadingLabCompositePolyDataMapper
  * @brief   multiblock input rendered block by block with vtkShadingLabPolyDataMapper
  *
- * A vtkCompositePolyDataMapper whose per-block mappers are
+ * A mapper of vtkPolyData or composite data whose per-block mappers are
  * vtkShadingLabPolyDataMapper instances carrying this mapper's mode,
  * interpolation space and material. It holds the properties only; the GLSL
- * work lives in the delegate (ParaView's advice for composite mappers).
+ * work lives in the block mappers (ParaView's advice for composite mappers).
+ * It derives from vtkMapper and owns its block mappers, as VTK 9.2's
+ * vtkCompositePolyDataMapper did: VTK 9.3 rebuilt that class around
+ * delegators that batch the blocks into one vtkOpenGLPolyDataMapper of
+ * VTK's, with no place for our shader replacements, so the same source
+ * serves VTK 9.2 to 9.6.
  * Per-block visibility, colour and opacity (vtkCompositeDataDisplayAttributes,
  * inherited down the tree as vtkCompositePolyDataMapper2 does) come from
  * SetBlockAttributes: ParaView's Block Colors / Opacities / Selectors.
@@ -19,9 +24,8 @@
 #include "shadinglabGLModule.h" // for export macro
 #include "vtkShadingLabPolyDataMapper.h" // for Modes
 
-#include <vtkCompositePolyDataMapper.h>
+#include <vtkMapper.h>
 #include <vtkSmartPointer.h>
-#include <vtkWeakPointer.h>
 
 #include <string>
 #include <vector>
@@ -29,11 +33,11 @@
 
 class vtkCompositeDataDisplayAttributes;
 
-class SHADINGLABGL_EXPORT vtkShadingLabCompositePolyDataMapper : public vtkCompositePolyDataMapper
+class SHADINGLABGL_EXPORT vtkShadingLabCompositePolyDataMapper : public vtkMapper
 {
 public:
   static vtkShadingLabCompositePolyDataMapper* New();
-  vtkTypeMacro(vtkShadingLabCompositePolyDataMapper, vtkCompositePolyDataMapper);
+  vtkTypeMacro(vtkShadingLabCompositePolyDataMapper, vtkMapper);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   ///@{
@@ -58,18 +62,25 @@ public:
 
   bool HasOpaqueGeometry() override;
   bool HasTranslucentPolygonalGeometry() override;
+  /// The union of the polydata leaves' cell bounds.
+  double* GetBounds() override;
+  using vtkAbstractMapper3D::GetBounds;
+  void ReleaseGraphicsResources(vtkWindow* window) override;
 
 protected:
   vtkShadingLabCompositePolyDataMapper() = default;
   ~vtkShadingLabCompositePolyDataMapper() override = default;
-  vtkPolyDataMapper* MakeAMapper() override;
   void Render(vtkRenderer* ren, vtkActor* act) override;
+  /// Takes vtkPolyData or a vtkCompositeDataSet of them.
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  vtkExecutive* CreateDefaultExecutive() override;
 
   shadinglab::render::Settings Settings;
-  /// The block mappers of the last build, in leaf order (the superclass
-  /// owns them; weak here).
-  std::vector<vtkWeakPointer<vtkShadingLabPolyDataMapper>> BlockMappers;
-  vtkMTimeType BuildSeen = ~vtkMTimeType(0); ///< build stamp of BlockMappers' first
+  /// The block mappers of the last build, one per polydata leaf in the
+  /// composite iterator's order (leaves only, empty ones skipped).
+  std::vector<vtkSmartPointer<vtkShadingLabPolyDataMapper>> BlockMappers;
+  vtkTimeStamp BuildTime; ///< when BlockMappers were made
+  vtkTimeStamp BoundsTime; ///< when Bounds were computed
   vtkSmartPointer<vtkCompositeDataDisplayAttributes> BlockAttributes;
 
   /// How one leaf is drawn: visibility, colour (when set) and opacity.
@@ -87,7 +98,9 @@ protected:
   static bool DrawnTranslucent(
     const BlockLook& look, vtkShadingLabPolyDataMapper* block, double actorOpacity);
   bool HasBlocks(bool translucent);
+  /// Makes BlockMappers anew when the pipeline changed since BuildTime.
   void BuildIfNeeded();
+  void BuildBlockMappers();
 
 private:
   vtkShadingLabCompositePolyDataMapper(const vtkShadingLabCompositePolyDataMapper&) = delete;

@@ -25,7 +25,7 @@ const std::vector<ColorMapName>& ColorMapNames()
     std::vector<ColorMapName> n;
     for (const auto& table : generated::kColorMapTables)
     {
-      n.push_back({ table.label, table.key });
+      n.push_back({ table.label, table.alias, table.key });
     }
     return n;
   }();
@@ -37,7 +37,8 @@ bool FindColorMap(const std::string& name, ColorMap& map)
   const std::string lower = Lower(name);
   for (const auto& table : generated::kColorMapTables)
   {
-    if (lower != Lower(table.label) && lower != table.key)
+    if (lower != Lower(table.label) && lower != table.key &&
+      (!*table.alias || lower != Lower(table.alias)))
     {
       continue;
     }

@@ -329,7 +329,8 @@ void ColorRows(std::vector<SettingRow>& t)
     SettingRow r = Row("colormap", "Colormap", "Color Map", G::Render, K::Text);
     for (const ColorMapName& name : ColorMapNames())
     {
-      r.choices.push_back({ name.key, name.label });
+      r.choices.push_back(
+        { name.key, name.alias.empty() ? name.label : name.label + ", formerly " + name.alias });
     }
     r.doc = "the colour map of --color-by: ParaView's preset of that name";
     r.frontEnds = kCli;

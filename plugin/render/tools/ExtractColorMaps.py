@@ -17,10 +17,14 @@ from paraview.modules.vtkRemotingViews import vtkSMTransferFunctionPresets
 from vtkmodules.vtkCommonCore import vtkDoubleArray
 from vtkmodules.vtkRenderingCore import vtkDiscretizableColorTransferFunction
 
-# The names users know from ParaView's Choose Preset dialog.
-NAMES = ["Cool to Warm", "Viridis (matplotlib)", "Inferno (matplotlib)", "Plasma (matplotlib)",
-         "Rainbow Uniform", "Jet", "Turbo", "Grayscale", "X Ray", "Black-Body Radiation",
-         "Blue Orange (divergent)"]
+# The names users know from ParaView's Choose Preset dialog, with the older
+# spelling where ParaView renamed a preset ("Viridis (matplotlib)" became
+# "Viridis" in 6.0): the table is the same whichever ParaView builds it, and
+# users may type either spelling.
+NAMES = [("Cool to Warm", ""), ("Viridis", "Viridis (matplotlib)"),
+         ("Inferno", "Inferno (matplotlib)"), ("Plasma", "Plasma (matplotlib)"),
+         ("Rainbow Uniform", ""), ("Jet", ""), ("Turbo", ""), ("Grayscale", ""), ("X Ray", ""),
+         ("Black-Body Radiation", ""), ("Blue Orange (divergent)", "")]
 BINS = 256  # ParaView's default NumberOfTableValues
 
 presets = vtkSMTransferFunctionPresets.GetInstance()
@@ -33,8 +37,12 @@ def key_of(name):
 
 
 rows = []
-for name in NAMES:
-    preset = json.loads(presets.GetPresetAsString(index[name]))
+for name, alias in NAMES:
+    found = [n for n in (name, alias) if n in index]
+    if not found:
+        sys.exit("ExtractColorMaps.py: this ParaView has no preset '%s'%s" %
+                 (name, " or '%s'" % alias if alias else ""))
+    preset = json.loads(presets.GetPresetAsString(index[found[0]]))
     points = preset['RGBPoints']
     x0, x1 = points[0], points[-4]
     lut = vtkDiscretizableColorTransferFunction()
@@ -55,17 +63,17 @@ for name in NAMES:
     for b in range(BINS):
         rgb += [mapped.GetValue(4 * b + c) for c in range(3)]
     nan = preset.get('NanColor', [1, 1, 0])
-    rows.append((name, key_of(name), rgb, [int(round(255 * v)) for v in nan[:3]]))
+    rows.append((name, alias, key_of(name), rgb, [int(round(255 * v)) for v in nan[:3]]))
 
 with open(sys.argv[1], 'w') as out:
     out.write('// Generated at build time by plugin/render/tools/ExtractColorMaps.py from\n'
               '// ParaView\'s presets (vtkSMTransferFunctionPresets). Do not edit.\n#pragma once\n\n'
               'namespace shadinglab::render::generated\n{\n'
-              'struct ColorMapTable\n{\n  const char* label;\n  const char* key;\n'
+              'struct ColorMapTable\n{\n  const char* label;\n  const char* alias;\n  const char* key;\n'
               '  unsigned char rgb[%d];\n  unsigned char nan[3];\n};\n\n' % (3 * BINS))
     out.write('inline constexpr int kColorMapBins = %d;\n' % BINS)
     out.write('inline constexpr ColorMapTable kColorMapTables[] = {\n')
-    for name, key, rgb, nan in rows:
-        out.write('  { "%s", "%s", { %s }, { %s } },\n' % (name, key, ', '.join(map(str, rgb)),
+    for name, alias, key, rgb, nan in rows:
+        out.write('  { "%s", "%s", "%s", { %s }, { %s } },\n' % (name, alias, key, ', '.join(map(str, rgb)),
                                                            ', '.join(map(str, nan))))
     out.write('};\n\n} // namespace shadinglab::render::generated\n')

@@ -276,7 +276,7 @@ Mesh Convert(vtkPolyData* input, WorldFrame& frame, bool normalize, const Scalar
     {
       polygon->Initialize(static_cast<int>(n), ids->GetPointer(0), pd->GetPoints());
       triangles->Reset();
-      if (polygon->Triangulate(triangles) && triangles->GetNumberOfIds() >= 3)
+      if (polygon->EarCutTriangulation(triangles) && triangles->GetNumberOfIds() >= 3)
       {
         for (vtkIdType t = 0; t + 2 < triangles->GetNumberOfIds(); t += 3)
         {

@@ -70,16 +70,18 @@ struct ColorMap
 /// prints, far above double rounding of a data range (1e-16 relative).
 constexpr double kLegendZeroFraction = 1e-6;
 
-/// The presets: ParaView's name and the command line's (kebab-case, e.g.
-/// "Viridis (matplotlib)" and "viridis"), in the order listed.
+/// The presets: ParaView's name, its name before ParaView 6.0 where it was
+/// renamed ("" otherwise), and the command line's (kebab-case), e.g.
+/// "Viridis", "Viridis (matplotlib)" and "viridis", in the order listed.
 struct ColorMapName
 {
   std::string label;
+  std::string alias;
   std::string key;
 };
 const std::vector<ColorMapName>& ColorMapNames();
 
-/// The preset named `name` (label or key, any case) with range [0, 1];
+/// The preset named `name` (label, alias or key, any case) with range [0, 1];
 /// false when there is none.
 bool FindColorMap(const std::string& name, ColorMap& map);
 

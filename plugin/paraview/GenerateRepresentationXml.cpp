@@ -73,6 +73,22 @@ std::string Numbers(const std::vector<double>& values, int count)
   return s.str();
 }
 
+/// Whether ParaView's own Surface representation has a property of this name
+/// too: from ParaView 5.13 on its normals computation brings FeatureAngle.
+/// Ours then says override="1", twice: in the proxy (replacing the inherited
+/// definition; without it ParaView 6.1 crashes merging the two) and where it
+/// is exposed (replacing ParaView's in the panel without a warning). The
+/// Extension's ShareProperties keeps the two in step.
+bool AlsoInParaViewSurface(const sr::SettingRow& row)
+{
+  return row.property == "FeatureAngle";
+}
+
+std::string Override(const sr::SettingRow& row)
+{
+  return AlsoInParaViewSurface(row) ? " override=\"1\"" : "";
+}
+
 int ParaViewCount(const sr::SettingRow& row)
 {
   return row.paraviewCount > 0 ? row.paraviewCount : row.maxCount;
@@ -108,7 +124,7 @@ std::string Documentation(const sr::SettingRow& row)
 void Property(std::ostream& out, const sr::SettingRow& row)
 {
   const std::string head = " name=\"" + row.property + "\" label=\"" + Escape(row.label) +
-    "\" initial_string=\"" + row.key + "\"";
+    "\" initial_string=\"" + row.key + "\"" + Override(row);
   const sr::SettingValue def = row.get(sr::Settings{});
   switch (row.kind)
   {
@@ -207,7 +223,7 @@ void Extension(std::ostream& out, const std::string& representation)
   {
     if (row.frontEnds & sr::kParaView)
     {
-      out << "            <Property name=\"" << row.property << "\"/>\n";
+      out << "            <Property name=\"" << row.property << "\"" << Override(row) << "/>\n";
       for (const ChoiceReport& report : kChoiceReports)
       {
         if (row.key == report.after)

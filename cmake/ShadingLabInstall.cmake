@@ -62,16 +62,43 @@ install(FILES ${_shadinglab_flat_headers}
   DESTINATION ${SHADINGLAB_INSTALL_FLAT_INCLUDEDIR} COMPONENT Development)
 
 # --- ParaView's plugin list -------------------------------------------------
-# ParaView (pvpython, pvbatch, the GUI) reads bin/paraview.conf beside its
-# executables: each line a plugin XML, relative to that directory. Installed
-# into ParaView's prefix (the Debian package), LoadDistributedPlugin and the
-# plugin manager list ShadingLab without PV_PLUGIN_PATH.
+# Installed into ParaView's prefix (the Debian package), LoadDistributedPlugin
+# and the plugin manager list ShadingLab without PV_PLUGIN_PATH. Two ways:
+# - ParaView 5.11 (Debian 12) reads bin/paraview.conf beside its executables,
+#   each line a plugin XML relative to that directory: ours is installed.
+# - Debian 13 and unstable own that file (lib/<arch>/paraview-X.Y/paraview.conf)
+#   and list in it /usr/share/paraview/plugins, a folder whose every plugin
+#   ParaView registers: a link to ours is installed there.
 if(SHADINGLAB_PARAVIEW_PLUGIN)
-  file(RELATIVE_PATH _shadinglab_xml_from_bin "/prefix/${CMAKE_INSTALL_BINDIR}"
-    "/prefix/${CMAKE_INSTALL_LIBDIR}/${SHADINGLAB_PARAVIEW_PLUGIN_SUBDIR}/ShadingLab.plugins.xml")
-  file(WRITE ${PROJECT_BINARY_DIR}/paraview.conf "${_shadinglab_xml_from_bin}\n")
-  install(FILES ${PROJECT_BINARY_DIR}/paraview.conf DESTINATION ${CMAKE_INSTALL_BINDIR}
-    COMPONENT Runtime)
+  set(_shadinglab_plugin_so
+    "${CMAKE_INSTALL_LIBDIR}/${SHADINGLAB_PARAVIEW_PLUGIN_SUBDIR}/ShadingLab/ShadingLab.so")
+  set(_shadinglab_debian_conf
+    "/usr/lib/${CMAKE_LIBRARY_ARCHITECTURE}/paraview-${ParaView_VERSION_MAJOR}.${ParaView_VERSION_MINOR}/paraview.conf")
+  set(_shadinglab_plugin_folder "")
+  if(EXISTS "${_shadinglab_debian_conf}")
+    file(STRINGS "${_shadinglab_debian_conf}" _shadinglab_conf_lines)
+    foreach(_line IN LISTS _shadinglab_conf_lines)
+      if(_line MATCHES "^/usr/share/")
+        set(_shadinglab_plugin_folder "${_line}")
+      endif()
+    endforeach()
+  endif()
+  if(_shadinglab_plugin_folder)
+    string(REGEX REPLACE "^/usr/" "" _shadinglab_plugin_folder "${_shadinglab_plugin_folder}")
+    file(RELATIVE_PATH _shadinglab_so_from_folder "/prefix/${_shadinglab_plugin_folder}"
+      "/prefix/${_shadinglab_plugin_so}")
+    file(MAKE_DIRECTORY "${PROJECT_BINARY_DIR}/plugin-link")
+    file(CREATE_LINK "${_shadinglab_so_from_folder}" "${PROJECT_BINARY_DIR}/plugin-link/ShadingLab.so"
+      SYMBOLIC)
+    install(FILES "${PROJECT_BINARY_DIR}/plugin-link/ShadingLab.so"
+      DESTINATION "${_shadinglab_plugin_folder}" COMPONENT Runtime)
+  else()
+    file(RELATIVE_PATH _shadinglab_xml_from_bin "/prefix/${CMAKE_INSTALL_BINDIR}"
+      "/prefix/${CMAKE_INSTALL_LIBDIR}/${SHADINGLAB_PARAVIEW_PLUGIN_SUBDIR}/ShadingLab.plugins.xml")
+    file(WRITE ${PROJECT_BINARY_DIR}/paraview.conf "${_shadinglab_xml_from_bin}\n")
+    install(FILES ${PROJECT_BINARY_DIR}/paraview.conf DESTINATION ${CMAKE_INSTALL_BINDIR}
+      COMPONENT Runtime)
+  endif()
 endif()
 
 # --- The package configuration ----------------------------------------------

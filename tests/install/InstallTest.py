@@ -97,6 +97,12 @@ if runtime:
     depends = r.stdout.strip()
     check('libc6' in depends and 'libvtk' in depends.lower() or 'paraview' in depends.lower(),
           'dpkg-shlibdeps filled Depends: %s' % depends[:160])
+# Where the package tells ParaView of the plugin: bin/paraview.conf (ParaView
+# 5.11), or a link in the plugin folder Debian 13 and later list in their
+# own paraview.conf.
+debian_conf = glob.glob('/usr/lib/*/paraview-*/paraview.conf')
+plugin_list = ('usr/share/paraview/plugins/ShadingLab.so' if debian_conf
+               else 'usr/bin/paraview.conf')
 root = os.path.join(work, 'dpkg-root')
 for d in ('var/lib/dpkg/info', 'var/lib/dpkg/updates', 'var/lib/dpkg/triggers'):
     os.makedirs(os.path.join(root, d), exist_ok=True)
@@ -106,16 +112,17 @@ dpkg = ['dpkg', '--root=' + root, '--force-depends', '--force-not-root', '--forc
 if debs:
     r = run(dpkg + ['-i'] + debs)
     check(r.returncode == 0 and os.path.exists(os.path.join(root, 'usr', 'bin', 'shadinglab'))
-          and os.path.exists(os.path.join(root, 'usr', 'bin', 'paraview.conf')),
-          'dpkg --root installs both packages (usr/bin/shadinglab, usr/bin/paraview.conf)')
+          and os.path.lexists(os.path.join(root, plugin_list)),
+          'dpkg --root installs both packages (usr/bin/shadinglab, %s)' % plugin_list)
     r = run([os.path.join(root, 'usr', 'bin', 'shadinglab'), '--version'])
     check(r.returncode == 0, 'the packaged CLI runs from the scratch root')
     r = run(dpkg + ['-r', 'shadinglab-dev', 'shadinglab'])
-    left = [f for f in glob.glob(os.path.join(root, 'usr', '**'), recursive=True) if os.path.isfile(f)]
+    left = [f for f in glob.glob(os.path.join(root, 'usr', '**'), recursive=True)
+            if os.path.isfile(f) or os.path.islink(f)]
     check(r.returncode == 0 and not left, 'dpkg -r removes every file (%d left)' % len(left))
 
 # 3. A real install (root, ShadingLab not installed, ParaView's bindir free).
-real = (os.geteuid() == 0 and runtime and not os.path.exists('/usr/bin/paraview.conf')
+real = (os.geteuid() == 0 and runtime and not os.path.lexists('/' + plugin_list)
         and run(['dpkg', '-s', 'shadinglab']).returncode != 0)
 if real:
     r = run(['dpkg', '-i', runtime[0]])
@@ -133,9 +140,9 @@ if real:
     finally:
         r = run(['dpkg', '-r', 'shadinglab'])
     check(r.returncode == 0 and not os.path.exists('/usr/bin/shadinglab')
-          and not os.path.exists('/usr/bin/paraview.conf'), 'dpkg -r shadinglab removes it')
+          and not os.path.lexists('/' + plugin_list), 'dpkg -r shadinglab removes it')
 else:
-    print('note: no real dpkg -i here (needs root, no ShadingLab installed, no /usr/bin/paraview.conf)')
+    print('note: no real dpkg -i here (needs root, no ShadingLab installed, no /%s)' % plugin_list)
 
 print('%d failure(s)' % failures)
 sys.exit(1 if failures else 0)

@@ -147,9 +147,12 @@ def make_meshes(outdir):
 
 
 def worker(plugin, directory):
+    import paraview.simple
     from paraview.simple import (LoadPlugin, OpenDataFile, RedistributeDataSet, ExtractSurface,
                                  Elevation, CreateView, Show, Hide, Render, ResetCamera,
-                                 SaveScreenshot, ColorBy, GhostCellsGenerator)
+                                 SaveScreenshot, ColorBy)
+    # ParaView 5.13 renamed GhostCellsGenerator to GhostCells.
+    ghost_cells = getattr(paraview.simple, 'GhostCells', None) or paraview.simple.GhostCellsGenerator
     LoadPlugin(plugin, remote=False, ns=globals())
     view = CreateView('RenderView')
     view.ViewSize = [W, H]
@@ -160,7 +163,7 @@ def worker(plugin, directory):
         b = reader.GetDataInformation().GetBounds()
         parts = RedistributeDataSet(Input=reader)
         if GHOSTS in name:
-            parts = GhostCellsGenerator(Input=parts)
+            parts = ghost_cells(Input=parts)
         surface = ExtractSurface(Input=parts)
         if GHOSTS in name:
             # Cells with the ghosts, over all ranks: more than the mesh has

@@ -31,8 +31,16 @@ def check(condition, message):
         failures.append(message)
 
 
+def bounds_elevation(source):
+    """Elevation from the data's lowest to its highest corner, named: ParaView
+    6 leaves LowPoint and HighPoint at 0 until the source has run."""
+    source.UpdatePipeline()
+    b = source.GetDataInformation().GetBounds()
+    return Elevation(Input=source, LowPoint=[b[0], b[2], b[4]], HighPoint=[b[1], b[3], b[5]])
+
+
 reader = OpenDataFile(mesh)
-elevation = Elevation(Input=reader)
+elevation = bounds_elevation(reader)
 view = CreateView('RenderView')
 view.ViewSize = [W, H]
 view.OrientationAxesVisibility = 0
@@ -436,6 +444,8 @@ rep.Ks = 0.3
 rep.Shininess = 32
 rep.AmbientReflectance = 0.0
 ColorBy(rep, ('POINTS', 'Elevation'))
+# The CLI's default map, named: ParaView 6.0's default is Fast.
+GetColorTransferFunction('Elevation').ApplyPreset('Cool to Warm', True)
 rep.RescaleTransferFunctionToDataRange(True)
 camera = view.GetActiveCamera()  # as section 2 set it up, then reset in 6
 camera.Azimuth(20)
@@ -448,7 +458,7 @@ colored_path = os.path.join(outdir, 'elevation.vtp')
 SaveData(colored_path, proxy=elevation)
 # Flat on the large facets (as in section 2: ParaView's double coordinates
 # move facet edges by a fraction of a pixel, and a facet step is large).
-coarse_elevation = Elevation(Input=coarse_reader)
+coarse_elevation = bounds_elevation(coarse_reader)
 coarse_colored_path = os.path.join(outdir, 'coarse_elevation.vtp')
 SaveData(coarse_colored_path, proxy=coarse_elevation)
 coarse_colored = Show(coarse_elevation, view)

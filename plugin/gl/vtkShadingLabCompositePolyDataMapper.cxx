@@ -23,6 +23,18 @@
 
 vtkStandardNewMacro(vtkShadingLabCompositePolyDataMapper);
 
+namespace
+{
+/// Whether a block mapper has anything to draw. A block without points (a
+/// ParaView client's share of data drawn elsewhere) is skipped: VTK 9.6's
+/// vtkOpenGLPolyDataMapper dereferences the missing vtkPoints.
+bool Drawable(vtkShadingLabPolyDataMapper* mapper)
+{
+  vtkPolyData* input = mapper ? mapper->GetInput() : nullptr;
+  return input && input->GetPoints() && input->GetNumberOfPoints() > 0;
+}
+}
+
 void vtkShadingLabCompositePolyDataMapper::SetSettings(const shadinglab::render::Settings& settings)
 {
   if (!shadinglab::render::SameSettings(this->Settings, settings))
@@ -277,7 +289,7 @@ void vtkShadingLabCompositePolyDataMapper::Render(vtkRenderer* ren, vtkActor* ac
   {
     vtkShadingLabPolyDataMapper* sm = this->BlockMappers[i];
     const BlockLook& look = looks[i];
-    if (!sm || !sm->GetInput() || !look.visible)
+    if (!Drawable(sm) || !look.visible)
     {
       continue;
     }
@@ -335,7 +347,7 @@ bool vtkShadingLabCompositePolyDataMapper::HasBlocks(bool translucent)
   for (size_t i = 0; i < this->BlockMappers.size(); ++i)
   {
     vtkShadingLabPolyDataMapper* sm = this->BlockMappers[i];
-    if (!sm || !sm->GetInput() || !looks[i].visible)
+    if (!Drawable(sm) || !looks[i].visible)
     {
       continue;
     }

@@ -31,16 +31,15 @@ def check(condition, message):
         failures.append(message)
 
 
-def bounds_elevation(source):
-    """Elevation from the data's lowest to its highest corner, named: ParaView
-    6 leaves LowPoint and HighPoint at 0 until the source has run."""
-    source.UpdatePipeline()
-    b = source.GetDataInformation().GetBounds()
-    return Elevation(Input=source, LowPoint=[b[0], b[2], b[4]], HighPoint=[b[1], b[3], b[5]])
+def corner_elevation(source):
+    """Elevation from (1, 1, 1) to (-1, -1, -1), the points ParaView 5.11
+    gives a new Elevation filter, named: ParaView 6 leaves both at 0 (a zero
+    vector, for which VTK falls back to z)."""
+    return Elevation(Input=source, LowPoint=[1, 1, 1], HighPoint=[-1, -1, -1])
 
 
 reader = OpenDataFile(mesh)
-elevation = bounds_elevation(reader)
+elevation = corner_elevation(reader)
 view = CreateView('RenderView')
 view.ViewSize = [W, H]
 view.OrientationAxesVisibility = 0
@@ -458,7 +457,7 @@ colored_path = os.path.join(outdir, 'elevation.vtp')
 SaveData(colored_path, proxy=elevation)
 # Flat on the large facets (as in section 2: ParaView's double coordinates
 # move facet edges by a fraction of a pixel, and a facet step is large).
-coarse_elevation = bounds_elevation(coarse_reader)
+coarse_elevation = corner_elevation(coarse_reader)
 coarse_colored_path = os.path.join(outdir, 'coarse_elevation.vtp')
 SaveData(coarse_colored_path, proxy=coarse_elevation)
 coarse_colored = Show(coarse_elevation, view)

@@ -18,33 +18,51 @@ install(FILES ${PROJECT_SOURCE_DIR}/README.md ${PROJECT_SOURCE_DIR}/LICENSE
   DESTINATION ${CMAKE_INSTALL_DOCDIR} COMPONENT Runtime)
 
 # --- Libraries and headers (static; the package carries their dependencies) -
-# Each library's name in the package: ShadingLab::<name>.
-set(_shadinglab_exported
+# Each library's name in the package: ShadingLab::<name>, in one export set
+# per package component: CPU (the model and the software renderer, no VTK),
+# VTK (the VTK classes and the mesh filters; the GL module is exported by
+# vtk_module_build beside them) and IO (the mesh reader, VTK's IO modules).
+set(_shadinglab_exported_CPU
   shadinglab_warnings Warnings
   shadinglab_compat Compat
   shadinglab_model Model
   shadinglab_render Render
-  shadinglab_render_vtk RenderVTK
-  shadinglab_cpu CPU
-  shadinglab_cpu_vtk CPUVTK
   shadinglab_meshcore MeshCore
+  shadinglab_cpu CPU)
+set(_shadinglab_exported_VTK
+  shadinglab_render_vtk RenderVTK
+  shadinglab_cpu_vtk CPUVTK
   shadinglab_mesh Mesh
-  shadinglab_meshio MeshIO
   shadinglab_meshprep MeshPrep)
-set(_shadinglab_targets)
-while(_shadinglab_exported)
-  list(POP_FRONT _shadinglab_exported _target _name)
-  set_target_properties(${_target} PROPERTIES EXPORT_NAME ${_name})
-  list(APPEND _shadinglab_targets ${_target})
-endwhile()
-install(TARGETS ${_shadinglab_targets} EXPORT ShadingLabTargets
-  ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT Development
-  INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
-install(EXPORT ShadingLabTargets NAMESPACE ShadingLab:: FILE ShadingLabTargets.cmake
-  DESTINATION ${SHADINGLAB_INSTALL_CMAKEDIR} COMPONENT Development)
-# The build tree's copy (vtk_module_build exports the GL module from there too).
-export(EXPORT ShadingLabTargets NAMESPACE ShadingLab::
-  FILE ${PROJECT_BINARY_DIR}/${SHADINGLAB_INSTALL_CMAKEDIR}/ShadingLabTargets.cmake)
+set(_shadinglab_exported_IO
+  shadinglab_meshio MeshIO)
+# The VTK modules each component's libraries link (the package finds only
+# those of the components asked for: IOExodus brings HDF5, whose lookup in
+# ParaView 5.11's VTK compiles C).
+set(SHADINGLAB_PACKAGE_VTK_MODULES
+  CommonCore CommonDataModel CommonExecutionModel CommonMath CommonTransforms
+  FiltersCore FiltersGeneral RenderingCore RenderingOpenGL2)
+set(SHADINGLAB_PACKAGE_IO_MODULES
+  CommonCore CommonDataModel FiltersCore FiltersGeometry
+  IOCore IOLegacy IOXML IOPLY IOGeometry IOExodus)
+foreach(_component CPU VTK IO)
+  set(_shadinglab_targets)
+  set(_list ${_shadinglab_exported_${_component}})
+  while(_list)
+    list(POP_FRONT _list _target _name)
+    set_target_properties(${_target} PROPERTIES EXPORT_NAME ${_name})
+    list(APPEND _shadinglab_targets ${_target})
+  endwhile()
+  install(TARGETS ${_shadinglab_targets} EXPORT ShadingLab${_component}Targets
+    ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR} COMPONENT Development
+    INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR})
+  install(EXPORT ShadingLab${_component}Targets NAMESPACE ShadingLab::
+    FILE ShadingLab${_component}Targets.cmake
+    DESTINATION ${SHADINGLAB_INSTALL_CMAKEDIR} COMPONENT Development)
+  # The build tree's copy (vtk_module_build exports the GL module from there too).
+  export(EXPORT ShadingLab${_component}Targets NAMESPACE ShadingLab::
+    FILE ${PROJECT_BINARY_DIR}/${SHADINGLAB_INSTALL_CMAKEDIR}/ShadingLab${_component}Targets.cmake)
+endforeach()
 # Namespaced headers (shadinglab/model, render, cpu, gl, Version.h) ...
 foreach(_dir plugin/model/include plugin/render/include plugin/cpu/include plugin/gl/include)
   install(DIRECTORY ${PROJECT_SOURCE_DIR}/${_dir}/ DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}

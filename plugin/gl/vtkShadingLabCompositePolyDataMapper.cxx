@@ -107,29 +107,27 @@ void vtkShadingLabCompositePolyDataMapper::BuildIfNeeded()
   }
 }
 
-void vtkShadingLabCompositePolyDataMapper::BuildBlockMappers()
+std::vector<vtkPolyData*> vtkShadingLabCompositePolyDataMapper::PolyDataLeaves(bool report)
 {
-  // One block mapper per polydata leaf, each on a shallow copy (the pipeline
-  // is broken here, as the mapper is the pipeline's end).
-  this->BlockMappers.clear();
+  // The composite iterator's order (leaves only, empty nodes skipped), the
+  // order BlockLooks follows too.
   std::vector<vtkPolyData*> leaves;
   vtkDataObject* input = this->GetExecutive()->GetInputData(0, 0);
   if (auto* composite = vtkCompositeDataSet::SafeDownCast(input))
   {
     vtkSmartPointer<vtkCompositeDataIterator> it;
     it.TakeReference(composite->NewIterator());
-    bool warned = false;
     for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
     {
       if (auto* pd = vtkPolyData::SafeDownCast(it->GetCurrentDataObject()))
       {
         leaves.push_back(pd);
       }
-      else if (!warned)
+      else if (report)
       {
         vtkErrorMacro("every leaf of the composite input must be vtkPolyData; "
           << it->GetCurrentDataObject()->GetClassName() << " is not drawn");
-        warned = true;
+        report = false; // once per build
       }
     }
   }
@@ -137,11 +135,19 @@ void vtkShadingLabCompositePolyDataMapper::BuildBlockMappers()
   {
     leaves.push_back(pd);
   }
-  else if (input)
+  else if (input && report)
   {
     vtkErrorMacro("this mapper cannot draw input of type " << input->GetClassName());
   }
-  for (vtkPolyData* leaf : leaves)
+  return leaves;
+}
+
+void vtkShadingLabCompositePolyDataMapper::BuildBlockMappers()
+{
+  // One block mapper per polydata leaf, each on a shallow copy (the pipeline
+  // is broken here, as the mapper is the pipeline's end).
+  this->BlockMappers.clear();
+  for (vtkPolyData* leaf : this->PolyDataLeaves(true))
   {
     auto mapper = vtkSmartPointer<vtkShadingLabPolyDataMapper>::New();
     mapper->SetSettings(this->Settings);
@@ -155,8 +161,7 @@ void vtkShadingLabCompositePolyDataMapper::BuildBlockMappers()
 
 double* vtkShadingLabCompositePolyDataMapper::GetBounds()
 {
-  vtkDataObject* input = this->GetExecutive()->GetInputData(0, 0);
-  if (!input)
+  if (!this->GetExecutive()->GetInputData(0, 0))
   {
     vtkMath::UninitializeBounds(this->Bounds);
     return this->Bounds;
@@ -168,30 +173,14 @@ double* vtkShadingLabCompositePolyDataMapper::GetBounds()
     return this->Bounds;
   }
   vtkBoundingBox box;
-  auto add = [&box](vtkPolyData* pd) {
+  for (vtkPolyData* leaf : this->PolyDataLeaves(false))
+  {
     double b[6];
-    pd->GetCellsBounds(b);
+    leaf->GetCellsBounds(b);
     if (vtkMath::AreBoundsInitialized(b))
     {
       box.AddBounds(b);
     }
-  };
-  input = this->GetExecutive()->GetInputData(0, 0);
-  if (auto* composite = vtkCompositeDataSet::SafeDownCast(input))
-  {
-    vtkSmartPointer<vtkCompositeDataIterator> it;
-    it.TakeReference(composite->NewIterator());
-    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
-    {
-      if (auto* pd = vtkPolyData::SafeDownCast(it->GetCurrentDataObject()))
-      {
-        add(pd);
-      }
-    }
-  }
-  else if (auto* pd = vtkPolyData::SafeDownCast(input))
-  {
-    add(pd);
   }
   if (box.IsValid())
   {

@@ -32,6 +32,7 @@
 
 
 class vtkCompositeDataDisplayAttributes;
+class vtkPolyData;
 
 class SHADINGLABGL_EXPORT vtkShadingLabCompositePolyDataMapper : public vtkMapper
 {
@@ -101,6 +102,9 @@ protected:
   /// Makes BlockMappers anew when the pipeline changed since BuildTime.
   void BuildIfNeeded();
   void BuildBlockMappers();
+  /// The input's vtkPolyData leaves in block-mapper order; `report` logs a
+  /// leaf or an input this mapper cannot draw (once).
+  std::vector<vtkPolyData*> PolyDataLeaves(bool report);
 
 private:
   vtkShadingLabCompositePolyDataMapper(const vtkShadingLabCompositePolyDataMapper&) = delete;

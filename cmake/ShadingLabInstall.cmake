@@ -20,8 +20,9 @@ install(FILES ${PROJECT_SOURCE_DIR}/README.md ${PROJECT_SOURCE_DIR}/LICENSE
 # --- Libraries and headers (static; the package carries their dependencies) -
 # Each library's name in the package: ShadingLab::<name>, in one export set
 # per package component: CPU (the model and the software renderer, no VTK),
-# VTK (the VTK classes and the mesh filters; the GL module is exported by
-# vtk_module_build beside them) and IO (the mesh reader, VTK's IO modules).
+# VTK (the mesh preparation step; the VTK modules, ShadingLab::RenderVTK,
+# Mesh, CPUVTK, GL and VTK, are exported by vtk_module_build beside it) and
+# IO (the mesh reader, VTK's IO modules).
 set(_shadinglab_exported_CPU
   shadinglab_warnings Warnings
   shadinglab_compat Compat
@@ -30,9 +31,6 @@ set(_shadinglab_exported_CPU
   shadinglab_meshcore MeshCore
   shadinglab_cpu CPU)
 set(_shadinglab_exported_VTK
-  shadinglab_render_vtk RenderVTK
-  shadinglab_cpu_vtk CPUVTK
-  shadinglab_mesh Mesh
   shadinglab_meshprep MeshPrep)
 set(_shadinglab_exported_IO
   shadinglab_meshio MeshIO)
@@ -71,9 +69,9 @@ endforeach()
 install(FILES ${PROJECT_BINARY_DIR}/plugin/model/include/shadinglab/Version.h
   DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/shadinglab COMPONENT Development)
 # ... and the VTK-side and mesh headers, included by file name as VTK's are.
+# (The VTK modules' headers are installed by vtk_module_build.)
 file(GLOB _shadinglab_flat_headers
-  ${PROJECT_SOURCE_DIR}/plugin/render/vtk/*.h ${PROJECT_SOURCE_DIR}/plugin/cpu/vtk/*.h
-  ${PROJECT_SOURCE_DIR}/mesh/core/*.h ${PROJECT_SOURCE_DIR}/mesh/vtk/*.h
+  ${PROJECT_SOURCE_DIR}/mesh/core/*.h ${PROJECT_SOURCE_DIR}/mesh/vtk/MeshArrays.h
   ${PROJECT_SOURCE_DIR}/mesh/io/MeshIO.h ${PROJECT_SOURCE_DIR}/mesh/io/MeshPrecheck.h
   ${PROJECT_SOURCE_DIR}/mesh/prep/*.h)
 install(FILES ${_shadinglab_flat_headers}

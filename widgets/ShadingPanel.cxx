@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "ShadingPanel.h"
 
+#include <vtkPolyData.h>
+
 #include "CpuPanel.h"
 #include "GpuPanel.h"
 #include "ViewInteraction.h"
@@ -16,13 +18,15 @@ namespace shadinglab::widgets
 namespace
 {
 
-/// Asked once per process: creating a GL window to ask is not free.
-bool GpuAnswers(std::string& why)
+/// Asked once per process: creating a GL window to ask is not free. Fills
+/// the chooser's OpenGL facts (usable, why not, GL_RENDERER).
+void GpuFacts(render::BackendFacts& facts)
 {
-  static std::string reason;
-  static const bool available = gl::GpuAvailable(reason);
-  why = reason;
-  return available;
+  static std::string reason, renderer;
+  static const bool available = gl::GpuAvailable(reason, &renderer);
+  facts.glUsable = available;
+  facts.glProblem = reason;
+  facts.glRenderer = renderer;
 }
 
 } // namespace
@@ -45,21 +49,37 @@ Lighting<double> ViewLighting(const ViewState& view, const render::Camera& camer
 
 ShadingPanel* ShadingPanel::Create(const PanelSpec& spec, ViewState* view, QWidget* parent)
 {
-  if (spec.backend == render::Backend::GPU && spec.errorReference < 0 && !spec.dolpImage)
+  // Who draws: render::ChooseBackend, as for every front end. An error
+  // map and a DoLP image are computed from the CPU renderer's linear frames.
+  render::BackendFacts facts;
+  if (spec.errorReference >= 0)
   {
-    std::string why;
-    if (GpuAnswers(why))
-    {
-      return new GpuPanel(spec, view, parent);
-    }
-    auto* panel = new CpuPanel(spec, view, parent);
-    panel->Note = "CPU: no OpenGL 3.2";
-    panel->setToolTip(
-      QString("GPU asked for, CPU drawn: %1").arg(QString::fromStdString(why)));
-    panel->UpdateTitle();
-    return panel;
+    facts.cpuOnly = "an error map is computed from the CPU renderer's linear frames";
   }
-  return new CpuPanel(spec, view, parent);
+  else if (spec.dolpImage)
+  {
+    facts.cpuOnly = "a DoLP image is measured on the CPU renderer's linear frames";
+  }
+  facts.polygons = spec.mesh ? static_cast<long long>(spec.mesh->GetNumberOfPolys()) : 0;
+  if (spec.backend != render::Backend::CPU && facts.cpuOnly.empty())
+  {
+    GpuFacts(facts);
+  }
+  const render::BackendChoice choice = render::ChooseBackend(spec.backend, facts);
+  if (choice.backend == render::Backend::GPU)
+  {
+    return new GpuPanel(spec, view, parent);
+  }
+  auto* panel = new CpuPanel(spec, view, parent);
+  if (spec.backend != render::Backend::CPU && facts.cpuOnly.empty())
+  {
+    panel->Note = facts.glUsable ? "CPU: auto" : "CPU: no OpenGL 3.2";
+    panel->setToolTip(QString("%1 asked for, CPU drawn: %2")
+                        .arg(render::BackendName(spec.backend))
+                        .arg(QString::fromStdString(choice.why)));
+    panel->UpdateTitle();
+  }
+  return panel;
 }
 
 ShadingPanel::ShadingPanel(const PanelSpec& spec, ViewState* view, QWidget* parent)

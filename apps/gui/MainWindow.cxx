@@ -375,7 +375,7 @@ void MainWindow::OnPanelEdited()
     static_cast<render::ScanPrecision>(this->ScanPrecision->currentData().toInt());
   spec.material = this->Editor->GetMaterial();
   auto backend = static_cast<render::Backend>(this->Backend->currentData().toInt());
-  if (spec.scan == render::ScanConversion::Incremental && backend == render::Backend::GPU)
+  if (spec.scan == render::ScanConversion::Incremental && backend != render::Backend::CPU)
   {
     // The lecture's DDA is the CPU renderer's: the panel moves there.
     backend = render::Backend::CPU;

@@ -59,6 +59,8 @@ QWidget* MainWindow::BuildControls()
   this->Backend = new QComboBox;
   this->Backend->addItem("GPU (ShadingLab mapper)", static_cast<int>(render::Backend::GPU));
   this->Backend->addItem("CPU (software renderer)", static_cast<int>(render::Backend::CPU));
+  this->Backend->addItem("Auto (CPU on a software OpenGL for large meshes)",
+    static_cast<int>(render::Backend::Auto));
   panelForm->addRow("Backend", this->Backend);
   this->Interpolation = widgets::MakeSettingComboBox("interp");
   panelForm->addRow("Interpolation", this->Interpolation);

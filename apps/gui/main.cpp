@@ -30,7 +30,7 @@ namespace
 {
 
 const char* kUsage =
-  "usage: shadinglab-gui [--scene NAME] [INPUT] [--backend gpu|cpu] [--size WxH]\n"
+  "usage: shadinglab-gui [--scene NAME] [INPUT] [--backend gpu|cpu|auto] [--size WxH]\n"
   "                      [--variant corrugated|isosurface] [--rotation DEG] [--distance R]\n"
   "                      [--polarizer DEG] [--light-polarizer DEG]\n"
   "                      [--screenshot FILE.png] [--profile FILE.csv] [--color-by ARRAY]\n"
@@ -134,25 +134,28 @@ int main(int argc, char** argv)
           return Fail("--distance must be a number of radii in [1.5, 10000] (got '" + v + "')");
         }
       }
-      else if (a == "--polarizer")
+      else if (a == "--polarizer" || a == "--light-polarizer")
       {
-        const std::string v = value("--polarizer");
-        char* end = nullptr;
-        options.polarizer = std::strtod(v.c_str(), &end);
-        if (*end || !(options.polarizer >= 0.0 && options.polarizer <= 180.0))
+        // Range and message from the settings table, as the CLI's.
+        render::Settings settings;
+        const std::string key = a.substr(2);
+        const std::string problem = render::ApplySettingText(settings, key, value(a.c_str()), "--");
+        if (!problem.empty())
         {
-          return Fail("--polarizer must be an angle in [0, 180] degrees (got '" + v + "')");
+          return Fail(problem);
         }
-      }
-      else if (a == "--light-polarizer")
-      {
-        const std::string v = value("--light-polarizer");
-        char* end = nullptr;
-        options.lightPolarizer = std::strtod(v.c_str(), &end);
-        if (*end || !(options.lightPolarizer >= -1.0 && options.lightPolarizer <= 180.0))
+        if (key == "light-polarizer")
         {
-          return Fail(
-            "--light-polarizer must be an angle in [0, 180] degrees or -1 (got '" + v + "')");
+          options.lightPolarizer = settings.render.lightPolarizer;
+        }
+        else if (settings.render.polarizer < 0)
+        {
+          return Fail("--polarizer -1 (none): the polarization scene turns a polarizer in front of "
+                      "the camera; give its angle in [0, 180] degrees");
+        }
+        else
+        {
+          options.polarizer = settings.render.polarizer;
         }
       }
       else if (a == "--rotation")
@@ -167,12 +170,11 @@ int main(int argc, char** argv)
       }
       else if (a == "--backend")
       {
-        const std::string b = value("--backend");
-        if (b != "gpu" && b != "cpu")
+        const std::string problem = render::ParseBackend(value("--backend"), options.backend);
+        if (!problem.empty())
         {
-          return Fail("--backend must be gpu or cpu (got '" + b + "')");
+          return Fail(problem);
         }
-        options.backend = b == "gpu" ? render::Backend::GPU : render::Backend::CPU;
       }
       else if (!a.empty() && a[0] == '-')
         return Fail("unknown option " + a + " (see --help)");

@@ -130,7 +130,7 @@ int RunCompare(int argc, char** argv)
   const int canvasH = H + kLabelBar;
   std::vector<uint8_t> canvas(static_cast<size_t>(canvasW) * canvasH * 3, 24);
   std::string autoNotice;
-  const auto renderer = MakeRenderer(request->backend, "compare", autoNotice);
+  const auto renderer = MakeRenderer(*request, "", "compare", autoNotice);
   const char* backendName = render::BackendName(renderer->GetBackend());
   for (size_t m = 0; m < panels.size(); ++m)
   {

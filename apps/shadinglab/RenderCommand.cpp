@@ -57,18 +57,14 @@ int RunRender(int argc, char** argv)
   const render::RenderOptions& options = request->settings.render;
   const std::string output = args.Get("output", "intensity");
   const bool polarization = IsPolarizationOutput(output);
-  if (polarization && request->backend == "gpu")
-  {
-    throw UsageError("--output " + output + " is measured on the CPU renderer's linear frames: "
-                     "--backend cpu");
-  }
   if (polarization && options.polarizer >= 0)
   {
     throw UsageError("--output " + output + " turns its own analysers: drop --polarizer");
   }
   std::string autoNotice;
-  const auto renderer =
-    MakeRenderer(polarization ? "cpu" : request->backend, "render", autoNotice);
+  const auto renderer = MakeRenderer(*request,
+    polarization ? "--output " + output + " is measured on the CPU renderer's linear frames" : "",
+    "render", autoNotice);
   if (polarization)
   {
     const std::string path = args.Get("out", output == "dolp" || output == "aop" ? "out.png" : output + ".vti");

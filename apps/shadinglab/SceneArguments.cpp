@@ -35,7 +35,8 @@ std::string SceneOptionsHelp()
     "\n"
     "Scene options:\n"
     "  --backend B                 cpu | gpu | auto (auto: gpu when an X display with OpenGL >= 3.2\n"
-    "                              exists, cpu otherwise, said on stderr)\n"
+    "                              answers, unless it is a software rasterizer and the mesh has\n"
+    "                              " + std::to_string(render::kAutoCpuMinPolygons) + " polygons or more; cpu otherwise, said on stderr)\n"
     "  --azimuth DEG --elevation DEG --zoom F   camera about the fitted view\n"
     "  --parallel                parallel projection\n"
     "  --camera-position X,Y,Z --focal-point X,Y,Z --view-up X,Y,Z --view-angle DEG\n"
@@ -130,20 +131,16 @@ void SettingsFromArguments(const Arguments& args, SceneArguments& scene)
   }
   scene.scene.material = material;
 
-  const std::string& backend = scene.backend = args.Get("backend", "auto");
-  if (backend != "cpu" && backend != "auto" && backend != "gpu")
+  const std::string problem = render::ParseBackend(args.Get("backend", "auto"), scene.backend);
+  if (!problem.empty())
   {
-    throw UsageError("unknown --backend '" + backend + "' (expected auto, cpu or gpu)");
+    throw UsageError(problem);
   }
   if (options.scan == render::ScanConversion::Incremental)
   {
     // The lecture's DDA is the CPU renderer's: auto takes it there.
-    if (backend == "gpu")
-    {
-      throw UsageError("--scan incremental is the CPU renderer's (the GPU's rasterizer "
-                       "interpolates in hardware): use --backend cpu or auto");
-    }
-    scene.backend = "cpu";
+    scene.cpuOnly = "--scan incremental is the CPU renderer's (the GPU's rasterizer interpolates "
+                    "in hardware)";
   }
 }
 
@@ -451,24 +448,32 @@ std::unique_ptr<SceneArguments> SceneFromArguments(int argc, char** argv, const 
   return result;
 }
 
-std::unique_ptr<render::Renderer> MakeRenderer(
-  const std::string& backend, const char* command, std::string& autoNotice)
+std::unique_ptr<render::Renderer> MakeRenderer(const SceneArguments& scene, std::string cpuOnly,
+  const char* command, std::string& autoNotice)
 {
-  if (backend == "cpu")
+  render::BackendFacts facts;
+  facts.cpuOnly = cpuOnly.empty() ? scene.cpuOnly : std::move(cpuOnly);
+  facts.polygons = scene.mesh.NumberOfPolygons();
+  if (scene.backend != render::Backend::CPU && facts.cpuOnly.empty())
   {
-    return std::make_unique<cpu::SoftwareRenderer>();
+    facts.glUsable = gl::GpuAvailable(
+      facts.glProblem, scene.backend == render::Backend::Auto ? &facts.glRenderer : nullptr);
   }
-  std::string why;
-  if (gl::GpuAvailable(why))
+  const render::BackendChoice choice = render::ChooseBackend(scene.backend, facts);
+  if (!choice.conflict.empty())
+  {
+    throw UsageError(facts.glUsable ? choice.conflict + ": use --backend cpu or auto"
+                                    : "--backend gpu: " + choice.conflict);
+  }
+  if (choice.backend == render::Backend::GPU)
   {
     return std::make_unique<gl::GpuRenderer>();
   }
-  if (backend == "gpu")
+  if (scene.backend == render::Backend::Auto)
   {
-    throw UsageError("--backend gpu: " + why);
+    autoNotice = std::string("shadinglab ") + command + ": backend auto: " + choice.why +
+      "; using the CPU renderer\n";
   }
-  autoNotice = std::string("shadinglab ") + command + ": backend auto: " + why +
-    "; using the CPU renderer\n";
   return std::make_unique<cpu::SoftwareRenderer>();
 }
 

@@ -26,7 +26,9 @@ struct SceneArguments
   Arguments args;
   bool helpShown = false;
   std::string input;
-  std::string backend; ///< "cpu", "gpu" or "auto"
+  render::Backend backend = render::Backend::Auto; ///< --backend
+  /// A CPU-only feature asked for (--scan incremental), for the chooser.
+  std::string cpuOnly;
   render::Mesh mesh;    ///< in `frame`'s local coordinates
   render::WorldFrame frame;
   render::Scene scene; ///< scene.mesh points at `mesh`
@@ -54,13 +56,15 @@ std::unique_ptr<SceneArguments> SceneFromArguments(int argc, char** argv, const 
   const std::vector<std::string>& extraValued = {});
 
 /**
- * The renderer for --backend: the GL renderer when asked or (auto) when an
- * X display with OpenGL >= 3.2 answers, else the CPU renderer. An auto
- * fallback is explained in `autoNotice`, which the caller prints after
- * success so that an error stays one line.
+ * The renderer render::ChooseBackend takes for `scene`'s --backend, its
+ * CPU-only features and `cpuOnly` (the command's own: a polarization
+ * output), from what answers here (an X display with OpenGL >= 3.2, its
+ * GL_RENDERER) and the mesh's size. Auto's choice of the CPU is explained in
+ * `autoNotice`, which the caller prints after success so that an error stays
+ * one line; a request that cannot be honoured is a UsageError.
  */
-std::unique_ptr<render::Renderer> MakeRenderer(
-  const std::string& backend, const char* command, std::string& autoNotice);
+std::unique_ptr<render::Renderer> MakeRenderer(const SceneArguments& scene, std::string cpuOnly,
+  const char* command, std::string& autoNotice);
 
 /// Renders, turning the renderer's exceptions into UsageError.
 const render::Image& RenderOrExplain(render::Renderer& renderer, const render::Scene& scene,

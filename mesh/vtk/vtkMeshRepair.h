@@ -22,9 +22,11 @@
 #ifndef vtkMeshRepair_h
 #define vtkMeshRepair_h
 
+#include "shadinglabMeshModule.h" // for export macro
+
 #include <vtkPolyDataAlgorithm.h>
 
-class vtkMeshRepair : public vtkPolyDataAlgorithm
+class SHADINGLABMESH_EXPORT vtkMeshRepair : public vtkPolyDataAlgorithm
 {
 public:
   static vtkMeshRepair* New();

@@ -22,9 +22,11 @@
 #ifndef vtkOpenSubdivRefine_h
 #define vtkOpenSubdivRefine_h
 
+#include "shadinglabMeshModule.h" // for export macro
+
 #include <vtkPolyDataAlgorithm.h>
 
-class vtkOpenSubdivRefine : public vtkPolyDataAlgorithm
+class SHADINGLABMESH_EXPORT vtkOpenSubdivRefine : public vtkPolyDataAlgorithm
 {
 public:
   static vtkOpenSubdivRefine* New();

@@ -25,9 +25,11 @@
 #ifndef vtkWeightedPolyDataNormals_h
 #define vtkWeightedPolyDataNormals_h
 
+#include "shadinglabMeshModule.h" // for export macro
+
 #include <vtkPolyDataAlgorithm.h>
 
-class vtkWeightedPolyDataNormals : public vtkPolyDataAlgorithm
+class SHADINGLABMESH_EXPORT vtkWeightedPolyDataNormals : public vtkPolyDataAlgorithm
 {
 public:
   static vtkWeightedPolyDataNormals* New();

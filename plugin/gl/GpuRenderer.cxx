@@ -5,7 +5,7 @@
 
 #include "GpuScene.h"
 
-#include "vtkShadingLabPolyDataMapper.h"
+#include "vtkShadingLabOpenGLPolyDataMapper.h"
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
@@ -30,7 +30,7 @@
 namespace shadinglab::gl
 {
 
-bool GpuAvailable(std::string& why)
+bool GpuAvailable(std::string& why, std::string* glRenderer)
 {
   const char* display = std::getenv("DISPLAY");
   if (!display || !*display)
@@ -53,12 +53,18 @@ bool GpuAvailable(std::string& why)
     why = "the X display has no OpenGL >= 3.2";
     return false;
   }
+  if (glRenderer)
+  {
+    window->Start(); // makes the context (vtkOpenGLRenderWindow::Start)
+    *glRenderer = render::GlRendererFromReport(window->ReportCapabilities());
+    window->Finalize();
+  }
   return true;
 }
 
 struct GpuRenderer::Internals
 {
-  vtkNew<vtkShadingLabPolyDataMapper> Mapper;
+  vtkNew<vtkShadingLabOpenGLPolyDataMapper> Mapper;
   vtkNew<vtkActor> Actor;
   vtkNew<vtkRenderer> Renderer;
   vtkNew<vtkRenderWindow> Window;

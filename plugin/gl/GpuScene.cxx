@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "GpuScene.h"
 
-#include "vtkShadingLabPolyDataMapper.h"
+#include "vtkShadingLabOpenGLPolyDataMapper.h"
 
 #include <vtkActor.h>
 #include <vtkFloatArray.h>
@@ -20,7 +20,7 @@ namespace shadinglab::gl
 {
 
 void ConfigureActor(const render::RenderOptions& options, const Material<double>& material,
-  vtkShadingLabPolyDataMapper* mapper, vtkActor* actor)
+  vtkShadingLabOpenGLPolyDataMapper* mapper, vtkActor* actor)
 {
   render::Settings settings = mapper->GetSettings();
   settings.render = options;
@@ -41,7 +41,7 @@ void ConfigureActor(const render::RenderOptions& options, const Material<double>
 }
 
 void ConfigureColoring(const render::ColorMap* map, const std::string& array, bool cells,
-  int component, vtkShadingLabPolyDataMapper* mapper)
+  int component, vtkShadingLabOpenGLPolyDataMapper* mapper)
 {
   if (!map)
   {

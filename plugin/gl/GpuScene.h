@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// How a render request becomes VTK state for vtkShadingLabPolyDataMapper:
+// How a render request becomes VTK state for vtkShadingLabOpenGLPolyDataMapper:
 // the one place both GL front ends (GpuRenderer's offscreen window and the
 // explorer's QVTKOpenGLNativeWidget panels) set up mapper, actor and lights.
 #pragma once
@@ -15,7 +15,7 @@
 class vtkActor;
 class vtkRenderWindow;
 class vtkRenderer;
-class vtkShadingLabPolyDataMapper;
+class vtkShadingLabOpenGLPolyDataMapper;
 
 namespace shadinglab::gl
 {
@@ -27,7 +27,7 @@ namespace shadinglab::gl
  * specular) and back-face culling from the options.
  */
 void ConfigureActor(const render::RenderOptions& options, const Material<double>& material,
-  vtkShadingLabPolyDataMapper* mapper, vtkActor* actor);
+  vtkShadingLabOpenGLPolyDataMapper* mapper, vtkActor* actor);
 
 /**
  * Colour by data: with a colour map, the mapper maps the point (or, with
@@ -37,7 +37,7 @@ void ConfigureActor(const render::RenderOptions& options, const Material<double>
  * map: the direct colours ConfigureActor set up.
  */
 void ConfigureColoring(const render::ColorMap* map, const std::string& array, bool cells,
-  int component, vtkShadingLabPolyDataMapper* mapper);
+  int component, vtkShadingLabOpenGLPolyDataMapper* mapper);
 
 /**
  * The lights (world coordinates) as scene vtkLights and the ambient

@@ -1048,14 +1048,14 @@ TEST(GpuParityGLTest, CpuBackendDrawsWhatTheCpuRendererDraws)
     opt.height = 180;
     const auto ref =
       test::RenderCpu(mesh, cam, lights.Cast<float>(), settings.material.Cast<float>(), opt);
-    settings.backend = render::MapperBackend::CPU;
+    settings.backend = render::Backend::CPU;
     MapperScene cpu(torus, settings, cam, toLight, opt.width, opt.height);
     const auto onCpu = Grab(cpu.window);
     const auto same = Compare(ref, onCpu);
     EXPECT_GT(same.pixels, 5000);
     EXPECT_LE(same.mean, 0.05); // the same frame, through 8 bits and a texture
     EXPECT_LE(same.p99, 1.0);
-    settings.backend = render::MapperBackend::GPU;
+    settings.backend = render::Backend::GPU;
     MapperScene gpu(torus, settings, cam, toLight, opt.width, opt.height);
     const auto parity = Compare(Grab(gpu.window), onCpu);
     EXPECT_LE(parity.mean, kMeanThreshold);
@@ -1116,10 +1116,10 @@ TEST(GpuParityGLTest, CpuBackendIsDepthCorrectAgainstNativeActors)
     }
     return n;
   };
-  settings.backend = render::MapperBackend::GPU;
+  settings.backend = render::Backend::GPU;
   MapperScene gpu(sphere, settings, cam, sl::Vec3d(0.4, 0.6, 1.0), 240, 180, planeActor);
   const auto onGpu = Grab(gpu.window);
-  settings.backend = render::MapperBackend::CPU;
+  settings.backend = render::Backend::CPU;
   MapperScene cpu(sphere, settings, cam, sl::Vec3d(0.4, 0.6, 1.0), 240, 180, planeActor);
   const auto onCpu = Grab(cpu.window);
   const int64_t g = greenPixels(onGpu), c = greenPixels(onCpu);
@@ -1167,7 +1167,7 @@ TEST(GpuParityGLTest, InwardWoundMeshIsLitOnBothBackends)
     settings.normals.featureAngle = 180.0;
     MapperScene outwardGpu(torus, settings, cam, sl::Vec3d(0.4, 0.6, 1.0), 240, 180);
     MapperScene inwardGpu(inward, settings, cam, sl::Vec3d(0.4, 0.6, 1.0), 240, 180);
-    settings.backend = render::MapperBackend::CPU;
+    settings.backend = render::Backend::CPU;
     MapperScene inwardCpu(inward, settings, cam, sl::Vec3d(0.4, 0.6, 1.0), 240, 180);
     const auto a = Grab(outwardGpu.window), b = Grab(inwardGpu.window), c = Grab(inwardCpu.window);
     const auto sameAsOutward = Compare(a, b), parity = Compare(c, b);
@@ -1206,7 +1206,7 @@ TEST(GpuParityGLTest, CpuBackendDrawsIntoItsOwnViewport)
   {
     render::Settings settings;
     settings.material = BlinnPhong();
-    settings.backend = side == 0 ? render::MapperBackend::GPU : render::MapperBackend::CPU;
+    settings.backend = side == 0 ? render::Backend::GPU : render::Backend::CPU;
     auto mapper = vtkSmartPointer<vtkShadingLabPolyDataMapper>::New();
     mapper->SetInputData(torus);
     mapper->SetSettings(settings);
@@ -1269,7 +1269,7 @@ TEST(GpuParityGLTest, AutoBackendChoosesTheCpuOnASoftwareRasterizerForLargeMeshe
   ASSERT_LT(small->GetNumberOfPolys(), sl::render::kAutoCpuMinPolygons);
   render::Settings settings;
   settings.material = BlinnPhong();
-  settings.backend = render::MapperBackend::Auto;
+  settings.backend = render::Backend::Auto;
   const render::Camera cam = Camera();
   MapperScene a(small, settings, cam, sl::Vec3d(0.4, 0.6, 1.0), 240, 180);
   MapperScene b(large, settings, cam, sl::Vec3d(0.4, 0.6, 1.0), 240, 180);
@@ -1282,7 +1282,7 @@ TEST(GpuParityGLTest, AutoBackendChoosesTheCpuOnASoftwareRasterizerForLargeMeshe
   EXPECT_EQ(b.mapper->GetCpuMeshConversions(), software ? 1 : 0);
   if (software)
   {
-    settings.backend = render::MapperBackend::CPU;
+    settings.backend = render::Backend::CPU;
     MapperScene cpu(large, settings, cam, sl::Vec3d(0.4, 0.6, 1.0), 240, 180);
     const auto d = Compare(Grab(cpu.window), Grab(b.window));
     EXPECT_EQ(d.mean, 0.0);
@@ -1317,7 +1317,7 @@ TEST(GpuParityGLTest, InconsistentlyOrientedMeshDrawsAsTheIntactOne)
   }
   reversed->SetPolys(cells);
   const render::Camera cam = Camera();
-  for (auto backend : { render::MapperBackend::GPU, render::MapperBackend::CPU })
+  for (auto backend : { render::Backend::GPU, render::Backend::CPU })
   {
     for (auto mode : { render::ShadingMode::Gouraud, render::ShadingMode::Phong,
            render::ShadingMode::Auto })
@@ -1329,7 +1329,7 @@ TEST(GpuParityGLTest, InconsistentlyOrientedMeshDrawsAsTheIntactOne)
       MapperScene a(intact, settings, cam, sl::Vec3d(0.4, 0.6, 1.0), 240, 180);
       MapperScene b(reversed, settings, cam, sl::Vec3d(0.4, 0.6, 1.0), 240, 180);
       const auto d = Compare(Grab(a.window), Grab(b.window));
-      const std::string what = std::string(backend == render::MapperBackend::GPU ? "gpu " : "cpu ") +
+      const std::string what = std::string(backend == render::Backend::GPU ? "gpu " : "cpu ") +
         render::ShadingModeName(mode);
       EXPECT_GT(d.pixels, 5000) << what;
       EXPECT_EQ(d.mean, 0.0) << what;

@@ -20,13 +20,15 @@
 
 #include "shadinglab/cpu/SoftwareRenderer.h"
 
+#include "shadinglabCPUVTKModule.h" // for export macro
+
 #include <vtkImageAlgorithm.h>
 
 #include <memory>
 
 class vtkCamera;
 
-class vtkSoftwareShadingRenderer : public vtkImageAlgorithm
+class SHADINGLABCPUVTK_EXPORT vtkSoftwareShadingRenderer : public vtkImageAlgorithm
 {
 public:
   static vtkSoftwareShadingRenderer* New();

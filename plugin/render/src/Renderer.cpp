@@ -4,11 +4,6 @@
 namespace shadinglab::render
 {
 
-const char* BackendName(Backend backend)
-{
-  return backend == Backend::GPU ? "gpu" : "cpu";
-}
-
 bool SupportsModel(ShadingMode mode, ReflectanceModel model)
 {
   // Fast Phong expands cosines of the interpolated normal (N.L, N.H, N.V)

@@ -151,7 +151,7 @@ void RenderRows(std::vector<SettingRow>& t)
     r.frontEnds = kParaView | kMapper;
     r.metavar = "B";
     r.set = [](Settings& s, const SettingValue& v) {
-      s.backend = static_cast<MapperBackend>(static_cast<int>(v.numbers[0]));
+      s.backend = static_cast<Backend>(static_cast<int>(v.numbers[0]));
     };
     r.get = [](const Settings& s) { return Number(static_cast<int>(s.backend)); };
     t.push_back(r);

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The GL renderer: one implementation of render::Renderer (the CPU software
 // renderer in plugin/cpu is the other), drawing through
-// vtkShadingLabPolyDataMapper into an offscreen VTK window.
+// vtkShadingLabOpenGLPolyDataMapper into an offscreen VTK window.
 #pragma once
 
 #include "shadinglab/render/Renderer.h"
@@ -14,8 +14,9 @@ namespace shadinglab::gl
 
 /// True when an X display with OpenGL >= 3.2 answers; else false and `why`
 /// says what is missing. Never aborts (checks DISPLAY and XOpenDisplay before
-/// any VTK window exists).
-bool GpuAvailable(std::string& why);
+/// any VTK window exists). With `glRenderer`, a context is made to read its
+/// GL_RENDERER string (render::ChooseBackend's fact).
+bool GpuAvailable(std::string& why, std::string* glRenderer = nullptr);
 
 /**
  * Renders offscreen with the mapper. The options' mode, size, ssaa (box

@@ -5,6 +5,7 @@
 // ParaView) picks one and never sees the difference.
 #pragma once
 
+#include "shadinglab/render/Backend.h"
 #include "shadinglab/render/Image.h"
 #include "shadinglab/render/Options.h"
 #include "shadinglab/render/Scene.h"
@@ -13,14 +14,6 @@
 
 namespace shadinglab::render
 {
-
-enum class Backend
-{
-  CPU, ///< plugin/cpu: the scanline software renderer (reference, no GL needed)
-  GPU  ///< plugin/gl: vtkShadingLabPolyDataMapper on OpenGL >= 3.2
-};
-
-const char* BackendName(Backend backend);
 
 class Renderer
 {

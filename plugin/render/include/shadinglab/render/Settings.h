@@ -13,6 +13,7 @@
 
 #include "shadinglab/model/Shading.h"
 #include "shadinglab/model/Spectrum.h"
+#include "shadinglab/render/Backend.h"
 #include "shadinglab/render/Options.h"
 #include "shadinglab/render/Renderer.h"
 
@@ -56,17 +57,6 @@ struct ColorBySettings
   std::string range = "auto";           ///< "auto" (the data's) or "MIN,MAX"
 };
 
-/// Who draws a mapper's pixels (Settings::backend).
-enum class MapperBackend
-{
-  GPU, ///< the GLSL shaders
-  CPU, ///< the CPU renderer, its colour and depth handed to OpenGL
-  /// CPU where OpenGL is a software rasterizer (Mesa's llvmpipe, softpipe,
-  /// swr) and the mesh is large enough for the CPU path to be faster
-  /// there (kAutoCpuMinPolygons); GPU otherwise.
-  Auto
-};
-
 /// What a vtkShadingLabPolyDataMapper shows (docs/model.md eq. 8.5): the
 /// picture, or what a polarization camera measures, in false colour.
 enum class PolarizationImage
@@ -75,14 +65,6 @@ enum class PolarizationImage
   Dolp,      ///< degree of linear polarization, viridis over [0, 1]
   Aop        ///< angle of polarization, a cyclic hue wheel over [-90, 90] deg
 };
-
-/// Auto's mesh size. On llvmpipe (bench/paraview_backends.py, pvbatch,
-/// 1920x1080, 2 cores, median of 7 frames x 3 runs, docs/paraview.md) the
-/// two backends tie at ~10,000 triangles (Phong 79 ms CPU, 76-83 ms GPU: the
-/// CPU path's hand-over costs what llvmpipe saves) and the CPU is ahead from
-/// ~30,000 on (31,680: Phong 76 against 84-88 ms, Cook-Torrance 79 against
-/// 99) and further ahead the larger the mesh (996,000: 108 against 190).
-inline constexpr long long kAutoCpuMinPolygons = 30000;
 
 /// Every setting of a surface's shading: one struct, passed whole.
 struct Settings
@@ -112,8 +94,9 @@ struct Settings
   InputSettings input;
   /// Who draws a vtkShadingLabPolyDataMapper's (and ParaView's ShadingLab
   /// Surface's) pixels: OpenGL shaders, or the CPU renderer handing its
-  /// colour and depth to OpenGL (plugin/gl/CpuBackend.h).
-  MapperBackend backend = MapperBackend::GPU;
+  /// colour and depth to OpenGL (plugin/vtk/CpuBackend.h), or Auto
+  /// (render/Backend.h's chooser).
+  Backend backend = Backend::GPU;
   /// Measured on the CPU renderer's linear frames: anything but Intensity
   /// draws through the CPU backend.
   PolarizationImage polarizationImage = PolarizationImage::Intensity;

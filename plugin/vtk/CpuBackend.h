@@ -2,7 +2,7 @@
 // The mapper's CPU backend: one vtkShadingLabPolyDataMapper's input drawn by
 // the software renderer (plugin/cpu) for the renderer's viewport size,
 // camera and lights, then handed to OpenGL as colour and depth
-// (glsl/sl_cpu_handover_fs.glsl), so that other actors, annotations and
+// (plugin/vtk/glsl/sl_cpu_handover_fs.glsl), so that other actors, annotations and
 // compositing see an ordinary depth-tested surface.
 #pragma once
 
@@ -24,7 +24,7 @@ class vtkRenderer;
 class vtkScalarsToColors;
 class vtkWindow;
 
-namespace shadinglab::gl
+namespace shadinglab::vtk
 {
 
 /// What of the mapper the CPU draw needs besides its settings.
@@ -84,4 +84,4 @@ private:
   vtkNew<vtkTextureObject> DepthTexture;
 };
 
-} // namespace shadinglab::gl
+} // namespace shadinglab::vtk

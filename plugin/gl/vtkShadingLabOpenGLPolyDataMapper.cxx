@@ -1,6 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-#include "vtkShadingLabPolyDataMapper.h"
-#include "CpuBackend.h"
+#include "vtkShadingLabOpenGLPolyDataMapper.h"
 
 #include "MeshArrays.h"
 #include "PolyDataMesh.h"
@@ -51,7 +50,7 @@
 
 namespace sl = shadinglab;
 
-struct vtkShadingLabPolyDataMapper::Internals
+struct vtkShadingLabOpenGLPolyDataMapper::Internals
 {
   sl::render::Settings Settings;
   // Input prepared for the mode: normals stripped (flat) or computed.
@@ -77,31 +76,24 @@ struct vtkShadingLabPolyDataMapper::Internals
   /// changes none of them keeps it (the choice costs ~10-35 ms on meshes of
   /// 0.1-1.3M triangles, BM_AutoChoice).
   std::vector<double> AutoKey;
-  /// Backend CPU: the software renderer and its hand-over to OpenGL.
-  shadinglab::gl::CpuBackend Cpu;
-  std::string CpuFailure; ///< the last reason the CPU could not draw (said once)
-  std::string BackendChoice = "gpu"; ///< the last render's backend and why
-  std::string GlRenderer;            ///< GL_RENDERER of RendererOf
-  bool SoftwareGl = false;           ///< GlRenderer names a software rasterizer
-  const vtkRenderWindow* RendererOf = nullptr;
 };
 
-vtkStandardNewMacro(vtkShadingLabPolyDataMapper);
+vtkStandardNewMacro(vtkShadingLabOpenGLPolyDataMapper);
 
 // The VTK enum is the render::ShadingMode list, checked at compile time.
-static_assert(vtkShadingLabPolyDataMapper::FLAT == static_cast<int>(shadinglab::render::ShadingMode::Flat) &&
-  vtkShadingLabPolyDataMapper::GOURAUD == static_cast<int>(shadinglab::render::ShadingMode::Gouraud) &&
-  vtkShadingLabPolyDataMapper::PHONG == static_cast<int>(shadinglab::render::ShadingMode::Phong) &&
-  vtkShadingLabPolyDataMapper::FAST_PHONG == static_cast<int>(shadinglab::render::ShadingMode::FastPhong) &&
-  vtkShadingLabPolyDataMapper::AUTO == static_cast<int>(shadinglab::render::ShadingMode::Auto) &&
+static_assert(vtkShadingLabOpenGLPolyDataMapper::FLAT == static_cast<int>(shadinglab::render::ShadingMode::Flat) &&
+  vtkShadingLabOpenGLPolyDataMapper::GOURAUD == static_cast<int>(shadinglab::render::ShadingMode::Gouraud) &&
+  vtkShadingLabOpenGLPolyDataMapper::PHONG == static_cast<int>(shadinglab::render::ShadingMode::Phong) &&
+  vtkShadingLabOpenGLPolyDataMapper::FAST_PHONG == static_cast<int>(shadinglab::render::ShadingMode::FastPhong) &&
+  vtkShadingLabOpenGLPolyDataMapper::AUTO == static_cast<int>(shadinglab::render::ShadingMode::Auto) &&
   shadinglab::render::kShadingModeCount == 4);
 
-vtkShadingLabPolyDataMapper::vtkShadingLabPolyDataMapper()
+vtkShadingLabOpenGLPolyDataMapper::vtkShadingLabOpenGLPolyDataMapper()
   : Internal(new Internals)
 {
 }
 
-vtkShadingLabPolyDataMapper::~vtkShadingLabPolyDataMapper() = default;
+vtkShadingLabOpenGLPolyDataMapper::~vtkShadingLabOpenGLPolyDataMapper() = default;
 
 namespace
 {
@@ -119,7 +111,7 @@ auto ModifyingPart(const sl::render::Settings& s)
 }
 } // namespace
 
-void vtkShadingLabPolyDataMapper::SetSettings(const sl::render::Settings& settings)
+void vtkShadingLabOpenGLPolyDataMapper::SetSettings(const sl::render::Settings& settings)
 {
   // A variant change needs new shaders, a change of the normals or of the
   // budget a new preparation or choice: mark the mapper modified then. The
@@ -133,12 +125,12 @@ void vtkShadingLabPolyDataMapper::SetSettings(const sl::render::Settings& settin
   }
 }
 
-const sl::render::Settings& vtkShadingLabPolyDataMapper::GetSettings() const
+const sl::render::Settings& vtkShadingLabOpenGLPolyDataMapper::GetSettings() const
 {
   return this->Internal->Settings;
 }
 
-bool vtkShadingLabPolyDataMapper::SetSetting(const char* key, const char* value)
+bool vtkShadingLabOpenGLPolyDataMapper::SetSetting(const char* key, const char* value)
 {
   sl::render::Settings settings = this->Internal->Settings;
   const std::string problem =
@@ -153,19 +145,19 @@ bool vtkShadingLabPolyDataMapper::SetSetting(const char* key, const char* value)
   return true;
 }
 
-void vtkShadingLabPolyDataMapper::SetMaterial(const sl::Material<double>& material)
+void vtkShadingLabOpenGLPolyDataMapper::SetMaterial(const sl::Material<double>& material)
 {
   sl::render::Settings settings = this->Internal->Settings;
   settings.material = material;
   this->SetSettings(settings);
 }
 
-const sl::Material<double>& vtkShadingLabPolyDataMapper::GetMaterial() const
+const sl::Material<double>& vtkShadingLabOpenGLPolyDataMapper::GetMaterial() const
 {
   return this->Internal->Settings.material;
 }
 
-void vtkShadingLabPolyDataMapper::SetBlockOverrides(const double* color, double opacity)
+void vtkShadingLabOpenGLPolyDataMapper::SetBlockOverrides(const double* color, double opacity)
 {
   this->BlockColorSet = color != nullptr;
   if (color)
@@ -175,7 +167,7 @@ void vtkShadingLabPolyDataMapper::SetBlockOverrides(const double* color, double 
   this->BlockOpacity = opacity;
 }
 
-void vtkShadingLabPolyDataMapper::SetPropertyShaderParameters(
+void vtkShadingLabOpenGLPolyDataMapper::SetPropertyShaderParameters(
   vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
 {
   this->Superclass::SetPropertyShaderParameters(cellBO, ren, act);
@@ -199,14 +191,14 @@ void vtkShadingLabPolyDataMapper::SetPropertyShaderParameters(
   }
 }
 
-int vtkShadingLabPolyDataMapper::GetDrawnMode() const
+int vtkShadingLabOpenGLPolyDataMapper::GetDrawnMode() const
 {
   const sl::render::Settings& s = this->Internal->Settings;
   return s.render.mode == sl::render::ShadingMode::Auto ? this->Internal->Drawn
                                                        : static_cast<int>(s.render.mode);
 }
 
-const std::string& vtkShadingLabPolyDataMapper::GetAutoChoice() const
+const std::string& vtkShadingLabOpenGLPolyDataMapper::GetAutoChoice() const
 {
   static const std::string none;
   return this->Internal->Settings.render.mode == sl::render::ShadingMode::Auto
@@ -214,14 +206,14 @@ const std::string& vtkShadingLabPolyDataMapper::GetAutoChoice() const
     : none;
 }
 
-int vtkShadingLabPolyDataMapper::EffectiveMode() const
+int vtkShadingLabOpenGLPolyDataMapper::EffectiveMode() const
 {
   const int drawn = this->GetDrawnMode();
   const auto mode = static_cast<sl::render::ShadingMode>(drawn);
   return sl::render::SupportsModel(mode, this->Internal->Settings.material.model) ? drawn : PHONG;
 }
 
-void vtkShadingLabPolyDataMapper::ChooseAutoMode(vtkRenderer* ren, vtkPolyData* input)
+void vtkShadingLabOpenGLPolyDataMapper::ChooseAutoMode(vtkRenderer* ren, vtkPolyData* input)
 {
   Internals& in = *this->Internal;
   if (!input || input->GetNumberOfPolys() == 0)
@@ -290,7 +282,7 @@ void vtkShadingLabPolyDataMapper::ChooseAutoMode(vtkRenderer* ren, vtkPolyData* 
   in.AutoChoice = choice.why;
 }
 
-std::string vtkShadingLabPolyDataMapper::Variant(vtkRenderer* ren) const
+std::string vtkShadingLabOpenGLPolyDataMapper::Variant(vtkRenderer* ren) const
 {
   const sl::Material<double>& m = this->Internal->Settings.material;
   const int model = static_cast<int>(m.model);
@@ -329,7 +321,7 @@ std::string vtkShadingLabPolyDataMapper::Variant(vtkRenderer* ren) const
   return v.str();
 }
 
-bool vtkShadingLabPolyDataMapper::Substitute(
+bool vtkShadingLabOpenGLPolyDataMapper::Substitute(
   vtkShader* shader, const std::string& tag, const std::string& code)
 {
   if (!vtkShaderProgram::Substitute(shader, tag, code, false))
@@ -341,7 +333,7 @@ bool vtkShadingLabPolyDataMapper::Substitute(
   return true;
 }
 
-void vtkShadingLabPolyDataMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
+void vtkShadingLabOpenGLPolyDataMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* act)
 {
   if (this->Internal->Settings.render.mode == sl::render::ShadingMode::Auto)
   {
@@ -351,7 +343,7 @@ void vtkShadingLabPolyDataMapper::RenderPieceStart(vtkRenderer* ren, vtkActor* a
   this->Superclass::RenderPieceStart(ren, act);
 }
 
-vtkPolyData* vtkShadingLabPolyDataMapper::PrepareInput(vtkPolyData* input)
+vtkPolyData* vtkShadingLabOpenGLPolyDataMapper::PrepareInput(vtkPolyData* input)
 {
   const sl::render::NormalSettings& made = this->Internal->Settings.normals;
   const bool flat = this->GetDrawnMode() == FLAT;
@@ -399,178 +391,25 @@ vtkPolyData* vtkShadingLabPolyDataMapper::PrepareInput(vtkPolyData* input)
   return input;
 }
 
-bool vtkShadingLabPolyDataMapper::ChooseCpu(vtkRenderer* ren)
+void vtkShadingLabOpenGLPolyDataMapper::SetDrawnElsewhere(int mode, const std::string& autoChoice)
 {
-  Internals& in = *this->Internal;
-  if (in.Settings.polarizationImage != sl::render::PolarizationImage::Intensity)
-  {
-    in.BackendChoice = "cpu: a polarization image is measured on the CPU renderer's linear frames";
-    return true;
-  }
-  switch (in.Settings.backend)
-  {
-    case sl::render::MapperBackend::GPU:
-      in.BackendChoice = "gpu";
-      return false;
-    case sl::render::MapperBackend::CPU:
-      in.BackendChoice = "cpu";
-      return true;
-    case sl::render::MapperBackend::Auto:
-      break;
-  }
-  // The context's renderer string, read once per window (the context is
-  // current while a mapper renders).
-  if (in.RendererOf != ren->GetRenderWindow())
-  {
-    // VTK's capability report: "OpenGL renderer string:  <name>".
-    const char* report = ren->GetRenderWindow()->ReportCapabilities();
-    const std::string text = report ? report : "";
-    const std::string key = "OpenGL renderer string:";
-    const size_t at = text.find(key);
-    in.GlRenderer.clear();
-    if (at != std::string::npos)
-    {
-      const size_t begin = text.find_first_not_of(' ', at + key.size());
-      const size_t end = text.find('\n', at);
-      in.GlRenderer = begin == std::string::npos ? "" : text.substr(begin, end - begin);
-    }
-    in.RendererOf = ren->GetRenderWindow();
-    std::string lower = in.GlRenderer;
-    std::transform(lower.begin(), lower.end(), lower.begin(),
-      [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    in.SoftwareGl = lower.find("llvmpipe") != std::string::npos ||
-      lower.find("softpipe") != std::string::npos || lower.find("swr") != std::string::npos;
-  }
-  const bool software = in.SoftwareGl;
-  vtkPolyData* input = this->GetInput();
-  const long long polygons = input ? static_cast<long long>(input->GetNumberOfPolys()) : 0;
-  const bool cpu = software && polygons >= sl::render::kAutoCpuMinPolygons;
-  std::ostringstream why;
-  why << (cpu ? "cpu" : "gpu") << ": OpenGL renderer '" << in.GlRenderer << "' is "
-      << (software ? "a software rasterizer" : "hardware") << ", " << polygons << " polygons"
-      << (software ? (cpu ? " >= " : " < ") : "") << (software ? std::to_string(sl::render::kAutoCpuMinPolygons) : "");
-  in.BackendChoice = why.str();
-  return cpu;
+  this->Internal->Drawn = mode;
+  this->Internal->AutoChoice = autoChoice;
 }
 
-const std::string& vtkShadingLabPolyDataMapper::GetBackendChoice() const
-{
-  return this->Internal->BackendChoice;
-}
-
-void vtkShadingLabPolyDataMapper::RenderPiece(vtkRenderer* ren, vtkActor* act)
-{
-  const bool cpu = this->ChooseCpu(ren) && !ren->GetSelector() &&
-    !act->HasTranslucentPolygonalGeometry();
-  if (!cpu || !this->RenderPieceOnCpu(ren, act))
-  {
-    this->Superclass::RenderPiece(ren, act);
-  }
-}
-
-bool vtkShadingLabPolyDataMapper::RenderPieceOnCpu(vtkRenderer* ren, vtkActor* act)
-{
-  Internals& in = *this->Internal;
-  vtkPolyData* input = this->GetInput();
-  if (!input)
-  {
-    return false;
-  }
-  if (!this->Static && this->GetInputAlgorithm())
-  {
-    this->GetInputAlgorithm()->Update();
-    input = this->GetInput();
-  }
-  if (!input || !input->GetPoints())
-  {
-    return true; // nothing to draw, as the GL path
-  }
-  // The normals as the GL path draws them; the CPU resolves auto itself.
-  // (Flat shading drops point normals: the CPU takes face normals anyway.)
-  vtkPolyData* drawn = this->PrepareInput(input);
-  sl::gl::CpuDrawInputs inputs;
-  inputs.polydata = drawn;
-  // rho without scalar colours: the property's diffuse colour (or the
-  // block's), as the GL path's slDiffuseColor.
-  double albedo[3];
-  const double* dc = this->BlockColorSet ? this->BlockColor : act->GetProperty()->GetDiffuseColor();
-  std::copy(dc, dc + 3, albedo);
-  inputs.albedo = albedo;
-  int cellFlag = 0;
-  vtkDataArray* scalars = this->ScalarVisibility
-    ? vtkAbstractMapper::GetScalars(drawn, this->ScalarMode, this->ArrayAccessMode, this->ArrayId,
-        this->ArrayName, cellFlag)
-    : nullptr;
-  const bool direct = scalars && scalars->GetDataType() == VTK_UNSIGNED_CHAR &&
-    this->ColorMode != VTK_COLOR_MODE_MAP_SCALARS;
-  if (scalars && !direct && scalars->GetName() && cellFlag != 2)
-  {
-    vtkScalarsToColors* lut = this->GetLookupTable();
-    if (this->UseLookupTableScalarRange == 0)
-    {
-      lut->SetRange(this->ScalarRange);
-    }
-    inputs.lookupTable = lut;
-    inputs.scalarName = scalars->GetName();
-    inputs.scalarsOnCells = cellFlag == 1;
-    inputs.scalarComponent = scalars->GetNumberOfComponents() == 1
-      ? 0
-      : (lut->GetVectorMode() == vtkScalarsToColors::COMPONENT ? lut->GetVectorComponent() : -1);
-  }
-  const std::string failure = in.Cpu.Draw(ren, inputs, in.Settings);
-  if (!failure.empty())
-  {
-    if (failure != in.CpuFailure)
-    {
-      vtkWarningMacro("CPU backend: " << failure << "; drawing with OpenGL");
-      in.CpuFailure = failure;
-    }
-    return false;
-  }
-  in.Drawn = static_cast<int>(in.Cpu.LastStats().drawnMode);
-  in.AutoChoice = in.Cpu.LastStats().autoChoice;
-  return true;
-}
-
-double vtkShadingLabPolyDataMapper::GetCpuRenderMilliseconds() const
-{
-  return this->Internal->Cpu.LastStats().milliseconds;
-}
-
-double vtkShadingLabPolyDataMapper::GetCpuHandOverMilliseconds() const
-{
-  return this->Internal->Cpu.LastHandOverMilliseconds();
-}
-
-void vtkShadingLabPolyDataMapper::SetCpuHandOverTimingFinishes(bool finish)
-{
-  this->Internal->Cpu.SetFinishForTiming(finish);
-}
-
-int vtkShadingLabPolyDataMapper::GetCpuMeshConversions() const
-{
-  return this->Internal->Cpu.Conversions();
-}
-
-void vtkShadingLabPolyDataMapper::ReleaseGraphicsResources(vtkWindow* window)
-{
-  this->Internal->Cpu.ReleaseGraphicsResources(window);
-  this->Superclass::ReleaseGraphicsResources(window);
-}
-
-vtkUnsignedCharArray* vtkShadingLabPolyDataMapper::MapScalars(double alpha)
+vtkUnsignedCharArray* vtkShadingLabOpenGLPolyDataMapper::MapScalars(double alpha)
 {
   int cellFlag = 0;
   return this->MapScalars(alpha, cellFlag);
 }
 
-vtkUnsignedCharArray* vtkShadingLabPolyDataMapper::MapScalars(double alpha, int& cellFlag)
+vtkUnsignedCharArray* vtkShadingLabOpenGLPolyDataMapper::MapScalars(double alpha, int& cellFlag)
 {
   vtkDataSet* drawn = this->CurrentInput ? this->CurrentInput : this->GetInput();
   return this->Superclass::MapScalars(drawn, alpha, cellFlag);
 }
 
-bool vtkShadingLabPolyDataMapper::GetNeedToRebuildShaders(
+bool vtkShadingLabOpenGLPolyDataMapper::GetNeedToRebuildShaders(
   vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
 {
   const std::string variant = this->Variant(ren);
@@ -580,7 +419,7 @@ bool vtkShadingLabPolyDataMapper::GetNeedToRebuildShaders(
   return this->Superclass::GetNeedToRebuildShaders(cellBO, ren, act) || changed;
 }
 
-void vtkShadingLabPolyDataMapper::ReplaceShaderValues(
+void vtkShadingLabOpenGLPolyDataMapper::ReplaceShaderValues(
   std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
 {
   ++this->ShaderBuildCount;
@@ -640,7 +479,7 @@ void vtkShadingLabPolyDataMapper::ReplaceShaderValues(
   }
 }
 
-void vtkShadingLabPolyDataMapper::SetMapperShaderParameters(
+void vtkShadingLabOpenGLPolyDataMapper::SetMapperShaderParameters(
   vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
 {
   this->Superclass::SetMapperShaderParameters(cellBO, ren, act);
@@ -827,7 +666,7 @@ void vtkShadingLabPolyDataMapper::SetMapperShaderParameters(
   }
 }
 
-void vtkShadingLabPolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
+void vtkShadingLabOpenGLPolyDataMapper::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   const sl::render::Settings& settings = this->Internal->Settings;

@@ -8,7 +8,7 @@
 #include "VtkCamera.h"
 #include "VtkLights.h"
 #include "shadinglab/render/Display.h"
-#include "shadinglab_glsl.h"
+#include "shadinglab_handover_glsl.h"
 
 #include <vtkOpenGLQuadHelper.h>
 #include "VtkOpenGL.h" // GL_DEPTH_TEST, GL_TRUE
@@ -27,7 +27,7 @@
 #include <stdexcept>
 #include <vector>
 
-namespace shadinglab::gl
+namespace shadinglab::vtk
 {
 
 namespace
@@ -291,4 +291,4 @@ std::string CpuBackend::Draw(
   return "";
 }
 
-} // namespace shadinglab::gl
+} // namespace shadinglab::vtk

@@ -1,7 +1,12 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
- * @class   vtkShadingLabPolyDataMapper
+ * @class   vtkShadingLabOpenGLPolyDataMapper
  * @brief   the four ShadingLab shading modes on the GPU, by shader replacement
+ *
+ * The GL renderer's mapper. Applications use its subclass
+ * vtkShadingLabPolyDataMapper (plugin/vtk), which can also hand the drawing
+ * to the CPU renderer (its Backend setting); this class draws with OpenGL
+ * only and ignores that setting.
  *
  * A vtkOpenGLPolyDataMapper whose shaders evaluate the ShadingLab model (the
  * GLSL twin of plugin/model, in plugin/gl/glsl/) in one of four shading
@@ -34,8 +39,8 @@
  * scalars. Meshes without point normals get area-weighted normals computed
  * once per input change; flat mode uploads no point normals.
  */
-#ifndef vtkShadingLabPolyDataMapper_h
-#define vtkShadingLabPolyDataMapper_h
+#ifndef vtkShadingLabOpenGLPolyDataMapper_h
+#define vtkShadingLabOpenGLPolyDataMapper_h
 
 #include "shadinglab/model/Shading.h"
 #include "shadinglab/render/Settings.h"
@@ -47,11 +52,11 @@
 #include <memory>
 #include <string>
 
-class SHADINGLABGL_EXPORT vtkShadingLabPolyDataMapper : public vtkOpenGLPolyDataMapper
+class SHADINGLABGL_EXPORT vtkShadingLabOpenGLPolyDataMapper : public vtkOpenGLPolyDataMapper
 {
 public:
-  static vtkShadingLabPolyDataMapper* New();
-  vtkTypeMacro(vtkShadingLabPolyDataMapper, vtkOpenGLPolyDataMapper);
+  static vtkShadingLabOpenGLPolyDataMapper* New();
+  vtkTypeMacro(vtkShadingLabOpenGLPolyDataMapper, vtkOpenGLPolyDataMapper);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   /// Where the model is evaluated: shadinglab::render::ShadingMode's values
@@ -115,20 +120,6 @@ public:
   int GetUniformUploadCount() const { return this->UniformUploads; }
   /// The variant #defines of the last build.
   const std::string& GetLastVariant() const { return this->LastVariant; }
-  /// Backend CPU: the last frame's render milliseconds, hand-over
-  /// milliseconds (textures and quad) and mesh conversions so far (a camera
-  /// move converts nothing).
-  double GetCpuRenderMilliseconds() const;
-  double GetCpuHandOverMilliseconds() const;
-  /// Benchmarks: make GetCpuHandOverMilliseconds include OpenGL's share of
-  /// the hand-over (glFinish before and after it; stalls the pipeline).
-  void SetCpuHandOverTimingFinishes(bool finish);
-  int GetCpuMeshConversions() const;
-  /// The last render's backend and, for Auto, why ("cpu: OpenGL renderer
-  /// 'llvmpipe ...' is a software rasterizer, 996000 polygons >= 100000").
-  const std::string& GetBackendChoice() const;
-  void ReleaseGraphicsResources(vtkWindow* window) override;
-
   ///@{
   /// Colours (or colour texture coordinates) are mapped from the data
   /// drawn: the input with the normals made in RenderPieceStart, whose
@@ -141,14 +132,9 @@ public:
   ///@}
 
 protected:
-  vtkShadingLabPolyDataMapper();
-  ~vtkShadingLabPolyDataMapper() override;
+  vtkShadingLabOpenGLPolyDataMapper();
+  ~vtkShadingLabOpenGLPolyDataMapper() override;
 
-  /// Backend CPU: the input drawn by the CPU renderer and handed over as
-  /// colour and depth (CpuBackend.h); OpenGL otherwise, and for hardware
-  /// selection (its pass needs the GL path's cell ids) and translucent
-  /// actors (the hand-over writes opaque pixels).
-  void RenderPiece(vtkRenderer* ren, vtkActor* act) override;
   void RenderPieceStart(vtkRenderer* ren, vtkActor* act) override;
   void ReplaceShaderValues(
     std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act) override;
@@ -156,6 +142,13 @@ protected:
   void SetMapperShaderParameters(vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
   void SetPropertyShaderParameters(
     vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
+
+  /// The input with the normals the settings ask for (made here when it
+  /// has none, or on request; none in flat mode): what both backends draw.
+  vtkPolyData* PrepareInput(vtkPolyData* input);
+  /// A subclass that drew the input another way (the CPU backend) reports
+  /// the mode it drew and, for AUTO, why (GetDrawnMode, GetAutoChoice).
+  void SetDrawnElsewhere(int mode, const std::string& autoChoice);
 
   bool BlockColorSet = false;
   double BlockColor[3] = { 1, 1, 1 };
@@ -166,8 +159,8 @@ protected:
   std::string LastVariant;
 
 private:
-  vtkShadingLabPolyDataMapper(const vtkShadingLabPolyDataMapper&) = delete;
-  void operator=(const vtkShadingLabPolyDataMapper&) = delete;
+  vtkShadingLabOpenGLPolyDataMapper(const vtkShadingLabOpenGLPolyDataMapper&) = delete;
+  void operator=(const vtkShadingLabOpenGLPolyDataMapper&) = delete;
 
   std::string Variant(vtkRenderer* ren) const;
   /// The mode the shaders evaluate: the drawn mode, or PHONG where the
@@ -176,15 +169,6 @@ private:
   /// AUTO: chooses the drawn mode for `input` seen by `ren`.
   void ChooseAutoMode(vtkRenderer* ren, vtkPolyData* input);
   bool Substitute(vtkShader* shader, const std::string& tag, const std::string& code);
-  /// The input with the normals the settings ask for (made here when it
-  /// has none, or on request; none in flat mode): what both backends draw.
-  vtkPolyData* PrepareInput(vtkPolyData* input);
-  /// Whether this render goes to the CPU (the Backend setting; Auto
-  /// decides here and says why in GetBackendChoice).
-  bool ChooseCpu(vtkRenderer* ren);
-  /// Backend CPU; false (having said why once) when it could not draw.
-  bool RenderPieceOnCpu(vtkRenderer* ren, vtkActor* act);
-
   struct Internals;
   std::unique_ptr<Internals> Internal;
 };

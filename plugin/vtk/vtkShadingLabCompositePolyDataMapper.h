@@ -21,7 +21,7 @@
 
 #include "shadinglab/model/Shading.h"
 
-#include "shadinglabGLModule.h" // for export macro
+#include "shadinglabVTKModule.h" // for export macro
 #include "vtkShadingLabPolyDataMapper.h" // for Modes
 
 #include <vtkMapper.h>
@@ -34,7 +34,7 @@
 class vtkCompositeDataDisplayAttributes;
 class vtkPolyData;
 
-class SHADINGLABGL_EXPORT vtkShadingLabCompositePolyDataMapper : public vtkMapper
+class SHADINGLABVTK_EXPORT vtkShadingLabCompositePolyDataMapper : public vtkMapper
 {
 public:
   static vtkShadingLabCompositePolyDataMapper* New();

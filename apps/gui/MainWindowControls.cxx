@@ -59,8 +59,9 @@ QWidget* MainWindow::BuildControls()
   this->Backend = new QComboBox;
   this->Backend->addItem("GPU (ShadingLab mapper)", static_cast<int>(render::Backend::GPU));
   this->Backend->addItem("CPU (software renderer)", static_cast<int>(render::Backend::CPU));
-  this->Backend->addItem("Auto (CPU on a software OpenGL for large meshes)",
-    static_cast<int>(render::Backend::Auto));
+  // (Short labels: the longest item sets the dock's width.)
+  this->Backend->addItem("Auto", static_cast<int>(render::Backend::Auto));
+  this->Backend->setToolTip(QString::fromStdString(render::FindSetting("backend")->doc));
   panelForm->addRow("Backend", this->Backend);
   this->Interpolation = widgets::MakeSettingComboBox("interp");
   panelForm->addRow("Interpolation", this->Interpolation);

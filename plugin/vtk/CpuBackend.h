@@ -19,6 +19,7 @@
 
 class vtkActor;
 class vtkOpenGLQuadHelper;
+class vtkOpenGLRenderWindow;
 class vtkPolyData;
 class vtkRenderer;
 class vtkScalarsToColors;
@@ -63,6 +64,17 @@ public:
   int Conversions() const { return this->ConversionCount; }
 
 private:
+  /// The stages of Draw, each "" or a one-line reason: the mesh converted
+  /// when the input or the array coloured by changed; the scene of the
+  /// renderer's camera, lights and lookup table; the frame (or the
+  /// polarization image); its colour and depth handed to OpenGL in the
+  /// viewport {x, y, width, height}.
+  std::string Convert(const CpuDrawInputs& inputs);
+  render::Scene SceneFor(vtkRenderer* ren, const CpuDrawInputs& inputs, const render::Settings& settings);
+  std::string RenderImage(const render::Scene& scene, render::RenderOptions options,
+    render::PolarizationImage shown, const render::Image*& image);
+  std::string HandOver(vtkOpenGLRenderWindow* window, const int viewport[4], const render::Image& image);
+
   cpu::SoftwareRenderer Renderer;
   render::Mesh Mesh;
   uint64_t MeshHash = 0; ///< Mesh.ContentHash(), made when it is converted

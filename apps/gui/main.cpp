@@ -61,13 +61,26 @@ bool ParseSize(const std::string& text, int& w, int& h)
   return std::sscanf(text.c_str(), "%d%c%d%c", &w, &x, &h, &rest) == 3 && (x == 'x' || x == 'X');
 }
 
-} // namespace
+/// What the command line asks for.
+struct Request
+{
+  std::string scene = "modes", input, screenshot, profile, colorBy, sizeText = "1600x1000";
+  shadinglab::gui::SceneOptions options;
+  int width = 0, height = 0;
+};
 
-int main(int argc, char** argv)
+/// Parses the command line into `request`: -1 to go on, else the exit
+/// status (0 after --help, --version or --list-scenes; 2 after an error).
+int ParseArguments(int argc, char** argv, Request& request)
 {
   using namespace shadinglab;
-  std::string scene = "modes", input, screenshot, profile, colorBy, sizeText = "1600x1000";
-  gui::SceneOptions options;
+  std::string& scene = request.scene;
+  std::string& input = request.input;
+  std::string& screenshot = request.screenshot;
+  std::string& profile = request.profile;
+  std::string& colorBy = request.colorBy;
+  std::string& sizeText = request.sizeText;
+  gui::SceneOptions& options = request.options;
   std::vector<std::string> args(argv + 1, argv + argc);
   for (size_t i = 0; i < args.size(); ++i)
   {
@@ -188,12 +201,23 @@ int main(int argc, char** argv)
       return Fail(e.what());
     }
   }
-  int width = 0, height = 0;
+  int& width = request.width;
+  int& height = request.height;
   if (!ParseSize(sizeText, width, height) || width < kMinWindowSide || height < kMinWindowSide ||
     width > kMaxWindowSide || height > kMaxWindowSide)
   {
     return Fail("--size must be WxH with sides in [300, 8192] (got '" + sizeText + "')");
   }
+  return -1;
+}
+
+/// Reads INPUT and checks the X display, the two things that make Qt and
+/// VTK abort: "" or the one-line error.
+std::string ReadInputAndCheckDisplay(Request& request)
+{
+  using namespace shadinglab;
+  const std::string& input = request.input;
+  gui::SceneOptions& options = request.options;
   vtkSmartPointer<vtkPolyData> mesh;
   if (!input.empty())
   {
@@ -203,14 +227,14 @@ int main(int argc, char** argv)
     }
     catch (const std::exception& e)
     {
-      return Fail(input + ": " + e.what());
+      return input + ": " + e.what();
     }
   }
   // Qt and VTK abort without an X display: say so first.
   const char* display = std::getenv("DISPLAY");
   if (!display || !*display)
   {
-    return Fail("no X display (DISPLAY is not set); run it under X or xvfb-run");
+    return "no X display (DISPLAY is not set); run it under X or xvfb-run";
   }
   if (Display* dpy = XOpenDisplay(nullptr))
   {
@@ -218,9 +242,34 @@ int main(int argc, char** argv)
   }
   else
   {
-    return Fail(std::string("cannot open X display '") + display + "'");
+    return std::string("cannot open X display '") + display + "'";
   }
   options.input = mesh;
+  return "";
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  using namespace shadinglab;
+  Request request;
+  const int status = ParseArguments(argc, argv, request);
+  if (status >= 0)
+  {
+    return status;
+  }
+  const std::string problem = ReadInputAndCheckDisplay(request);
+  if (!problem.empty())
+  {
+    return Fail(problem);
+  }
+  const std::string& scene = request.scene;
+  const std::string& screenshot = request.screenshot;
+  const std::string& profile = request.profile;
+  const std::string& colorBy = request.colorBy;
+  const gui::SceneOptions& options = request.options;
+  const int width = request.width, height = request.height;
 
   QSurfaceFormat::setDefaultFormat(QVTKOpenGLNativeWidget::defaultFormat());
   QApplication app(argc, argv);

@@ -479,21 +479,15 @@ void vtkShadingLabOpenGLPolyDataMapper::ReplaceShaderValues(
   }
 }
 
-void vtkShadingLabOpenGLPolyDataMapper::SetMapperShaderParameters(
-  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
+namespace
 {
-  this->Superclass::SetMapperShaderParameters(cellBO, ren, act);
-  vtkShaderProgram* program = cellBO.Program;
-  if (!program)
-  {
-    return;
-  }
-  const sl::Material<double>& m = this->Internal->Settings.material;
-  vtkCamera* camera = ren->GetActiveCamera();
-  vtkMatrix4x4* view = camera->GetViewTransformMatrix();
-
-  // The uniform block, flattened so a change can be detected cheaply.
-  std::vector<float> block;
+/// The lights' part of the uniform block (sl_mapper_fs_dec.glsl's order):
+/// position or unit direction in view coordinates, I_L dw (through the
+/// lights' polarizer when there is one, `lightPolarizer` >= 0),
+/// attenuation, spot axis and cosine of the cone, spot exponent.
+void AppendLights(std::vector<float>& block, const sl::Lighting<double>& lighting,
+  vtkMatrix4x4* view, double lightPolarizer)
+{
   float lightVector[4 * sl::kMaxLights] = {}, irradiance[3 * sl::kMaxLights] = {},
                                               attenuation[3 * sl::kMaxLights] = {};
   float spot[4 * sl::kMaxLights], spotExponent[sl::kMaxLights];
@@ -504,11 +498,6 @@ void vtkShadingLabOpenGLPolyDataMapper::SetMapperShaderParameters(
     spot[4 * j + 3] = -2.0f; // no cone
     spotExponent[j] = 1.0f;
   }
-  // The lights (the one vtkLight conversion, render::LightingFromVtk) in
-  // view coordinates.
-  const sl::render::Settings& settings = this->Internal->Settings;
-  const sl::Lighting<double> lighting =
-    sl::render::LightingFromVtk(ren, settings.lightIntensity, settings.lightSolidAngle);
   const int count = lighting.lightCount;
   for (int j = 0; j < count; ++j)
   {
@@ -553,7 +542,7 @@ void vtkShadingLabOpenGLPolyDataMapper::SetMapperShaderParameters(
     // I_L dw with the model's solid angle convention (dw = pi), through
     // the lights' polarizer when there is one (Shading.h LightPolarizer).
     const double passed = light.solidAngle *
-      (settings.render.lightPolarizer >= 0 ? sl::kPolarizerTransmittance<double> : 1.0);
+      (lightPolarizer >= 0 ? sl::kPolarizerTransmittance<double> : 1.0);
     irradiance[3 * j] = static_cast<float>(light.intensity.x * passed);
     irradiance[3 * j + 1] = static_cast<float>(light.intensity.y * passed);
     irradiance[3 * j + 2] = static_cast<float>(light.intensity.z * passed);
@@ -563,6 +552,30 @@ void vtkShadingLabOpenGLPolyDataMapper::SetMapperShaderParameters(
   block.insert(block.end(), attenuation, attenuation + 3 * sl::kMaxLights);
   block.insert(block.end(), spot, spot + 4 * sl::kMaxLights);
   block.insert(block.end(), spotExponent, spotExponent + sl::kMaxLights);
+}
+} // namespace
+
+void vtkShadingLabOpenGLPolyDataMapper::SetMapperShaderParameters(
+  vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act)
+{
+  this->Superclass::SetMapperShaderParameters(cellBO, ren, act);
+  vtkShaderProgram* program = cellBO.Program;
+  if (!program)
+  {
+    return;
+  }
+  const sl::Material<double>& m = this->Internal->Settings.material;
+  vtkCamera* camera = ren->GetActiveCamera();
+  vtkMatrix4x4* view = camera->GetViewTransformMatrix();
+
+  // The uniform block, flattened so a change can be detected cheaply.
+  std::vector<float> block;
+  // The lights (the one vtkLight conversion, render::LightingFromVtk) in
+  // view coordinates.
+  const sl::render::Settings& settings = this->Internal->Settings;
+  const sl::Lighting<double> lighting =
+    sl::render::LightingFromVtk(ren, settings.lightIntensity, settings.lightSolidAngle);
+  AppendLights(block, lighting, view, settings.render.lightPolarizer);
   const double ia[3] = { lighting.ambientIntensity.x, lighting.ambientIntensity.y,
     lighting.ambientIntensity.z };
   vtkProperty* prop = act->GetProperty();
@@ -629,11 +642,14 @@ void vtkShadingLabOpenGLPolyDataMapper::SetMapperShaderParameters(
   }
   last = block;
   ++this->UniformUploads;
-  program->SetUniform4fv("slLightVectorVC", sl::kMaxLights, reinterpret_cast<float(*)[4]>(lightVector));
-  program->SetUniform3fv("slLightIrradiance", sl::kMaxLights, reinterpret_cast<float(*)[3]>(irradiance));
-  program->SetUniform3fv("slLightAttenuation", sl::kMaxLights, reinterpret_cast<float(*)[3]>(attenuation));
-  program->SetUniform4fv("slLightSpot", sl::kMaxLights, reinterpret_cast<float(*)[4]>(spot));
-  program->SetUniform1fv("slLightSpotExponent", sl::kMaxLights, spotExponent);
+  // The lights lead the block (AppendLights): 4 + 3 + 3 + 4 + 1 floats a light.
+  float* lights = block.data();
+  constexpr int K = sl::kMaxLights;
+  program->SetUniform4fv("slLightVectorVC", K, reinterpret_cast<float(*)[4]>(lights));
+  program->SetUniform3fv("slLightIrradiance", K, reinterpret_cast<float(*)[3]>(lights + 4 * K));
+  program->SetUniform3fv("slLightAttenuation", K, reinterpret_cast<float(*)[3]>(lights + 7 * K));
+  program->SetUniform4fv("slLightSpot", K, reinterpret_cast<float(*)[4]>(lights + 10 * K));
+  program->SetUniform1fv("slLightSpotExponent", K, lights + 14 * K);
   program->SetUniform3f("slAmbient", values);
   program->SetUniform3f("slSpecularColor", values + 3);
   program->SetUniformf("slKd", values[6]);

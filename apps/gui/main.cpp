@@ -67,6 +67,8 @@ struct Request
   std::string scene = "modes", input, screenshot, profile, colorBy, sizeText = "1600x1000";
   shadinglab::gui::SceneOptions options;
   int width = 0, height = 0;
+  /// INPUT, read: options.input points at it, so it lives as long.
+  vtkSmartPointer<vtkPolyData> mesh;
 };
 
 /// Parses the command line into `request`: -1 to go on, else the exit
@@ -218,7 +220,7 @@ std::string ReadInputAndCheckDisplay(Request& request)
   using namespace shadinglab;
   const std::string& input = request.input;
   gui::SceneOptions& options = request.options;
-  vtkSmartPointer<vtkPolyData> mesh;
+  vtkSmartPointer<vtkPolyData>& mesh = request.mesh;
   if (!input.empty())
   {
     try

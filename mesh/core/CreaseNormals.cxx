@@ -20,6 +20,217 @@ namespace shadinglab::mesh
 
 using namespace kernels;
 
+namespace
+{
+
+/// Vertex -> corners (CSR by counting sort): corner index c = offset + k,
+/// the corners of vertex v at [start[v], start[v + 1]).
+struct CornerTable
+{
+  std::vector<int64_t> start, corners64, cornerPolygon;
+  std::vector<uint32_t> corners32;
+  /// Corner indices in 4 bytes where they fit (every mesh up to 1.4 billion
+  /// triangles; 60 MB less on 5M), in 8 otherwise.
+  bool narrow = true;
+  /// A mesh of triangles only finds a corner's polygon as c / 3; others keep
+  /// a table (8 bytes a corner: 120 MB on 5M triangles).
+  bool trianglesOnly = true;
+
+  int64_t PolygonOf(int64_t c) const { return trianglesOnly ? c / 3 : cornerPolygon[c]; }
+  /// A polygon's first corner and corner count, without reading the
+  /// offsets of a mesh of triangles only.
+  int64_t FirstCorner(const MeshView& m, int64_t p) const { return trianglesOnly ? 3 * p : m.offsets[p]; }
+  int64_t CornerCount(const MeshView& m, int64_t p) const
+  {
+    return trianglesOnly ? int64_t(3) : m.offsets[p + 1] - m.offsets[p];
+  }
+};
+
+void BuildCornerTable(const MeshView& m, CornerTable& t)
+{
+  const int64_t nv = m.numberOfPoints, np = m.numberOfPolygons;
+  const int64_t nc = np > 0 ? m.offsets[np] : 0;
+  std::vector<int64_t>& start = t.start;
+  start.assign(static_cast<size_t>(nv + 1), 0);
+  for (int64_t c = 0; c < nc; ++c)
+  {
+    ++start[m.connectivity[c] + 1];
+  }
+  std::partial_sum(start.begin(), start.end(), start.begin());
+  t.narrow = nc <= static_cast<int64_t>(std::numeric_limits<uint32_t>::max());
+  t.corners32.resize(t.narrow ? static_cast<size_t>(nc) : 0);
+  t.corners64.resize(t.narrow ? 0 : static_cast<size_t>(nc));
+  // Every offset must be 3p: the corner count alone would take a 2-gon
+  // beside a quad for two triangles (one pass over the offsets, ~1 ms on
+  // 5M triangles).
+  t.trianglesOnly = nc == 3 * np;
+  for (int64_t p = 0; t.trianglesOnly && p < np; ++p)
+  {
+    t.trianglesOnly = m.offsets[p] == 3 * p;
+  }
+  t.cornerPolygon.resize(t.trianglesOnly ? 0 : static_cast<size_t>(nc));
+  // start[v] serves as v's fill cursor, ending at the next vertex's start;
+  // shifted back after (no second table of nv entries).
+  for (int64_t p = 0; p < np; ++p)
+  {
+    for (int64_t c = m.offsets[p]; c < m.offsets[p + 1]; ++c)
+    {
+      const int64_t slot = start[m.connectivity[c]]++;
+      if (t.narrow)
+      {
+        t.corners32[slot] = static_cast<uint32_t>(c);
+      }
+      else
+      {
+        t.corners64[slot] = c;
+      }
+      if (!t.trianglesOnly)
+      {
+        t.cornerPolygon[c] = p;
+      }
+    }
+  }
+  for (int64_t v = nv; v > 0; --v)
+  {
+    start[v] = start[v - 1];
+  }
+  start[0] = 0;
+}
+
+/// Explicit feature edges, as sorted (min, max) pairs.
+class FeatureEdges
+{
+public:
+  explicit FeatureEdges(const std::vector<int64_t>& pairs)
+  {
+    for (size_t i = 0; i + 1 < pairs.size(); i += 2)
+    {
+      const int64_t a = pairs[i], b = pairs[i + 1];
+      this->Edges.emplace_back(std::min(a, b), std::max(a, b));
+    }
+    std::sort(this->Edges.begin(), this->Edges.end());
+  }
+  bool Contains(int64_t a, int64_t b) const
+  {
+    return !this->Edges.empty() &&
+      std::binary_search(
+        this->Edges.begin(), this->Edges.end(), std::make_pair(std::min(a, b), std::max(a, b)));
+  }
+
+private:
+  std::vector<std::pair<int64_t, int64_t>> Edges;
+};
+
+/// Per-vertex scratch: (other vertex, corner-local index) for both edges of
+/// each incident corner, a union-find over the incident corners, their
+/// groups' output points, and the area vector and its length of each
+/// polygon around the vertex.
+struct VertexScratch
+{
+  struct EdgeEnd
+  {
+    int64_t other;
+    int32_t local;
+  };
+  std::vector<EdgeEnd> ends;
+  std::vector<int32_t> parent;
+  std::vector<int32_t> groupOf;
+  std::vector<int64_t> groupPoint;
+  std::vector<V3> area;
+  std::vector<double> areaLength;
+
+  int32_t Find(int32_t x)
+  {
+    while (this->parent[x] != x)
+    {
+      this->parent[x] = this->parent[this->parent[x]];
+      x = this->parent[x];
+    }
+    return x;
+  }
+};
+
+/// Splitting: joins the `count` corners of vertex v (at `corners`) across
+/// the edges where their faces meet at less than the feature angle
+/// (cos: `cosFeature`) and that are no feature edge; counts the boundary,
+/// non-manifold and crease edges at their lower vertex.
+template<typename CornerT>
+void JoinAcrossSmoothEdges(const MeshView& m, const CornerTable& t, const CornerT* corners,
+  int64_t v, int32_t count, const NormalOptions& opt, const FeatureEdges& features,
+  double cosFeature, VertexScratch& s, NormalResult& r)
+{
+  std::vector<VertexScratch::EdgeEnd>& ends = s.ends;
+  ends.resize(static_cast<size_t>(2 * count));
+  for (int32_t i = 0; i < count; ++i)
+  {
+    const int64_t c = static_cast<int64_t>(corners[i]);
+    const int64_t p = t.PolygonOf(c);
+    const int64_t b = t.FirstCorner(m, p), n = t.CornerCount(m, p), k = c - b;
+    ends[2 * i] = { m.connectivity[b + (k + 1 == n ? 0 : k + 1)], i };
+    ends[2 * i + 1] = { m.connectivity[b + (k == 0 ? n - 1 : k - 1)], i };
+  }
+  // Insertion sort: a vertex has a handful of incident edges.
+  for (size_t i = 1; i < ends.size(); ++i)
+  {
+    const VertexScratch::EdgeEnd key = ends[i];
+    size_t j = i;
+    while (j > 0 &&
+      (ends[j - 1].other > key.other ||
+        (ends[j - 1].other == key.other && ends[j - 1].local > key.local)))
+    {
+      ends[j] = ends[j - 1];
+      --j;
+    }
+    ends[j] = key;
+  }
+  for (size_t i = 0; i < ends.size();)
+  {
+    size_t j = i;
+    while (j < ends.size() && ends[j].other == ends[i].other)
+    {
+      ++j;
+    }
+    const size_t faces = j - i;
+    const int64_t w = ends[i].other;
+    // Each undirected edge is seen from both its ends; count it at v < w.
+    const bool countHere = v < w;
+    if (faces == 1)
+    {
+      r.boundaryEdges += countHere;
+    }
+    else if (faces > 2)
+    {
+      r.nonManifoldEdges += countHere;
+      if (!opt.splitNonManifold)
+      {
+        for (size_t k = i + 1; k < j; ++k)
+        {
+          s.parent[s.Find(ends[k].local)] = s.Find(ends[i].local);
+        }
+      }
+    }
+    else
+    {
+      const int32_t a = ends[i].local, b = ends[i + 1].local;
+      // cos(dihedral) < cosFeature, without dividing: a.b < cos |a||b|.
+      const bool crease =
+        Dot(s.area[a], s.area[b]) < cosFeature * s.areaLength[a] * s.areaLength[b] ||
+        features.Contains(v, w);
+      if (crease)
+      {
+        r.creaseEdges += countHere;
+      }
+      else
+      {
+        s.parent[s.Find(a)] = s.Find(b);
+      }
+    }
+    i = j;
+  }
+}
+
+} // namespace
+
 NormalResult ComputeVertexNormals(const MeshView& m, const NormalOptions& opt)
 {
   NormalResult r;
@@ -35,232 +246,74 @@ NormalResult ComputeVertexNormals(const MeshView& m, const NormalOptions& opt)
   // No per-polygon table of area vectors is kept (160 MB on 5M triangles):
   // the vertex pass computes the area vectors of the polygons around each
   // vertex as it reaches it, the same arithmetic, so the same bits.
-  static thread_local std::vector<int64_t> start, corners64, cornerPolygon;
-  static thread_local std::vector<uint32_t> corners32;
-
-  // Vertex -> corners (CSR by counting sort): corner index c = offset + k.
-  start.assign(static_cast<size_t>(nv + 1), 0);
-  for (int64_t c = 0; c < nc; ++c)
-  {
-    ++start[m.connectivity[c] + 1];
-  }
-  std::partial_sum(start.begin(), start.end(), start.begin());
-  // Corner indices in 4 bytes where they fit (every mesh up to 1.4 billion
-  // triangles; 60 MB less on 5M), in 8 otherwise.
-  const bool narrow = nc <= static_cast<int64_t>(std::numeric_limits<uint32_t>::max());
-  corners32.resize(narrow ? static_cast<size_t>(nc) : 0);
-  corners64.resize(narrow ? 0 : static_cast<size_t>(nc));
-  // A mesh of triangles only finds a corner's polygon as c / 3; others keep
-  // a table (8 bytes a corner: 120 MB on 5M triangles).
-  // Every offset must be 3p: the corner count alone would take a 2-gon
-  // beside a quad for two triangles (one pass over the offsets, ~1 ms on
-  // 5M triangles).
-  bool trianglesOnly = nc == 3 * np;
-  for (int64_t p = 0; trianglesOnly && p < np; ++p)
-  {
-    trianglesOnly = m.offsets[p] == 3 * p;
-  }
-  cornerPolygon.resize(trianglesOnly ? 0 : static_cast<size_t>(nc));
-  // start[v] serves as v's fill cursor, ending at the next vertex's start;
-  // shifted back after (no second table of nv entries).
-  for (int64_t p = 0; p < np; ++p)
-  {
-    for (int64_t c = m.offsets[p]; c < m.offsets[p + 1]; ++c)
-    {
-      const int64_t slot = start[m.connectivity[c]]++;
-      if (narrow)
-      {
-        corners32[slot] = static_cast<uint32_t>(c);
-      }
-      else
-      {
-        corners64[slot] = c;
-      }
-      if (!trianglesOnly)
-      {
-        cornerPolygon[c] = p;
-      }
-    }
-  }
-  for (int64_t v = nv; v > 0; --v)
-  {
-    start[v] = start[v - 1];
-  }
-  start[0] = 0;
-  auto polygonOf = [&](int64_t c) { return trianglesOnly ? c / 3 : cornerPolygon[c]; };
-  // A polygon's first corner and corner count, without reading the offsets
-  // of a mesh of triangles only.
-  auto firstCorner = [&](int64_t p) { return trianglesOnly ? 3 * p : m.offsets[p]; };
-  auto cornerCount = [&](int64_t p)
-  { return trianglesOnly ? int64_t(3) : m.offsets[p + 1] - m.offsets[p]; };
-
-  // Explicit feature edges, as sorted (min, max) pairs.
-  std::vector<std::pair<int64_t, int64_t>> features;
-  for (size_t i = 0; i + 1 < opt.featureEdges.size(); i += 2)
-  {
-    const int64_t a = opt.featureEdges[i], b = opt.featureEdges[i + 1];
-    features.emplace_back(std::min(a, b), std::max(a, b));
-  }
-  std::sort(features.begin(), features.end());
-  auto isFeature = [&](int64_t a, int64_t b)
-  {
-    return !features.empty() &&
-      std::binary_search(
-        features.begin(), features.end(), std::make_pair(std::min(a, b), std::max(a, b)));
-  };
+  static thread_local CornerTable table;
+  BuildCornerTable(m, table);
+  const FeatureEdges features(opt.featureEdges);
   const double cosFeature = std::cos(opt.featureAngle * 3.14159265358979323846 / 180.0);
 
   std::vector<double> normals(static_cast<size_t>(3 * nv), 0.0);
   r.originalPointIds.resize(static_cast<size_t>(nv));
   std::iota(r.originalPointIds.begin(), r.originalPointIds.end(), 0);
 
-  // Per-vertex scratch: (other vertex, corner-local index) for both edges of
-  // each incident corner, and a union-find over the incident corners.
-  struct EdgeEnd
-  {
-    int64_t other;
-    int32_t local;
-  };
-  std::vector<EdgeEnd> ends;
-  std::vector<int32_t> parent;
-  std::vector<int32_t> groupOf;
-  std::vector<int64_t> groupPoint;
-  // Area vector and its length of each polygon around the current vertex.
-  std::vector<V3> area;
-  std::vector<double> areaLength;
+  VertexScratch s;
   // The vertex pass, compiled once per width of the corner table (no
   // per-corner branch on it).
   auto vertexPass = [&](const auto* cornerTable)
   {
     for (int64_t v = 0; v < nv; ++v)
     {
-      const int64_t cb = start[v], ce = start[v + 1];
+      const int64_t cb = table.start[v], ce = table.start[v + 1];
       const int32_t count = static_cast<int32_t>(ce - cb);
       if (count == 0)
       {
         normals[3 * v + 2] = 1.0;
         continue;
       }
-      parent.resize(static_cast<size_t>(count));
-      std::iota(parent.begin(), parent.end(), 0);
-      area.resize(static_cast<size_t>(count));
-      areaLength.resize(static_cast<size_t>(count));
+      s.parent.resize(static_cast<size_t>(count));
+      std::iota(s.parent.begin(), s.parent.end(), 0);
+      s.area.resize(static_cast<size_t>(count));
+      s.areaLength.resize(static_cast<size_t>(count));
       for (int32_t i = 0; i < count; ++i)
       {
-        const int64_t p = polygonOf(static_cast<int64_t>(cornerTable[cb + i]));
-        area[i] = AreaVectorAt(m, firstCorner(p), cornerCount(p));
-        areaLength[i] = std::sqrt(Dot(area[i], area[i]));
+        const int64_t p = table.PolygonOf(static_cast<int64_t>(cornerTable[cb + i]));
+        s.area[i] = AreaVectorAt(m, table.FirstCorner(m, p), table.CornerCount(m, p));
+        s.areaLength[i] = std::sqrt(Dot(s.area[i], s.area[i]));
       }
-      auto find = [&](int32_t x)
-      {
-        while (parent[x] != x)
-        {
-          parent[x] = parent[parent[x]];
-          x = parent[x];
-        }
-        return x;
-      };
       if (opt.splitting)
       {
-        ends.resize(static_cast<size_t>(2 * count));
-        for (int32_t i = 0; i < count; ++i)
-        {
-          const int64_t c = static_cast<int64_t>(cornerTable[cb + i]);
-          const int64_t p = polygonOf(c);
-          const int64_t b = firstCorner(p), n = cornerCount(p), k = c - b;
-          ends[2 * i] = { m.connectivity[b + (k + 1 == n ? 0 : k + 1)], i };
-          ends[2 * i + 1] = { m.connectivity[b + (k == 0 ? n - 1 : k - 1)], i };
-        }
-        // Insertion sort: a vertex has a handful of incident edges.
-        for (size_t i = 1; i < ends.size(); ++i)
-        {
-          const EdgeEnd key = ends[i];
-          size_t j = i;
-          while (j > 0 &&
-            (ends[j - 1].other > key.other ||
-              (ends[j - 1].other == key.other && ends[j - 1].local > key.local)))
-          {
-            ends[j] = ends[j - 1];
-            --j;
-          }
-          ends[j] = key;
-        }
-        for (size_t i = 0; i < ends.size();)
-        {
-          size_t j = i;
-          while (j < ends.size() && ends[j].other == ends[i].other)
-          {
-            ++j;
-          }
-          const size_t faces = j - i;
-          const int64_t w = ends[i].other;
-          // Each undirected edge is seen from both its ends; count it at v < w.
-          const bool countHere = v < w;
-          if (faces == 1)
-          {
-            r.boundaryEdges += countHere;
-          }
-          else if (faces > 2)
-          {
-            r.nonManifoldEdges += countHere;
-            if (!opt.splitNonManifold)
-            {
-              for (size_t k = i + 1; k < j; ++k)
-              {
-                parent[find(ends[k].local)] = find(ends[i].local);
-              }
-            }
-          }
-          else
-          {
-            const int32_t a = ends[i].local, b = ends[i + 1].local;
-            // cos(dihedral) < cosFeature, without dividing: a.b < cos |a||b|.
-            const bool crease =
-              Dot(area[a], area[b]) < cosFeature * areaLength[a] * areaLength[b] ||
-              isFeature(v, w);
-            if (crease)
-            {
-              r.creaseEdges += countHere;
-            }
-            else
-            {
-              parent[find(a)] = find(b);
-            }
-          }
-          i = j;
-        }
+        JoinAcrossSmoothEdges(m, table, cornerTable + cb, v, count, opt, features, cosFeature, s, r);
       }
       else
       {
         for (int32_t i = 1; i < count; ++i)
         {
-          parent[i] = 0;
+          s.parent[i] = 0;
         }
       }
       // One output point per group of corners; the first group keeps v.
-      groupOf.assign(static_cast<size_t>(count), -1);
+      s.groupOf.assign(static_cast<size_t>(count), -1);
       int32_t groups = 0;
-      groupPoint.clear();
+      s.groupPoint.clear();
       for (int32_t i = 0; i < count; ++i)
       {
-        const int32_t root = find(i);
-        if (groupOf[root] < 0)
+        const int32_t root = s.Find(i);
+        if (s.groupOf[root] < 0)
         {
-          groupOf[root] = groups++;
+          s.groupOf[root] = groups++;
           int64_t point = v;
-          if (groupOf[root] > 0)
+          if (s.groupOf[root] > 0)
           {
             point = static_cast<int64_t>(r.originalPointIds.size());
             r.originalPointIds.push_back(v);
             normals.insert(normals.end(), { 0.0, 0.0, 0.0 });
             ++r.splitPoints;
           }
-          groupPoint.push_back(point);
+          s.groupPoint.push_back(point);
         }
-        const int64_t point = groupPoint[groupOf[root]];
+        const int64_t point = s.groupPoint[s.groupOf[root]];
         const int64_t c = static_cast<int64_t>(cornerTable[cb + i]);
-        const int64_t p = polygonOf(c);
-        const int64_t b = firstCorner(p), n = cornerCount(p);
+        const int64_t p = table.PolygonOf(c);
+        const int64_t b = table.FirstCorner(m, p), n = table.CornerCount(m, p);
         if (n < 3)
         {
           continue;
@@ -269,20 +322,20 @@ NormalResult ComputeVertexNormals(const MeshView& m, const NormalOptions& opt)
         {
           moved.emplace_back(c, point);
         }
-        const V3 w = CornerContribution(m, b, n, c - b, area[i], areaLength[i], opt.weighting);
+        const V3 w = CornerContribution(m, b, n, c - b, s.area[i], s.areaLength[i], opt.weighting);
         normals[3 * point] += w.x;
         normals[3 * point + 1] += w.y;
         normals[3 * point + 2] += w.z;
       }
     }
   };
-  if (narrow)
+  if (table.narrow)
   {
-    vertexPass(corners32.data());
+    vertexPass(table.corners32.data());
   }
   else
   {
-    vertexPass(corners64.data());
+    vertexPass(table.corners64.data());
   }
   for (size_t i = 0; i < normals.size(); i += 3)
   {

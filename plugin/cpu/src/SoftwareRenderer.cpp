@@ -32,6 +32,37 @@ using render::ShadingMode;
 namespace
 {
 
+/// The analyser in front of the camera and the lights' polarizer, their
+/// axes the image's (eq. 8.3, 8.6) in the camera's space; a polarizer in
+/// front of the lights passes kPolarizerTransmittance of their intensity.
+void SetupPolarizers(Frame& frame)
+{
+  frame.Lights.analyser = {};
+  frame.Lights.lightPolarizer = {};
+  if (frame.Opt.polarizer >= 0.0 || frame.Opt.lightPolarizer >= 0.0)
+  {
+    // The polarizers' axes are the image's (eq. 8.3, 8.6), in the camera's space.
+    const render::CameraBasis basis = render::BasisOf(frame.Cam);
+    if (frame.Opt.polarizer >= 0.0)
+    {
+      frame.Lights.analyser = Analyser<float>::At(frame.Opt.polarizer, frame.Opt.circularAnalyser);
+      frame.Lights.analyser.right = Vec3<float>(basis.right);
+      frame.Lights.analyser.up = Vec3<float>(basis.up);
+    }
+    if (frame.Opt.lightPolarizer >= 0.0)
+    {
+      const double psi = frame.Opt.lightPolarizer * kPi<double> / 180.0;
+      frame.Lights.lightPolarizer.on = true;
+      frame.Lights.lightPolarizer.axis = Vec3<float>(basis.right * std::cos(psi) + basis.up * std::sin(psi));
+      frame.Lights.lightPolarizer.fallback = Vec3<float>(Cross(basis.right, basis.up));
+      for (auto& light : frame.Lights.lights)
+      {
+        light.intensity *= kPolarizerTransmittance<float>;
+      }
+    }
+  }
+}
+
 void SetupTransforms(Frame& frame)
 {
   const Vec3<double> eye = frame.Cam.position;
@@ -176,6 +207,9 @@ private:
   /// Scan-converts the frame with the stage of its mode; returns the
   /// polygons found degenerate before rows were drawn.
   int64_t RasterizeFrame(std::vector<ThreadState>& states, bool fastPhongAsPhong);
+  /// The frame's buffers, sized for it: for ssaa 1 the last image's own
+  /// (one set, allocated by the first frame only).
+  void PrepareBuffers();
   /// The frame's buffers as the Output image (box-filtered for ssaa > 1).
   void ResolveImage();
   void FillStats(
@@ -281,30 +315,7 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh,
   F.Lights = lighting;
   F.Mat = material;
   F.Opt = options;
-  F.Lights.analyser = {};
-  F.Lights.lightPolarizer = {};
-  if (options.polarizer >= 0.0 || options.lightPolarizer >= 0.0)
-  {
-    // The polarizers' axes are the image's (eq. 8.3, 8.6), in the camera's space.
-    const render::CameraBasis basis = render::BasisOf(camera);
-    if (options.polarizer >= 0.0)
-    {
-      F.Lights.analyser = Analyser<float>::At(options.polarizer, options.circularAnalyser);
-      F.Lights.analyser.right = Vec3<float>(basis.right);
-      F.Lights.analyser.up = Vec3<float>(basis.up);
-    }
-    if (options.lightPolarizer >= 0.0)
-    {
-      const double psi = options.lightPolarizer * kPi<double> / 180.0;
-      F.Lights.lightPolarizer.on = true;
-      F.Lights.lightPolarizer.axis = Vec3<float>(basis.right * std::cos(psi) + basis.up * std::sin(psi));
-      F.Lights.lightPolarizer.fallback = Vec3<float>(Cross(basis.right, basis.up));
-      for (auto& light : F.Lights.lights)
-      {
-        light.intensity *= kPolarizerTransmittance<float>;
-      }
-    }
-  }
+  SetupPolarizers(F);
   const int ssaa = F.Opt.ssaa;
   F.Width = F.Opt.width * ssaa;
   F.Height = F.Opt.height * ssaa;
@@ -391,6 +402,43 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh,
     }
   }
 
+  Image& image = this->Output;
+  this->PrepareBuffers();
+
+  render::ScanTrace trace;
+  trace.row = F.Opt.traceRow;
+  F.Trace = stats && F.Opt.traceRow >= 0 ? &trace : nullptr;
+  std::vector<ThreadState> states(static_cast<size_t>(F.Threads));
+  const int64_t degenerateBeforeRows = this->RasterizeFrame(states, fastPhongAsPhong);
+  F.Trace = nullptr;
+  trace.normalSlot = F.NormalSlot;
+  trace.intensitySlot = F.Opt.mode == ShadingMode::Gouraud ? 0 : -1;
+  states[0].degenerate += degenerateBeforeRows;
+
+  this->ResolveImage();
+
+  if (stats)
+  {
+    FrameFacts facts;
+    facts.polygons = polygons;
+    facts.hiddenBackFaces = hiddenBackFaces;
+    facts.fastPhongAsPhong = fastPhongAsPhong;
+    facts.pixelsPerTriangle = fastPhongMayFallBack ? pixelsPerTriangle : 0.0;
+    facts.normalsComputed = computedNormals;
+    facts.normalsCached = normalsCached;
+    facts.areaVectorsKept = F.AreaVectors != nullptr;
+    this->FillStats(states, facts, *stats);
+    stats->trace = std::move(trace);
+    stats->milliseconds =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  }
+  return image;
+}
+
+void SoftwareRenderer::Internals::PrepareBuffers()
+{
+  Frame& F = this->FrameState;
+  const int ssaa = F.Opt.ssaa;
   const size_t pixels = static_cast<size_t>(F.Width) * F.Height;
   Image& image = this->Output;
   if (ssaa == 1)
@@ -430,34 +478,6 @@ const Image& SoftwareRenderer::Internals::Run(const Mesh& mesh,
   F.Depth = F.Opt.keepDepth ? this->Depth.data() : nullptr;
   F.DisplayBytes = displayBytes ? this->DisplayBytes.data() : nullptr;
 
-  render::ScanTrace trace;
-  trace.row = F.Opt.traceRow;
-  F.Trace = stats && F.Opt.traceRow >= 0 ? &trace : nullptr;
-  std::vector<ThreadState> states(static_cast<size_t>(F.Threads));
-  const int64_t degenerateBeforeRows = this->RasterizeFrame(states, fastPhongAsPhong);
-  F.Trace = nullptr;
-  trace.normalSlot = F.NormalSlot;
-  trace.intensitySlot = F.Opt.mode == ShadingMode::Gouraud ? 0 : -1;
-  states[0].degenerate += degenerateBeforeRows;
-
-  this->ResolveImage();
-
-  if (stats)
-  {
-    FrameFacts facts;
-    facts.polygons = polygons;
-    facts.hiddenBackFaces = hiddenBackFaces;
-    facts.fastPhongAsPhong = fastPhongAsPhong;
-    facts.pixelsPerTriangle = fastPhongMayFallBack ? pixelsPerTriangle : 0.0;
-    facts.normalsComputed = computedNormals;
-    facts.normalsCached = normalsCached;
-    facts.areaVectorsKept = F.AreaVectors != nullptr;
-    this->FillStats(states, facts, *stats);
-    stats->trace = std::move(trace);
-    stats->milliseconds =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  }
-  return image;
 }
 
 int64_t SoftwareRenderer::Internals::RasterizeFrame(

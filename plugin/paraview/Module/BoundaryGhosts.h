@@ -41,19 +41,15 @@ using Coordinates = std::array<double, 3>;
 /// Cell array flagging the borrowed faces (1) in WithNeighbourFaces' output.
 constexpr const char* kBorrowedArray = "ShadingLabBorrowed";
 
-/// A copy of `input` with the neighbouring ranks' faces within `rings`
-/// rings of its partition boundary appended (flagged in kBorrowedArray);
-/// `added` is their count. One ring gives every boundary vertex all of its
-/// faces (normals); two rings make subdivision's limit stencils, whose
-/// reach shrinks by half each level (1 + 1/2 + ... < 2 base rings), see
-/// only true neighbours.
-inline vtkSmartPointer<vtkPolyData> WithNeighbourFaces(
-  vtkPolyData* input, vtkMultiProcessController* controller, vtkIdType& added, int rings = 1)
+namespace detail
 {
-  // Every rank takes part in the exchange below, even with nothing to send.
-  added = 0;
+
+/// The points on the local partition boundary (edges used by exactly one
+/// local face): flags per point, and their ids by coordinates.
+inline void BoundaryPoints(
+  vtkPolyData* input, std::vector<char>& onBoundary, std::map<Coordinates, vtkIdType>& boundaryIds)
+{
   vtkCellArray* polys = input->GetPolys();
-  // Local boundary: edges used by exactly one local face.
   std::map<std::pair<vtkIdType, vtkIdType>, int> edgeUse;
   vtkNew<vtkIdList> ids;
   for (vtkIdType c = 0; c < polys->GetNumberOfCells(); ++c)
@@ -66,7 +62,7 @@ inline vtkSmartPointer<vtkPolyData> WithNeighbourFaces(
       ++edgeUse[{ std::min(a, b), std::max(a, b) }];
     }
   }
-  std::vector<char> onBoundary(static_cast<size_t>(input->GetNumberOfPoints()), 0);
+  onBoundary.assign(static_cast<size_t>(input->GetNumberOfPoints()), 0);
   for (const auto& [edge, uses] : edgeUse)
   {
     if (uses == 1)
@@ -74,7 +70,6 @@ inline vtkSmartPointer<vtkPolyData> WithNeighbourFaces(
       onBoundary[edge.first] = onBoundary[edge.second] = 1;
     }
   }
-  std::map<Coordinates, vtkIdType> boundaryIds;
   for (vtkIdType i = 0; i < input->GetNumberOfPoints(); ++i)
   {
     if (onBoundary[i])
@@ -84,7 +79,14 @@ inline vtkSmartPointer<vtkPolyData> WithNeighbourFaces(
       boundaryIds.emplace(p, i);
     }
   }
-  // Send the faces within `rings` rings of the boundary: [n, x0, y0, z0, ...].
+}
+
+/// The faces within `rings` rings of the boundary, as [n, x0, y0, z0, ...].
+inline std::vector<double> FacesNearBoundary(
+  vtkPolyData* input, const std::vector<char>& onBoundary, int rings)
+{
+  vtkCellArray* polys = input->GetPolys();
+  vtkNew<vtkIdList> ids;
   std::vector<char> near(onBoundary);
   std::vector<char> sendFace(static_cast<size_t>(polys->GetNumberOfCells()), 0);
   for (int ring = 0; ring < rings; ++ring)
@@ -125,6 +127,14 @@ inline vtkSmartPointer<vtkPolyData> WithNeighbourFaces(
       send.insert(send.end(), p, p + 3);
     }
   }
+  return send;
+}
+
+/// Every rank's `send` to every rank (MPI all-gather): the other ranks'
+/// faces, each as its corners' coordinates. Collective.
+inline std::vector<std::vector<Coordinates>> ExchangeFaces(
+  vtkMultiProcessController* controller, const std::vector<double>& send)
+{
   const int ranks = controller->GetNumberOfProcesses();
   const int me = controller->GetLocalProcessId();
   vtkIdType length = static_cast<vtkIdType>(send.size());
@@ -138,20 +148,7 @@ inline vtkSmartPointer<vtkPolyData> WithNeighbourFaces(
   }
   std::vector<double> received(static_cast<size_t>(std::max<vtkIdType>(total, 1)));
   controller->AllGatherV(send.data(), received.data(), length, lengths.data(), offsets.data());
-
-  auto output = vtkSmartPointer<vtkPolyData>::New();
-  output->DeepCopy(input);
-  vtkPoints* points = output->GetPoints();
-  vtkCellArray* outPolys = output->GetPolys();
-  vtkPointData* pd = output->GetPointData();
-  vtkCellData* cd = output->GetCellData();
-  const vtkIdType localPoints = output->GetNumberOfPoints();
-  const vtkIdType localCells = output->GetNumberOfCells();
-  std::map<Coordinates, vtkIdType> newIds; // ghost points, shared by ghost faces
-  // The received faces, then those within `rings` rings of this rank's
-  // boundary: ring 1 touches its boundary points, ring k touches a point
-  // of ring k-1.
-  std::vector<std::vector<Coordinates>> candidates;
+  std::vector<std::vector<Coordinates>> faces;
   for (int r = 0; r < ranks; ++r)
   {
     for (vtkIdType at = offsets[r]; at < offsets[r] + lengths[r];)
@@ -164,10 +161,19 @@ inline vtkSmartPointer<vtkPolyData> WithNeighbourFaces(
       }
       if (r != me)
       {
-        candidates.push_back(std::move(corners));
+        faces.push_back(std::move(corners));
       }
     }
   }
+  return faces;
+}
+
+/// Which of the received faces lie within `rings` rings of this rank's
+/// boundary: ring 1 touches its boundary points, ring k a point of ring
+/// k-1. Indices into `candidates`, ring by ring.
+inline std::vector<size_t> FacesWithinRings(const std::vector<std::vector<Coordinates>>& candidates,
+  const std::map<Coordinates, vtkIdType>& boundaryIds, int rings)
+{
   std::map<Coordinates, char> reached;
   for (const auto& entry : boundaryIds)
   {
@@ -203,8 +209,60 @@ inline vtkSmartPointer<vtkPolyData> WithNeighbourFaces(
       chosen.push_back(f);
     }
   }
+  return chosen;
+}
+
+/// Grows every array of `data` from `from` to `to` tuples, the new ones
+/// zero (tuple by tuple: vtkFieldData::SetNumberOfTuples lost the existing
+/// values here).
+inline void GrowWithZeros(vtkFieldData* data, vtkIdType from, vtkIdType to)
+{
+  for (int a = 0; a < data->GetNumberOfArrays(); ++a)
+  {
+    vtkAbstractArray* array = data->GetAbstractArray(a);
+    auto* numeric = vtkDataArray::SafeDownCast(array);
+    if (!numeric)
+    {
+      array->Resize(to);
+      array->SetNumberOfTuples(to);
+      continue;
+    }
+    const std::vector<double> zeros(static_cast<size_t>(numeric->GetNumberOfComponents()), 0.0);
+    for (vtkIdType i = from; i < to; ++i)
+    {
+      numeric->InsertTuple(i, zeros.data());
+    }
+  }
+}
+
+} // namespace detail
+
+/// A copy of `input` with the neighbouring ranks' faces within `rings`
+/// rings of its partition boundary appended (flagged in kBorrowedArray);
+/// `added` is their count. One ring gives every boundary vertex all of its
+/// faces (normals); two rings make subdivision's limit stencils, whose
+/// reach shrinks by half each level (1 + 1/2 + ... < 2 base rings), see
+/// only true neighbours.
+inline vtkSmartPointer<vtkPolyData> WithNeighbourFaces(
+  vtkPolyData* input, vtkMultiProcessController* controller, vtkIdType& added, int rings = 1)
+{
+  // Every rank takes part in the exchange below, even with nothing to send.
+  added = 0;
+  std::vector<char> onBoundary;
+  std::map<Coordinates, vtkIdType> boundaryIds;
+  detail::BoundaryPoints(input, onBoundary, boundaryIds);
+  const std::vector<std::vector<Coordinates>> candidates =
+    detail::ExchangeFaces(controller, detail::FacesNearBoundary(input, onBoundary, rings));
+
+  auto output = vtkSmartPointer<vtkPolyData>::New();
+  output->DeepCopy(input);
+  vtkPoints* points = output->GetPoints();
+  vtkCellArray* outPolys = output->GetPolys();
+  const vtkIdType localPoints = output->GetNumberOfPoints();
+  const vtkIdType localCells = output->GetNumberOfCells();
+  std::map<Coordinates, vtkIdType> newIds; // ghost points, shared by ghost faces
   std::vector<vtkIdType> face;
-  for (size_t f : chosen)
+  for (size_t f : detail::FacesWithinRings(candidates, boundaryIds, rings))
   {
     face.clear();
     for (const Coordinates& p : candidates[f])
@@ -225,28 +283,10 @@ inline vtkSmartPointer<vtkPolyData> WithNeighbourFaces(
     outPolys->InsertNextCell(static_cast<vtkIdType>(face.size()), face.data());
     ++added;
   }
-  // Attributes of the new points and faces: zero (grown tuple by tuple:
-  // vtkFieldData::SetNumberOfTuples lost the existing values here).
-  auto grow = [](vtkFieldData* data, vtkIdType from, vtkIdType to) {
-    for (int a = 0; a < data->GetNumberOfArrays(); ++a)
-    {
-      vtkAbstractArray* array = data->GetAbstractArray(a);
-      auto* numeric = vtkDataArray::SafeDownCast(array);
-      if (!numeric)
-      {
-        array->Resize(to);
-        array->SetNumberOfTuples(to);
-        continue;
-      }
-      const std::vector<double> zeros(static_cast<size_t>(numeric->GetNumberOfComponents()), 0.0);
-      for (vtkIdType i = from; i < to; ++i)
-      {
-        numeric->InsertTuple(i, zeros.data());
-      }
-    }
-  };
-  grow(pd, localPoints, output->GetNumberOfPoints());
-  grow(cd, localCells, output->GetNumberOfCells());
+  // Attributes of the new points and faces: zero.
+  detail::GrowWithZeros(output->GetPointData(), localPoints, output->GetNumberOfPoints());
+  vtkCellData* cd = output->GetCellData();
+  detail::GrowWithZeros(cd, localCells, output->GetNumberOfCells());
   vtkNew<vtkUnsignedCharArray> borrowed;
   borrowed->SetName(kBorrowedArray);
   borrowed->SetNumberOfTuples(output->GetNumberOfCells());

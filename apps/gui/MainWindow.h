@@ -11,6 +11,7 @@
 
 class QCheckBox;
 class QComboBox;
+class QGroupBox;
 class QDoubleSpinBox;
 class QLabel;
 class QListWidget;
@@ -69,6 +70,14 @@ protected:
 
 private:
   QWidget* BuildControls();
+  /// BuildControls' groups, top to bottom.
+  QGroupBox* BuildPanelBox();
+  QGroupBox* BuildColorBox();
+  QGroupBox* BuildMaterialBox();
+  QGroupBox* BuildLightBox();
+  QGroupBox* BuildMeshBox();
+  QGroupBox* BuildPlotBox();
+
   void BuildMenus();
   void OnPanelSelected(int index);
   /// The arrays of the scene's first mesh into the Array box.

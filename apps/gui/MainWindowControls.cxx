@@ -37,11 +37,9 @@ QSlider* MakeSlider(int lo, int hi, int value)
 
 } // namespace
 
-QWidget* MainWindow::BuildControls()
+/// The selected panel's mode, error budget, backend, interpolation and scan.
+QGroupBox* MainWindow::BuildPanelBox()
 {
-  auto* root = new QWidget;
-  auto* layout = new QVBoxLayout(root);
-
   auto* panelBox = new QGroupBox("Panel (click a panel to select it)");
   auto* panelForm = new QFormLayout(panelBox);
   this->PanelLabel = new QLabel;
@@ -69,8 +67,12 @@ QWidget* MainWindow::BuildControls()
   panelForm->addRow("Scan (CPU)", this->Scan);
   this->ScanPrecision = widgets::MakeSettingComboBox("scan-precision");
   panelForm->addRow("Scan precision", this->ScanPrecision);
-  layout->addWidget(panelBox);
+  return panelBox;
+}
 
+/// Colour by data: the mesh's arrays and ParaView's colour maps, for every panel.
+QGroupBox* MainWindow::BuildColorBox()
+{
   // Colour by data (every panel): the mesh's arrays, ParaView's colour maps.
   auto* colorBox = new QGroupBox("Colour by data (all panels)");
   auto* colorForm = new QFormLayout(colorBox);
@@ -85,20 +87,28 @@ QWidget* MainWindow::BuildControls()
   {
     connect(box, QOverload<int>::of(&QComboBox::activated), this, [this] { this->ApplyColorBy(); });
   }
-  layout->addWidget(colorBox);
   for (QComboBox* box :
     { this->Mode, this->Backend, this->Interpolation, this->Scan, this->ScanPrecision })
   {
     connect(box, QOverload<int>::of(&QComboBox::activated), this, &MainWindow::OnPanelEdited);
   }
+  return colorBox;
+}
 
+/// The selected panel's material (the MaterialEditor).
+QGroupBox* MainWindow::BuildMaterialBox()
+{
   auto* materialBox = new QGroupBox("Material of the panel");
   auto* materialLayout = new QVBoxLayout(materialBox);
   materialLayout->addWidget(this->Editor);
-  layout->addWidget(materialBox);
   connect(this->Editor, &widgets::MaterialEditor::materialChanged, this,
     &MainWindow::OnPanelEdited);
+  return materialBox;
+}
 
+/// The light, relative to the view, for every panel.
+QGroupBox* MainWindow::BuildLightBox()
+{
   auto* lightBox = new QGroupBox("Light (relative to the view; all panels)");
   auto* lightForm = new QFormLayout(lightBox);
   this->LightAzimuth = MakeSlider(-90, 90, -25);
@@ -125,7 +135,6 @@ QWidget* MainWindow::BuildControls()
         this->View->SetLightIntensity(intensity);
       }
     });
-  layout->addWidget(lightBox);
 
   for (QSlider* slider : { this->LightAzimuth, this->LightElevation })
   {
@@ -136,7 +145,12 @@ QWidget* MainWindow::BuildControls()
       }
     });
   }
+  return lightBox;
+}
 
+/// The preparation of the user's mesh (normals, creases, subdivision, repair).
+QGroupBox* MainWindow::BuildMeshBox()
+{
   auto* meshBox = new QGroupBox("Mesh preparation (your mesh: modes, silhouette, moon, metal)");
   auto* meshForm = new QFormLayout(meshBox);
   this->Weighting = new QComboBox;
@@ -158,7 +172,6 @@ QWidget* MainWindow::BuildControls()
   this->Repair = new QCheckBox("weld, orient, non-manifold, T-junctions");
   this->Repair->setChecked(this->Options.preparation.repair);
   meshForm->addRow("Repair", this->Repair);
-  layout->addWidget(meshBox);
   auto applyPreparation = [this] {
     if (this->Updating)
     {
@@ -176,7 +189,12 @@ QWidget* MainWindow::BuildControls()
   connect(this->CreaseAngle, &QDoubleSpinBox::editingFinished, this, applyPreparation);
   connect(this->Subdivision, QOverload<int>::of(&QSpinBox::valueChanged), this, applyPreparation);
   connect(this->Repair, &QCheckBox::toggled, this, applyPreparation);
+  return meshBox;
+}
 
+/// The plot's tools and the scenes' own parameters.
+QGroupBox* MainWindow::BuildPlotBox()
+{
   auto* plotBox = new QGroupBox("Plot");
   auto* plotForm = new QFormLayout(plotBox);
   this->ProfileTool = new QCheckBox("left-drag draws the profile line (or Ctrl+drag)");
@@ -231,7 +249,6 @@ QWidget* MainWindow::BuildControls()
   plotForm->addRow("brdf: shininess n", this->Shininess);
   this->Roughness = MakeSlider(5, 100, 30);
   plotForm->addRow("brdf: roughness m x 100", this->Roughness);
-  layout->addWidget(plotBox);
   connect(this->ProfileTool, &QCheckBox::toggled, this,
     [this](bool on) { this->View->SetProfileTool(on); });
   connect(this->Perceived, &QCheckBox::toggled, this->ProfileChart,
@@ -241,8 +258,22 @@ QWidget* MainWindow::BuildControls()
   {
     connect(slider, &QSlider::valueChanged, this, &MainWindow::UpdateBrdfPlot);
   }
+  return plotBox;
+}
+
+QWidget* MainWindow::BuildControls()
+{
+  auto* root = new QWidget;
+  auto* layout = new QVBoxLayout(root);
+  layout->addWidget(this->BuildPanelBox());
+  layout->addWidget(this->BuildColorBox());
+  layout->addWidget(this->BuildMaterialBox());
+  layout->addWidget(this->BuildLightBox());
+  layout->addWidget(this->BuildMeshBox());
+  layout->addWidget(this->BuildPlotBox());
   layout->addStretch(1);
   return root;
 }
+
 
 } // namespace shadinglab::gui

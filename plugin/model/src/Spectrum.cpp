@@ -170,22 +170,26 @@ bool Dispersion::Evaluate(double nm, double& nOut, double& kOut) const
   return true;
 }
 
-std::string ParseDispersion(const std::string& text, const std::string& name, Dispersion& out)
+namespace
 {
-  Dispersion d;
-  d.name = name;
+
+/// One block of a refractiveindex.info file's DATA section.
+struct DispersionBlock
+{
+  std::string type;
+  std::vector<std::string> rows;
+  std::vector<double> coefficients;
+  std::vector<double> range;
+};
+
+/// The DATA section's blocks: "- type: ..." starts one; "data: |" is
+/// followed by indented rows; "coefficients: ..." and "wavelength_range:
+/// a b" are one line.
+std::vector<DispersionBlock> ReadDispersionBlocks(const std::string& text)
+{
   std::istringstream in(text);
   std::string line;
-  // Blocks: "- type: ..." starts one; "data: |" is followed by indented
-  // rows; "coefficients: ..." and "wavelength_range: a b" are one line.
-  struct Block
-  {
-    std::string type;
-    std::vector<std::string> rows;
-    std::vector<double> coefficients;
-    std::vector<double> range;
-  };
-  std::vector<Block> blocks;
+  std::vector<DispersionBlock> blocks;
   bool inData = false, inDataSection = false;
   size_t dataIndent = 0;
   while (std::getline(in, line))
@@ -248,11 +252,14 @@ std::string ParseDispersion(const std::string& text, const std::string& name, Di
       }
     }
   }
-  if (blocks.empty())
-  {
-    return name + ": no DATA block (not a refractiveindex.info file)";
-  }
-  for (const Block& b : blocks)
+  return blocks;
+}
+
+/// The blocks' data into `d`, with its wavelength range: "" or the
+/// problem (without the file's name).
+std::string FillDispersion(const std::vector<DispersionBlock>& blocks, Dispersion& d)
+{
+  for (const DispersionBlock& b : blocks)
   {
     std::string problem;
     if (b.type == "tabulated nk")
@@ -272,7 +279,7 @@ std::string ParseDispersion(const std::string& text, const std::string& name, Di
     {
       if (b.coefficients.size() != 7 || b.range.size() != 2)
       {
-        return name + ": formula 2 needs 7 coefficients (0 B1 C1 B2 C2 B3 C3) and a "
+        return "formula 2 needs 7 coefficients (0 B1 C1 B2 C2 B3 C3) and a "
                       "wavelength_range";
       }
       d.sellmeier = true;
@@ -282,23 +289,30 @@ std::string ParseDispersion(const std::string& text, const std::string& name, Di
     }
     else
     {
-      return name + ": data type '" + b.type +
+      return "data type '" + b.type +
         "' is not supported (tabulated nk, tabulated n, formula 2 are)";
     }
     if (!problem.empty())
     {
-      return name + ": " + problem;
+      return "" + problem;
     }
   }
   if (!d.sellmeier)
   {
     if (d.nmN.size() < 2)
     {
-      return name + ": fewer than two rows of n";
+      return "fewer than two rows of n";
     }
     d.minNm = d.nmN.front();
     d.maxNm = d.nmN.back();
   }
+  return {};
+}
+
+/// Every n > 0 and k >= 0, and n finite and positive over the visible
+/// range (the Sellmeier form has poles): "" or the problem.
+std::string CheckDispersion(const Dispersion& d, const std::string& name)
+{
   for (double v : d.n)
   {
     if (!(v > 0.0))
@@ -331,6 +345,30 @@ std::string ParseDispersion(const std::string& text, const std::string& name, Di
       err << name << ": n is not a positive number at " << nm << " nm";
       return err.str();
     }
+  }
+  return {};
+}
+
+} // namespace
+
+std::string ParseDispersion(const std::string& text, const std::string& name, Dispersion& out)
+{
+  const std::vector<DispersionBlock> blocks = ReadDispersionBlocks(text);
+  if (blocks.empty())
+  {
+    return name + ": no DATA block (not a refractiveindex.info file)";
+  }
+  Dispersion d;
+  d.name = name;
+  std::string problem = FillDispersion(blocks, d);
+  if (!problem.empty())
+  {
+    return name + ": " + problem;
+  }
+  problem = CheckDispersion(d, name);
+  if (!problem.empty())
+  {
+    return problem;
   }
   out = std::move(d);
   return {};

@@ -69,9 +69,11 @@ endforeach()
 install(FILES ${PROJECT_BINARY_DIR}/plugin/model/include/shadinglab/Version.h
   DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/shadinglab COMPONENT Development)
 # ... and the VTK-side and mesh headers, included by file name as VTK's are.
-# (The VTK modules' headers are installed by vtk_module_build.)
+# (The VTK classes' headers are installed by vtk_module_build.)
 file(GLOB _shadinglab_flat_headers
   ${PROJECT_SOURCE_DIR}/mesh/core/*.h ${PROJECT_SOURCE_DIR}/mesh/vtk/MeshArrays.h
+  ${PROJECT_SOURCE_DIR}/plugin/render/vtk/PolyDataMesh.h ${PROJECT_SOURCE_DIR}/plugin/render/vtk/VtkCamera.h
+  ${PROJECT_SOURCE_DIR}/plugin/render/vtk/VtkLights.h
   ${PROJECT_SOURCE_DIR}/mesh/io/MeshIO.h ${PROJECT_SOURCE_DIR}/mesh/io/MeshPrecheck.h
   ${PROJECT_SOURCE_DIR}/mesh/prep/*.h)
 install(FILES ${_shadinglab_flat_headers}

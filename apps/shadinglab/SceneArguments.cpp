@@ -148,44 +148,13 @@ void SettingsFromArguments(const Arguments& args, SceneArguments& scene)
 /// the colour map over the range asked for (or the data's).
 void ColorByFromArguments(vtkPolyData* polydata, SceneArguments& scene)
 {
-  const render::ColorBySettings& color = scene.settings.color;
-  render::ScalarField field;
-  const std::string problem = render::ParseScalarField(color.array, field);
+  const std::string problem = render::MeshColoredBy(polydata, scene.frame, scene.settings.color,
+    "--", scene.mesh, scene.colorMap, scene.colorTitle);
   if (!problem.empty())
   {
     throw UsageError(problem);
   }
-  double range[2] = { 0, 1 };
-  try
-  {
-    scene.mesh = render::MeshFromPolyData(polydata, scene.frame, field, range);
-  }
-  catch (const std::invalid_argument& e)
-  {
-    throw UsageError(std::string("--color-by: ") + e.what());
-  }
-  if (!render::FindColorMap(color.colormap, scene.colorMap))
-  {
-    throw UsageError("unknown --colormap '" + color.colormap + "'");
-  }
-  if (color.range != "auto")
-  {
-    const std::vector<double> r = ParseList(color.range, "--range");
-    if (r.size() != 2 || !std::isfinite(r[0]) || !std::isfinite(r[1]) || !(r[0] < r[1]))
-    {
-      throw UsageError("--range must be MIN,MAX with MIN < MAX (or auto), not '" + color.range + "'");
-    }
-    range[0] = r[0];
-    range[1] = r[1];
-  }
-  scene.colorMap.rangeMin = range[0];
-  scene.colorMap.rangeMax = range[1];
   scene.scene.colorMap = &scene.colorMap;
-  scene.colorTitle = field.name;
-  if (field.component >= 0)
-  {
-    scene.colorTitle += " " + std::to_string(field.component);
-  }
 }
 
 /// Appends one notice ("; " between notices).

@@ -6,6 +6,7 @@
 #include "VertexNormals.h"
 #include "VtkCamera.h"
 #include "VtkLights.h"
+#include "vtkShadingLabSettings.h"
 #include "vtkWeightedPolyDataNormals.h"
 #include "shadinglab/model/Materials.h"
 #include "shadinglab/render/AutoMode.h"
@@ -122,6 +123,14 @@ void vtkShadingLabOpenGLPolyDataMapper::SetSettings(const sl::render::Settings& 
   if (modified)
   {
     this->Modified();
+  }
+}
+
+void vtkShadingLabOpenGLPolyDataMapper::SetSettingsFrom(vtkShadingLabSettings* settings)
+{
+  if (settings)
+  {
+    this->SetSettings(settings->GetSettings());
   }
 }
 

@@ -49,6 +49,8 @@
 
 #include <vtkOpenGLPolyDataMapper.h>
 
+class vtkShadingLabSettings;
+
 #include <memory>
 #include <string>
 
@@ -87,6 +89,10 @@ public:
   void SetSettings(const shadinglab::render::Settings& settings);
   const shadinglab::render::Settings& GetSettings() const;
   ///@}
+
+  /// The same from a vtkShadingLabSettings (VTK's wrappers, Python): its
+  /// settings are copied; later changes to it need another call.
+  void SetSettingsFrom(vtkShadingLabSettings* settings);
 
   /**
    * One setting by its table key and text, as on the command line:

@@ -2,6 +2,10 @@
 #include "vtkSoftwareShadingRenderer.h"
 
 #include "PolyDataMesh.h"
+#include "vtkShadingLabSettings.h"
+#include "vtkWeightedPolyDataNormals.h"
+#include "shadinglab/model/Materials.h"
+#include "shadinglab/render/Settings.h"
 
 #include <vtkCamera.h>
 #include <vtkFloatArray.h>
@@ -15,6 +19,11 @@
 #include <vtkStreamingDemandDrivenPipeline.h>
 #include <vtkUnsignedCharArray.h>
 
+#include <algorithm>
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+
 namespace sl = shadinglab;
 
 struct vtkSoftwareShadingRenderer::Internals
@@ -24,7 +33,11 @@ struct vtkSoftwareShadingRenderer::Internals
   sl::Lighting<double> Lighting;
   bool HasLighting = false;
   vtkSmartPointer<vtkCamera> Camera;
+  vtkSmartPointer<vtkShadingLabSettings> Settings;
   sl::render::RenderStats Stats;
+  bool Rendered = false;
+  std::string Error;
+  std::string Model; ///< the last render's reflectance model
 };
 
 vtkStandardNewMacro(vtkSoftwareShadingRenderer);
@@ -57,6 +70,77 @@ void vtkSoftwareShadingRenderer::SetCamera(vtkCamera* camera)
 vtkCamera* vtkSoftwareShadingRenderer::GetCamera()
 {
   return this->Internal->Camera;
+}
+
+void vtkSoftwareShadingRenderer::SetSettings(vtkShadingLabSettings* settings)
+{
+  if (this->Internal->Settings != settings)
+  {
+    this->Internal->Settings = settings;
+    this->Modified();
+  }
+}
+
+vtkShadingLabSettings* vtkSoftwareShadingRenderer::GetSettings()
+{
+  return this->Internal->Settings;
+}
+
+vtkMTimeType vtkSoftwareShadingRenderer::GetMTime()
+{
+  vtkMTimeType time = this->Superclass::GetMTime();
+  if (this->Internal->Settings)
+  {
+    time = std::max(time, this->Internal->Settings->GetMTime());
+  }
+  if (this->Internal->Camera)
+  {
+    time = std::max(time, this->Internal->Camera->GetMTime());
+  }
+  return time;
+}
+
+std::string vtkSoftwareShadingRenderer::GetLastError() const
+{
+  return this->Internal->Error;
+}
+
+std::string vtkSoftwareShadingRenderer::GetLastStatsJson() const
+{
+  if (!this->Internal->Rendered)
+  {
+    return "{}";
+  }
+  const sl::render::RenderStats& st = this->Internal->Stats;
+  char json[1024];
+  std::snprintf(json, sizeof json,
+    "{\"backend\":\"cpu\",\"mode\":\"%s\",\"model\":\"%s\",\"milliseconds\":%.3f,"
+    "\"polygons\":%lld,\"triangles\":%lld,\"rasterized\":%lld,\"clipped\":%lld,"
+    "\"degenerate\":%lld,\"culled\":%lld,\"hidden_back_faces_culled\":%s,"
+    "\"pixels_covered\":%lld,\"pixels_shaded\":%lld,\"fast_phong_exact\":%lld,"
+    "\"fast_phong_as_phong\":%s,\"threads\":%d,\"normals_computed\":%s",
+    sl::render::ShadingModeName(st.drawnMode), this->Internal->Model.c_str(), st.milliseconds,
+    static_cast<long long>(st.polygons), static_cast<long long>(st.triangles),
+    static_cast<long long>(st.rasterized), static_cast<long long>(st.clipped),
+    static_cast<long long>(st.degenerate), static_cast<long long>(st.culled),
+    st.hiddenBackFacesCulled ? "true" : "false", static_cast<long long>(st.pixelsCovered),
+    static_cast<long long>(st.pixelsShaded), static_cast<long long>(st.fastPhongExact),
+    st.fastPhongAsPhong ? "true" : "false", st.threads, st.normalsComputed ? "true" : "false");
+  std::string out = json;
+  if (!st.autoChoice.empty())
+  {
+    std::string quoted;
+    for (const char c : st.autoChoice)
+    {
+      if (c == '"' || c == '\\')
+      {
+        quoted += '\\';
+      }
+      quoted += c == '\n' ? ' ' : c;
+    }
+    out += ",\"auto\":\"" + quoted + "\"";
+  }
+  return out + "}";
 }
 
 void vtkSoftwareShadingRenderer::SetMaterial(const sl::Material<double>& material)
@@ -106,56 +190,123 @@ int vtkSoftwareShadingRenderer::RequestData(
   vtkImageData* output = vtkImageData::GetData(outputVector, 0);
   if (!input || input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0)
   {
+    this->Internal->Error = "input has no polygons";
     vtkErrorMacro("input has no polygons");
     return 0;
   }
-  const sl::render::Mesh mesh = sl::render::MeshFromPolyData(input);
-  sl::render::RenderOptions options;
-  options.mode = static_cast<sl::render::ShadingMode>(this->Mode);
+  Internals& in = *this->Internal;
+  in.Error.clear();
+  // The settings: the object's, or this class's properties.
+  sl::render::Settings settings;
+  if (in.Settings)
+  {
+    settings = in.Settings->GetSettings();
+  }
+  else
+  {
+    settings.render.mode = static_cast<sl::render::ShadingMode>(this->Mode);
+    settings.render.interpolation = this->PerspectiveCorrect
+      ? sl::render::InterpolationSpace::Perspective
+      : sl::render::InterpolationSpace::Screen;
+    settings.render.polygons = this->DirectPolygons ? sl::render::PolygonHandling::Direct
+                                                    : sl::render::PolygonHandling::Triangulate;
+    settings.render.ssaa = this->Supersampling;
+    settings.render.threads = this->NumberOfThreads;
+    settings.material = in.Material;
+  }
+  sl::render::RenderOptions options = settings.render;
   options.width = this->Size[0];
   options.height = this->Size[1];
-  options.interpolation = this->PerspectiveCorrect ? sl::render::InterpolationSpace::Perspective
-                                                   : sl::render::InterpolationSpace::Screen;
-  options.polygons =
-    this->DirectPolygons ? sl::render::PolygonHandling::Direct : sl::render::PolygonHandling::Triangulate;
-  options.ssaa = this->Supersampling;
-  options.threads = this->NumberOfThreads;
-
-  double bounds[6];
-  mesh.Bounds(bounds);
-  sl::render::Camera camera = sl::render::FitCamera(
-    bounds, 0.0, 0.0, 1.0, static_cast<double>(options.width) / options.height, false);
-  if (vtkCamera* cam = this->Internal->Camera)
+  // A smooth mode draws the input's normals or (none, or asked to) the
+  // settings' weighted normals split at creases, as the command line and
+  // the mapper do; on a copy: the input is never modified.
+  vtkSmartPointer<vtkPolyData> drawn = input;
+  const sl::render::NormalSettings& made = settings.normals;
+  if (options.mode != sl::render::ShadingMode::Flat &&
+    (!input->GetPointData()->GetNormals() || made.recompute))
   {
-    double v[3];
-    cam->GetPosition(v);
-    camera.position = { v[0], v[1], v[2] };
-    cam->GetFocalPoint(v);
-    camera.focalPoint = { v[0], v[1], v[2] };
-    cam->GetViewUp(v);
-    camera.viewUp = { v[0], v[1], v[2] };
-    camera.viewAngle = cam->GetViewAngle();
-    camera.parallel = cam->GetParallelProjection() != 0;
-    camera.parallelScale = cam->GetParallelScale();
-    cam->GetClippingRange(v);
-    camera.nearClip = v[0];
-    camera.farClip = v[1];
+    vtkNew<vtkPolyData> copy;
+    copy->ShallowCopy(input);
+    vtkNew<vtkWeightedPolyDataNormals> normals;
+    normals->SetInputData(copy);
+    normals->SetWeighting(made.weighting);
+    normals->SetFeatureAngle(made.featureAngle);
+    normals->SetSplitting(made.featureAngle < 180.0);
+    normals->ConsistencyOn();
+    normals->Update();
+    drawn = normals->GetOutput();
   }
-  sl::Lighting<double> lighting = this->Internal->Lighting;
-  if (!this->Internal->HasLighting)
-  {
-    lighting = sl::Lighting<double>();
-    lighting.lights[0] = sl::render::KeyLight(camera);
-    lighting.lightCount = 1;
-  }
+  // The mesh in a local frame (centred, unit size), the camera fitted to
+  // it or converted from the vtkCamera, and the lights: as the command line.
+  sl::render::WorldFrame frame;
   const sl::render::Image* image = nullptr;
   try
   {
-    const sl::render::Scene scene{ &mesh, camera, lighting, this->Internal->Material };
-    image = &this->Internal->Renderer.Render(scene, options, &this->Internal->Stats);
+    // Colour by data (the settings' color-by, colormap and range).
+    sl::render::Mesh mesh;
+    sl::render::ColorMap map;
+    const bool colored = !settings.color.array.empty();
+    if (colored)
+    {
+      std::string title;
+      const std::string problem =
+        sl::render::MeshColoredBy(drawn, frame, settings.color, "", mesh, map, title);
+      if (!problem.empty())
+      {
+        throw std::invalid_argument(problem);
+      }
+    }
+    else
+    {
+      mesh = sl::render::MeshFromPolyData(drawn, frame);
+    }
+    double bounds[6];
+    mesh.Bounds(bounds);
+    sl::render::Camera camera = sl::render::FitCamera(
+      bounds, 0.0, 0.0, 1.0, static_cast<double>(options.width) / options.height, false);
+    if (vtkCamera* cam = in.Camera)
+    {
+      double v[3];
+      cam->GetPosition(v);
+      camera.position = { v[0], v[1], v[2] };
+      cam->GetFocalPoint(v);
+      camera.focalPoint = { v[0], v[1], v[2] };
+      cam->GetViewUp(v);
+      camera.viewUp = { v[0], v[1], v[2] };
+      camera.viewAngle = cam->GetViewAngle();
+      camera.parallel = cam->GetParallelProjection() != 0;
+      camera.parallelScale = cam->GetParallelScale();
+      cam->GetClippingRange(v);
+      camera.nearClip = v[0];
+      camera.farClip = v[1];
+      sl::render::ToLocal(frame, camera);
+    }
+    sl::Lighting<double> lighting = in.Lighting;
+    if (in.HasLighting)
+    {
+      sl::render::ToLocal(frame, lighting);
+    }
+    else
+    {
+      lighting = sl::Lighting<double>();
+      lighting.lights[0] = sl::render::KeyLight(camera, settings.lightIntensity);
+      lighting.lightCount = 1;
+      for (int k = 0; k < lighting.lightCount; ++k)
+      {
+        lighting.lights[k].solidAngle = settings.lightSolidAngle;
+      }
+      lighting.ambientIntensity = sl::Vec3<double>(1, 1, 1);
+    }
+    in.Model = sl::ReflectanceModelName(settings.material.model);
+    sl::render::Scene scene{ &mesh, camera, lighting, settings.material };
+    scene.colorMap = colored ? &map : nullptr;
+    image = &in.Renderer.Render(scene, options, &in.Stats);
+    in.Stats.normalsComputed = in.Stats.normalsComputed || drawn != input;
+    in.Rendered = true;
   }
   catch (const std::exception& e)
   {
+    in.Error = e.what();
     vtkErrorMacro(<< e.what());
     return 0;
   }

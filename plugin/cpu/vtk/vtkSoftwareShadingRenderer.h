@@ -10,10 +10,19 @@
  * them. Row 0 of the VTK image is the bottom of the picture, as usual in VTK.
  *
  * The camera is a vtkCamera (SetCamera); without one the view is fitted to
- * the input bounds. The lights and the material are set from C++.
+ * the input bounds, as the command line fits it. The settings (mode,
+ * interpolation, material, light intensity, normals, ...: the settings
+ * table) come from a vtkShadingLabSettings (SetSettings); without one, from
+ * this class's own properties (Mode, PerspectiveCorrect, ...) and the
+ * material set from C++. The lights default to the command line's key light.
  *
- * @warning The input is never modified. Point normals are used when present;
- * otherwise area-weighted vertex normals are computed for the render only.
+ * As the command line and the mapper, a smooth mode draws the input's point
+ * normals, or (none, or the settings' recompute) weighted vertex normals
+ * split at the settings' feature angle (vtkWeightedPolyDataNormals), made
+ * for the render only; the mesh is drawn in a local frame (centred, unit
+ * size), so the picture is the command line's for the same settings.
+ *
+ * @warning The input is never modified.
  */
 #ifndef vtkSoftwareShadingRenderer_h
 #define vtkSoftwareShadingRenderer_h
@@ -25,8 +34,10 @@
 #include <vtkImageAlgorithm.h>
 
 #include <memory>
+#include <string>
 
 class vtkCamera;
+class vtkShadingLabSettings;
 
 class SHADINGLABCPUVTK_EXPORT vtkSoftwareShadingRenderer : public vtkImageAlgorithm
 {
@@ -90,6 +101,22 @@ public:
   vtkCamera* GetCamera();
   ///@}
 
+  ///@{
+  /// Every setting of the table (nullptr, the default: this class's
+  /// properties). The object is copied when the render runs; changing it
+  /// re-renders.
+  void SetSettings(vtkShadingLabSettings* settings);
+  vtkShadingLabSettings* GetSettings();
+  ///@}
+
+  /// The last render's statistics as one JSON object, the keys of the
+  /// command line's `render --stats` ("mode", "polygons", "milliseconds",
+  /// "pixels_covered", ...); "{}" before the first.
+  std::string GetLastStatsJson() const;
+  /// Why the last render failed ("" when it did not).
+  std::string GetLastError() const;
+
+#ifndef __VTK_WRAP__
   /// The illumination model's material (default: Blinn-Phong, kd 0.7, ks 0.3).
   void SetMaterial(const shadinglab::Material<double>& material);
   /// Lights (default: one key light above-left of the camera).
@@ -98,11 +125,13 @@ public:
 
   /// Statistics of the last render.
   const shadinglab::render::RenderStats& GetLastStats() const;
+#endif
 
 protected:
   vtkSoftwareShadingRenderer();
   ~vtkSoftwareShadingRenderer() override;
 
+  vtkMTimeType GetMTime() override;
   int FillInputPortInformation(int port, vtkInformation* info) override;
   int RequestInformation(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;

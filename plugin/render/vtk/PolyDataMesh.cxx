@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 #include <stdexcept>
 #include <vtkCellData.h>
@@ -364,6 +365,61 @@ vtkSmartPointer<vtkFloatArray> FloatArray(const std::vector<float>& values, cons
 }
 
 } // namespace
+
+std::string MeshColoredBy(vtkPolyData* polydata, WorldFrame& frame, const ColorBySettings& color,
+  const std::string& prefix, Mesh& mesh, ColorMap& map, std::string& title)
+{
+  ScalarField field;
+  std::string problem = ParseScalarField(color.array, field);
+  if (!problem.empty())
+  {
+    return problem;
+  }
+  double range[2] = { 0, 1 };
+  try
+  {
+    mesh = MeshFromPolyData(polydata, frame, field, range);
+  }
+  catch (const std::invalid_argument& e)
+  {
+    return prefix + "color-by: " + e.what();
+  }
+  if (!FindColorMap(color.colormap, map))
+  {
+    return "unknown " + prefix + "colormap '" + color.colormap + "'";
+  }
+  if (color.range != "auto")
+  {
+    // MIN,MAX: two finite numbers, MIN < MAX.
+    const std::string& text = color.range;
+    const size_t comma = text.find(',');
+    char* end = nullptr;
+    double lo = 0, hi = 0;
+    bool ok = comma != std::string::npos;
+    if (ok)
+    {
+      const std::string a = text.substr(0, comma), b = text.substr(comma + 1);
+      lo = std::strtod(a.c_str(), &end);
+      ok = !a.empty() && *end == '\0';
+      hi = std::strtod(b.c_str(), &end);
+      ok = ok && !b.empty() && *end == '\0';
+    }
+    if (!ok || !std::isfinite(lo) || !std::isfinite(hi) || !(lo < hi))
+    {
+      return prefix + "range must be MIN,MAX with MIN < MAX (or auto), not '" + text + "'";
+    }
+    range[0] = lo;
+    range[1] = hi;
+  }
+  map.rangeMin = range[0];
+  map.rangeMax = range[1];
+  title = field.name;
+  if (field.component >= 0)
+  {
+    title += " " + std::to_string(field.component);
+  }
+  return "";
+}
 
 vtkPolyData* PolyDataFromMesh(const Mesh& mesh)
 {

@@ -2,7 +2,9 @@
 // vtkPolyData <-> the renderers' flat Mesh arrays.
 #pragma once
 
+#include "shadinglab/render/ColorMap.h"
 #include "shadinglab/render/Scene.h"
+#include "shadinglab/render/Settings.h"
 
 #include <string>
 
@@ -56,6 +58,17 @@ std::string ParseScalarField(const std::string& spec, ScalarField& field);
  */
 Mesh MeshFromPolyData(vtkPolyData* polydata, WorldFrame& frame, const ScalarField& field,
   double range[2]);
+
+/**
+ * Colour by data as every front end spells it (render::ColorBySettings:
+ * the array, the colour map, "auto" or "MIN,MAX"): the mesh in `frame` with
+ * the array's values, `map` through the named colour map over the range
+ * (the data's for "auto"), and the legend's `title` ("Velocity 0").
+ * Returns "" or a one-line error naming the setting with `prefix` ("--"
+ * on the command line).
+ */
+std::string MeshColoredBy(vtkPolyData* polydata, WorldFrame& frame, const ColorBySettings& color,
+  const std::string& prefix, Mesh& mesh, ColorMap& map, std::string& title);
 
 /**
  * The inverse: points, point normals (active), colours as a float RGB

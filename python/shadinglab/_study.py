@@ -30,8 +30,9 @@ def accuracy(quick: bool = True, backend: str = "cpu", size: Optional[str] = Non
     Every shape, level, mode and model against the exact surfaces, as
     docs/accuracy.md measures it; ``quick`` runs the command's small
     version. Returns its rows as a NumPy record array, one field a column
-    of its CSV (shape, level, triangles, backend, mode, model, ...,
-    mean_error, ...). Raises ValueError with the command's one-line
+    of its accuracy.csv (shape, level, triangles, backend, mode, model,
+    normals, ..., frame_ms, mean_255, rmse_255, p99_255, max_255, ...:
+    docs/accuracy.md). Raises ValueError with the command's one-line
     message for a refused argument.
     """
     import numpy
@@ -48,8 +49,8 @@ def accuracy(quick: bool = True, backend: str = "cpu", size: Optional[str] = Non
             raise ValueError(done.stderr.strip().splitlines()[-1] if done.stderr.strip() else "refused")
         if done.returncode != 0:
             raise RuntimeError(f"shadinglab accuracy failed ({done.returncode}): {done.stderr.strip()}")
-        csvs = [f for f in os.listdir(out) if f.endswith(".csv")]
-        if not csvs:
-            raise RuntimeError("shadinglab accuracy wrote no CSV")
-        return numpy.genfromtxt(os.path.join(out, sorted(csvs)[0]), delimiter=",", names=True,
-                                dtype=None, encoding="utf-8").view(numpy.recarray)
+        table = os.path.join(out, "accuracy.csv")
+        if not os.path.exists(table):
+            raise RuntimeError("shadinglab accuracy wrote no accuracy.csv")
+        return numpy.genfromtxt(table, delimiter=",", names=True, dtype=None,
+                                encoding="utf-8").view(numpy.recarray)

@@ -130,8 +130,8 @@ install(FILES ${PROJECT_BINARY_DIR}/ShadingLabConfig.cmake
   DESTINATION ${SHADINGLAB_INSTALL_CMAKEDIR} COMPONENT Development)
 
 # --- Debian packages: cpack -G DEB -------------------------------------------
-# shadinglab (programs, explorer, ParaView plugin; dependencies from
-# dpkg-shlibdeps) and shadinglab-dev (static libraries, headers, the CMake
+# shadinglab (programs, explorer, ParaView plugin, the Python package in
+# /usr/lib/python3/dist-packages; dependencies from dpkg-shlibdeps) and shadinglab-dev (static libraries, headers, the CMake
 # package; it depends on what ShadingLabConfig.cmake finds).
 set(CPACK_PACKAGE_NAME shadinglab)
 set(CPACK_PACKAGE_VENDOR "ShadingLab")

@@ -76,6 +76,19 @@ if plugins:
     r = run(['pvbatch', '--force-offscreen-rendering', script, plugins[0]], env=env)
     check(r.returncode == 0 and 'ShadingLab Surface' in r.stdout,
           'pvbatch loads the installed plugin and draws a ShadingLab Surface')
+# The Python package, where `cmake --install` put it (lib/python3/dist-packages,
+# Debian's folder for every Python 3), imported by pvpython: it renders.
+site = os.path.join(prefix, 'lib', 'python3', 'dist-packages')
+check(os.path.exists(os.path.join(site, 'shadinglab', '__init__.py')),
+      'the Python package is installed in lib/python3/dist-packages/shadinglab')
+r = run(['pvpython', '-c', 'import shadinglab\n'
+         'from vtkmodules.vtkFiltersSources import vtkSphereSource\n'
+         's = vtkSphereSource(); s.Update()\n'
+         'image, stats = shadinglab.render(s.GetOutput(), mode="gouraud", size=(64, 48))\n'
+         'print("rendered", image.shape, stats["mode"])'],
+        env=dict(env, PYTHONPATH=site))
+check(r.returncode == 0 and 'rendered (48, 64, 3) gouraud' in r.stdout,
+      'pvpython imports the installed package and renders (%s)' % (r.stdout + r.stderr).strip()[-200:])
 # A plain C++ project (no C) per package component: CPU needs neither VTK
 # nor ParaView; VTK brings the VTK ShadingLab was built against; IO (C
 # enabled: HDF5's lookup in ParaView 5.11's VTK compiles C) reads a mesh.
@@ -125,8 +138,10 @@ dpkg = ['dpkg', '--root=' + root, '--force-depends', '--force-not-root', '--forc
 if debs:
     r = run(dpkg + ['-i'] + debs)
     check(r.returncode == 0 and os.path.exists(os.path.join(root, 'usr', 'bin', 'shadinglab'))
-          and os.path.lexists(os.path.join(root, plugin_list)),
-          'dpkg --root installs both packages (usr/bin/shadinglab, %s)' % plugin_list)
+          and os.path.lexists(os.path.join(root, plugin_list))
+          and os.path.exists(os.path.join(root, 'usr/lib/python3/dist-packages/shadinglab/__init__.py')),
+          'dpkg --root installs both packages (usr/bin/shadinglab, %s, '
+          'usr/lib/python3/dist-packages/shadinglab)' % plugin_list)
     r = run([os.path.join(root, 'usr', 'bin', 'shadinglab'), '--version'])
     check(r.returncode == 0, 'the packaged CLI runs from the scratch root')
     r = run(dpkg + ['-r', 'shadinglab-dev', 'shadinglab'])
@@ -150,6 +165,10 @@ if real:
         r = run(['pvpython', '--force-offscreen-rendering', probe], env=env)
         check('ShadingLab Surface' in r.stdout,
               "LoadDistributedPlugin('ShadingLab') finds the installed plugin without PV_PLUGIN_PATH")
+        r = run(['pvpython', '-c', 'import shadinglab; print(shadinglab.vtkShadingLabPolyDataMapper)'],
+                env=env)
+        check(r.returncode == 0 and 'vtkShadingLabPolyDataMapper' in r.stdout,
+              'pvpython imports the packaged shadinglab without PYTHONPATH')
     finally:
         r = run(['dpkg', '-r', 'shadinglab'])
     check(r.returncode == 0 and not os.path.exists('/usr/bin/shadinglab')

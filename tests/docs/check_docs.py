@@ -72,6 +72,9 @@ os.symlink(build, os.path.join(work, 'build'))
 env = dict(os.environ)
 env['PATH'] = os.path.join(build, 'bin') + os.pathsep + env.get('PATH', '')
 env['SHADINGLAB_BUILD_DIR'] = build
+# The Python package of the build tree, as docs/python.md says to use it.
+env['PYTHONPATH'] = os.pathsep.join(
+    p for p in (os.path.join(build, 'lib', 'python3', 'dist-packages'), env.get('PYTHONPATH')) if p)
 
 docs = [os.path.join(root, 'README.md')] + sorted(glob.glob(os.path.join(root, 'docs', '*.md')))
 readme_lines = sum(1 for _ in open(docs[0], encoding='utf-8'))

@@ -36,7 +36,8 @@ def render(
     """Renders ``mesh`` with the CPU renderer; returns (image, stats).
 
     mesh      a vtkPolyData, or any VTK data set or PyVista mesh (its surface)
-    mode      flat, gouraud, phong, fast-phong, cook-torrance or auto
+    mode      flat, gouraud, phong, fast-phong or auto (Cook-Torrance is the
+              material's model: model="cook-torrance")
     material  a preset (gold, copper, plastic, ...), as --material
     size      (width, height) in pixels
     camera    a vtkCamera; None fits the view to the mesh, as the command line

@@ -324,19 +324,17 @@ int vtkSoftwareShadingRenderer::RequestData(
   vtkNew<vtkUnsignedCharArray> covered;
   covered->SetName("Covered");
   covered->SetNumberOfTuples(n);
+  // Row by row, turned over (VTK's row 0 is the bottom): one copy of each.
+  const size_t W = static_cast<size_t>(image->width);
+  uint8_t* rgbOut = rgb->WritePointer(0, 3 * n);
+  float* linearOut = linear->WritePointer(0, 3 * n);
+  uint8_t* coveredOut = covered->WritePointer(0, n);
   for (int y = 0; y < image->height; ++y)
   {
-    const size_t src = static_cast<size_t>(image->height - 1 - y) * image->width;
-    for (int x = 0; x < image->width; ++x)
-    {
-      const vtkIdType dst = static_cast<vtkIdType>(y) * image->width + x;
-      for (int c = 0; c < 3; ++c)
-      {
-        rgb->SetTypedComponent(dst, c, rgb8[3 * (src + x) + c]);
-        linear->SetTypedComponent(dst, c, image->rgb[3 * (src + x) + c]);
-      }
-      covered->SetValue(dst, image->covered[src + x]);
-    }
+    const size_t src = static_cast<size_t>(image->height - 1 - y) * W, dst = static_cast<size_t>(y) * W;
+    std::copy_n(rgb8.data() + 3 * src, 3 * W, rgbOut + 3 * dst);
+    std::copy_n(image->rgb.data() + 3 * src, 3 * W, linearOut + 3 * dst);
+    std::copy_n(image->covered.data() + src, W, coveredOut + dst);
   }
   output->GetPointData()->SetScalars(rgb);
   output->GetPointData()->AddArray(linear);

@@ -72,6 +72,7 @@ struct vtkShadingLabOpenGLPolyDataMapper::Internals
   int AutoWeighting = -1; ///< the NormalWeighting AutoNormals were made with
   int Drawn = PHONG;
   std::string AutoChoice;
+  bool WarnedFlatProperty = false; ///< the Flat-property warning was given
   /// What the last choice was made from (input, mapper, camera and light
   /// modification times, lights on, renderer size, budget): a render that
   /// changes none of them keeps it (the choice costs ~10-35 ms on meshes of
@@ -349,6 +350,17 @@ void vtkShadingLabOpenGLPolyDataMapper::RenderPieceStart(vtkRenderer* ren, vtkAc
     this->ChooseAutoMode(ren, this->CurrentInput);
   }
   this->CurrentInput = this->PrepareInput(this->CurrentInput);
+  // VTK uploads no point normals for a property interpolated Flat (its
+  // buffer building reads the property), and the smooth modes' shaders
+  // need them: said once, not a blank surface without a word.
+  if (act->GetProperty()->GetInterpolation() == VTK_FLAT && this->GetDrawnMode() != FLAT &&
+    !this->Internal->WarnedFlatProperty)
+  {
+    vtkWarningMacro("the actor's property is interpolated Flat: VTK then uploads no point normals, "
+                    "and the ShadingLab modes other than FLAT cannot draw; set the property's "
+                    "interpolation to Gouraud (the ShadingLab mode decides the shading)");
+    this->Internal->WarnedFlatProperty = true;
+  }
   this->Superclass::RenderPieceStart(ren, act);
 }
 

@@ -51,7 +51,9 @@ def render(
     normals, a smooth mode draws weighted normals split at the feature
     angle, as the command line, so the picture is the command line's for
     the same settings. Raises ValueError (the settings table's one-line
-    message) for a refused setting and RuntimeError when the render fails.
+    message) for a refused setting or request (fast-phong with a
+    Cook-Torrance material, no such array to colour by) and RuntimeError
+    when the render fails.
 
     Settings (the settings table):
     """
@@ -72,7 +74,7 @@ def render(
     renderer.Update()
     error = renderer.GetLastError()
     if error:
-        raise RuntimeError(error)
+        raise (ValueError if renderer.GetLastErrorIsRequest() else RuntimeError)(error)
     image = renderer.GetOutput()
     array = image.GetPointData().GetArray("RGB" if output == "display" else "LinearRGB")
     # A view of the VTK array (it keeps the array alive), rows turned over:

@@ -6,7 +6,8 @@ or PyVista colour map name), ``clim``, ``show_scalar_bar``, ``opacity``,
 ``color`` (the albedo without scalars), ``name``, ``reset_camera``. What
 does not: ``style`` (the surface is drawn; no wireframe or points), the
 lighting keywords (``ambient``, ``diffuse``, ``specular``, ``smooth_shading``,
-``pbr``: the material and mode settings replace them), ``show_edges``,
+``pbr``: the material and mode settings replace them; the property is
+interpolated Gouraud so that VTK uploads the normals), ``show_edges``,
 ``texture``. Anything else is a ShadingLab setting (the settings table).
 """
 
@@ -72,6 +73,10 @@ def add_mesh(plotter: Any, mesh: Any, mode: str = "gouraud", material: Optional[
         mapper.SetLookupTable(table)
         mapper.SetUseLookupTableScalarRange(True)
     actor = pyvista.Actor(mapper=mapper)
+    # PyVista's properties are interpolated Flat unless smooth_shading; VTK
+    # then uploads no point normals, which every ShadingLab mode but flat
+    # needs (the mode, not the property, decides the shading).
+    actor.prop.interpolation = "gouraud"
     if color is not None:
         actor.prop.color = color
     actor.prop.opacity = opacity

@@ -62,6 +62,11 @@ def test_bad_keyword_arguments_raise_the_tables_message():
         assert str(raised.value) == expected
     with pytest.raises(ValueError, match="unknown setting 'frobnicate'"):
         shadinglab.render(mesh, frobnicate=1)
+    # Requests the table cannot refuse alone: the renderer's one line.
+    with pytest.raises(ValueError, match="fast-phong evaluates"):
+        shadinglab.render(mesh, mode="fast-phong", model="cook-torrance", size=(32, 24))
+    with pytest.raises(ValueError, match="color-by"):
+        shadinglab.render(mesh, color_by="NoSuchArray", size=(32, 24))
 
 
 def test_the_image_is_a_view_of_the_renderers_array():

@@ -37,6 +37,7 @@ struct vtkSoftwareShadingRenderer::Internals
   sl::render::RenderStats Stats;
   bool Rendered = false;
   std::string Error;
+  bool ErrorIsRequest = false;
   std::string Model; ///< the last render's reflectance model
 };
 
@@ -103,6 +104,11 @@ vtkMTimeType vtkSoftwareShadingRenderer::GetMTime()
 std::string vtkSoftwareShadingRenderer::GetLastError() const
 {
   return this->Internal->Error;
+}
+
+bool vtkSoftwareShadingRenderer::GetLastErrorIsRequest() const
+{
+  return this->Internal->ErrorIsRequest;
 }
 
 std::string vtkSoftwareShadingRenderer::GetLastStatsJson() const
@@ -196,6 +202,7 @@ int vtkSoftwareShadingRenderer::RequestData(
   }
   Internals& in = *this->Internal;
   in.Error.clear();
+  in.ErrorIsRequest = false;
   // The settings: the object's, or this class's properties.
   sl::render::Settings settings;
   if (in.Settings)
@@ -303,6 +310,14 @@ int vtkSoftwareShadingRenderer::RequestData(
     image = &in.Renderer.Render(scene, options, &in.Stats);
     in.Stats.normalsComputed = in.Stats.normalsComputed || drawn != input;
     in.Rendered = true;
+  }
+  catch (const std::invalid_argument& e)
+  {
+    // An unusable request (mode and model, camera, colour by data).
+    in.Error = e.what();
+    in.ErrorIsRequest = true;
+    vtkErrorMacro(<< e.what());
+    return 0;
   }
   catch (const std::exception& e)
   {

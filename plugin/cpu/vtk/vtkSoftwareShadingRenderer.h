@@ -113,8 +113,11 @@ public:
   /// command line's `render --stats` ("mode", "polygons", "milliseconds",
   /// "pixels_covered", ...); "{}" before the first.
   std::string GetLastStatsJson() const;
-  /// Why the last render failed ("" when it did not).
+  /// Why the last render failed ("" when it did not), and whether the
+  /// request itself was unusable (the mode cannot evaluate the material's
+  /// model, no such array to colour by, ...) rather than the renderer failing.
   std::string GetLastError() const;
+  bool GetLastErrorIsRequest() const;
 
 #ifndef __VTK_WRAP__
   /// The illumination model's material (default: Blinn-Phong, kd 0.7, ks 0.3).

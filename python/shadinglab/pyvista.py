@@ -2,7 +2,7 @@
 
 What of PyVista's own ``Plotter.add_mesh`` carries over: ``scalars`` (a
 point or cell array's name, or an array of values), ``cmap`` (a Matplotlib
-or PyVista colour map name), ``clim``, ``show_scalar_bar``, ``opacity``,
+or PyVista colour map name), ``clim``, ``show_scalar_bar``, ``scalar_bar_args``, ``opacity``,
 ``color`` (the albedo without scalars), ``name``, ``reset_camera``. What
 does not: ``style`` (the surface is drawn; no wireframe or points), the
 lighting keywords (``ambient``, ``diffuse``, ``specular``, ``smooth_shading``,
@@ -20,7 +20,8 @@ from .shadinglabVTK import vtkShadingLabPolyDataMapper
 
 def add_mesh(plotter: Any, mesh: Any, mode: str = "gouraud", material: Optional[str] = "gold",
              scalars: Any = None, cmap: Any = None, clim: Any = None, color: Any = None,
-             opacity: float = 1.0, show_scalar_bar: Optional[bool] = None, name: Optional[str] = None,
+             opacity: float = 1.0, show_scalar_bar: Optional[bool] = None,
+             scalar_bar_args: Optional[dict] = None, name: Optional[str] = None,
              reset_camera: Optional[bool] = None, **settings: Any):
     """Adds ``mesh`` to ``plotter``, drawn by vtkShadingLabPolyDataMapper.
 
@@ -82,7 +83,7 @@ def add_mesh(plotter: Any, mesh: Any, mode: str = "gouraud", material: Optional[
     actor.prop.opacity = opacity
     plotter.add_actor(actor, name=name, reset_camera=reset_camera)
     if title is not None and (show_scalar_bar is None or show_scalar_bar):
-        plotter.add_scalar_bar(title=title, mapper=mapper)
+        plotter.add_scalar_bar(**dict({"title": title, "mapper": mapper}, **(scalar_bar_args or {})))
     return actor
 
 

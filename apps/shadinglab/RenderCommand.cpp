@@ -125,7 +125,8 @@ int RunRender(int argc, char** argv)
       stats.pixelsCovered ? double(stats.pixelsShaded) / stats.pixelsCovered : 0.0,
       static_cast<long long>(stats.fastPhongExact), stats.fastPhongAsPhong ? "true" : "false",
       stats.threads, stats.shaderBuilds,
-      stats.normalsComputed ? "true" : "false", request->readMs, request->prepareMs,
+      stats.normalsComputed || request->normalsMade ? "true" : "false", request->readMs,
+      request->prepareMs,
       stats.milliseconds, writeMs, total.Milliseconds(),
       stats.autoChoice.empty() ? "" : (",\"auto\":\"" + stats.autoChoice + "\"").c_str());
   }

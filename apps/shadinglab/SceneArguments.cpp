@@ -28,7 +28,8 @@ std::string SceneOptionsHelp()
 {
   return "Render options (from the settings table, shadinglab/render/Settings.h):\n" +
     render::CliHelp(render::SettingGroup::Render) +
-    "  --mode cook-torrance is phong with --model cook-torrance; --mode auto needs --max-error.\n"
+    "  --mode cook-torrance is phong with --model cook-torrance; --mode auto keeps the mean error\n"
+    "  under --max-error (default 1/255).\n"
     "  fast-phong expands N.L, N.H (blinn-phong) and N.V (phong: R.V = 2 N.L N.V - L.V) as\n"
     "  quadratics; it has no cook-torrance or lommel-seeliger form, and always interpolates in\n"
     "  screen space.\n"
@@ -90,10 +91,6 @@ void SettingsFromArguments(const Arguments& args, SceneArguments& scene)
   ApplySettingArguments(args, render::SettingGroup::Lights, settings);
   render::RenderOptions& options = settings.render;
   const bool autoMode = options.mode == render::ShadingMode::Auto;
-  if (autoMode && !args.Has("max-error"))
-  {
-    throw UsageError("--mode auto needs --max-error E (the mean error allowed, in 1/255)");
-  }
   if (!autoMode && args.Has("max-error"))
   {
     throw UsageError("--max-error is for --mode auto");
@@ -212,6 +209,7 @@ void ReadAndPrepare(const Arguments& args, const std::string& input, SceneArgume
     try
     {
       polydata = mesh::PrepareMesh(polydata, preparation, report);
+      scene.normalsMade = preparation.computeNormals;
     }
     catch (const std::invalid_argument& e)
     {

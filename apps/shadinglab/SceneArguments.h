@@ -40,6 +40,9 @@ struct SceneArguments
   render::ColorMap colorMap;
   std::string colorTitle;
   std::string notices; ///< said after success (errors stay one line)
+  /// Vertex normals were made for the input (none there, a smooth mode):
+  /// --stats reports them as computed, as the renderers' own.
+  bool normalsMade = false;
   double readMs = 0;    ///< reading (and checking) the input file
   double prepareMs = 0; ///< the repair check, repair, conversion
 };

@@ -462,6 +462,13 @@ TEST(CliTest, RenderUsesTheMeshFilters)
     " --light spot:0,0,3:0,0,-1:25:2 --light dir:1,0,0");
   ASSERT_EQ(r.status, 0) << r.err;
   EXPECT_NE(r.out.find("\"triangles\":1280"), std::string::npos) << r.out;
+  // The subdivision's limit normals are made for the render: computed.
+  EXPECT_NE(r.out.find("\"normals_computed\":true"), std::string::npos) << r.out;
+  // The default normals made for a mesh without them are reported too;
+  // flat shading makes none.
+  r = RunCli("render " + kData + "torus_24x12.vtp --backend cpu --size 64x48 --stats --out " + out);
+  EXPECT_NE(r.out.find("\"normals_computed\":true"), std::string::npos) << r.out;
+  r = RunCli("render " + kData + "torus_24x12.vtp --backend cpu --mode flat --size 64x48 --stats --out " + out);
   EXPECT_NE(r.out.find("\"normals_computed\":false"), std::string::npos) << r.out;
   r = RunCli("render " + kData + "cylinder_8.vtp --backend cpu --size 64x48 --normals max --feature-angle 40 --out " + out);
   ASSERT_EQ(r.status, 0) << r.err;
@@ -515,7 +522,11 @@ TEST(CliTest, AutoModeChoosesByTheErrorBudgetAndSaysWhy)
   // takes the most accurate and says so.
   EXPECT_NE(loose, "phong");
   EXPECT_EQ(tight, "phong");
-  for (const char* bad : { "--mode auto", "--mode auto --max-error 0", "--mode auto --max-error nan",
+  // Without --max-error, the table's default budget (1/255), as --help says.
+  const auto byDefault = RunCli("render " + in + " --backend cpu --mode auto --size 160x120 --stats --out " + out);
+  EXPECT_EQ(byDefault.status, 0) << byDefault.err;
+  EXPECT_NE(byDefault.out.find("\"auto\":\"normal spread"), std::string::npos) << byDefault.out;
+  for (const char* bad : { "--mode auto --max-error 0", "--mode auto --max-error nan",
          "--mode phong --max-error 1" })
   {
     const auto r = RunCli("render " + in + " --backend cpu " + bad + " --out " + out);

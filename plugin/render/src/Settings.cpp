@@ -304,6 +304,10 @@ std::string RangeText(const SettingRow& row)
   {
     return "on | off";
   }
+  if (row.kind == SettingKind::Text)
+  {
+    return row.metavar; // a name or a spelling: what the flag's value looks like
+  }
   return "[" + Number(row.min, 6) + ", " + Number(row.max, 6) + "]";
 }
 
@@ -335,17 +339,19 @@ std::string CliHelp(SettingGroup group)
     }
     std::string flag = "  --" + row.key + (row.kind == SettingKind::Flag ? "" : " " + row.metavar);
     std::string doc = row.doc;
-    if (row.kind == SettingKind::Choice || row.kind == SettingKind::Text)
+    // (A text setting's value is spelt by its metavar, beside the flag.)
+    if (row.kind == SettingKind::Choice || (row.kind == SettingKind::Text && !row.choices.empty()))
     {
       doc += ": " + RangeText(row);
     }
-    else if (row.kind != SettingKind::Flag)
+    else if (row.kind == SettingKind::Real || row.kind == SettingKind::Integer)
     {
       doc += "; " + RangeText(row);
     }
     if (row.kind != SettingKind::Flag)
     {
-      doc += " (default " + DefaultText(row) + ")";
+      const std::string byDefault = DefaultText(row);
+      doc += " (default " + (byDefault.empty() ? std::string("none") : byDefault) + ")";
     }
     std::string line = flag;
     if (line.size() + 1 > kFlagColumn)

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "MainWindow.h"
 
+#include "WheelGuard.h"
+
 #include "ColorLegend.h"
 
 #include "BrdfPlot.h"
@@ -132,6 +134,8 @@ MainWindow::MainWindow(const SceneOptions& options)
   scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
   rightDock->setWidget(scroll);
   rightDock->setFeatures(QDockWidget::NoDockWidgetFeatures);
+  // The wheel scrolls the dock; it changes a control only with its focus.
+  new widgets::WheelGuard(scroll);
   this->addDockWidget(Qt::RightDockWidgetArea, rightDock);
   this->BuildMenus();
 

@@ -31,4 +31,5 @@ private slots:
   void SpectralSceneShowsTheColourDifference();
   void CreasesAveragedCorrugationShadesFlat();
   void ScanlineInspectorShowsTheRenderersNumbers();
+  void WheelChangesAControlOnlyWithItsFocus();
 };

@@ -4,6 +4,14 @@
 #include "ExplorerGLTest.h"
 #include "ExplorerTestUtil.h"
 
+#include <QApplication>
+#include <QDockWidget>
+#include <QScrollArea>
+#include <QScrollBar>
+#include <QSlider>
+#include <QWheelEvent>
+#include <QtTest/QtTest>
+
 void ExplorerGLTest::MoonProfiles()
 {
   auto window = Open("moon", render::Backend::CPU);
@@ -179,4 +187,49 @@ void ExplorerGLTest::SpectralSceneShowsTheColourDifference()
   QVERIFY2(worst > 2.0, qPrintable(QString::number(worst)));
   const auto n = StudySeries(window->PlotCsv(), "gold n");
   QCOMPARE(static_cast<int>(n.size()), 81);
+}
+
+// The mouse wheel over the Controls dock scrolls the dock; a slider under
+// the pointer changes only once it has the focus (issue: scrolling changed
+// whatever passed under the pointer).
+void ExplorerGLTest::WheelChangesAControlOnlyWithItsFocus()
+{
+  auto window = Open("modes", render::Backend::CPU);
+  window->resize(1280, 720); // the dock must scroll
+  Settle();
+  auto* slider = window->Materials()->findChild<QSlider*>("shininess n");
+  QVERIFY(slider);
+  auto* scroll = qobject_cast<QScrollArea*>(window->findChild<QDockWidget*>()->widget());
+  const auto docks = window->findChildren<QDockWidget*>();
+  for (QDockWidget* dock : docks)
+  {
+    if (dock->windowTitle() == "Controls")
+    {
+      scroll = qobject_cast<QScrollArea*>(dock->widget());
+    }
+  }
+  QVERIFY(scroll && scroll->verticalScrollBar()->maximum() > 0);
+  slider->clearFocus();
+  window->setFocus();
+  Settle();
+  const int before = slider->value();
+  const int scrolled = scroll->verticalScrollBar()->value();
+  auto wheel = [&](QWidget* target) {
+    const QPoint at(target->width() / 2, target->height() / 2);
+    QWheelEvent event(QPointF(at), QPointF(target->mapToGlobal(at)), QPoint(), QPoint(0, -120),
+      Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+    QApplication::sendEvent(target, &event);
+    Settle();
+  };
+  wheel(slider);
+  QCOMPARE(slider->value(), before);
+  QVERIFY2(scroll->verticalScrollBar()->value() > scrolled,
+    qPrintable(QString("dock at %1, was %2").arg(scroll->verticalScrollBar()->value()).arg(scrolled)));
+  window->activateWindow();
+  QVERIFY(QTest::qWaitForWindowActive(window.get()));
+  slider->setFocus();
+  Settle();
+  QVERIFY(slider->hasFocus());
+  wheel(slider);
+  QVERIFY(slider->value() != before);
 }

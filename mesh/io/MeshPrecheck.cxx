@@ -158,6 +158,16 @@ void PrecheckObj(const std::string& path)
       throw MeshError("'" + path + "' starts with a UTF-8 byte-order mark, which VTK's OBJ reader "
                                    "mistakes for data: remove it");
     }
+    // UTF-16 (a byte-order mark, or the NUL bytes of its ASCII characters):
+    // every keyword would be unknown, and the file read as an empty mesh.
+    const bool utf16Mark = number == 1 && line.size() >= 2 &&
+      ((static_cast<unsigned char>(line[0]) == 0xFF && static_cast<unsigned char>(line[1]) == 0xFE) ||
+        (static_cast<unsigned char>(line[0]) == 0xFE && static_cast<unsigned char>(line[1]) == 0xFF));
+    if (utf16Mark || (number <= 2 && line.find('\0') != std::string::npos))
+    {
+      throw MeshError("'" + path + "' is UTF-16 text (NUL bytes between its characters): OBJ is "
+                                   "ASCII or UTF-8; save it as UTF-8");
+    }
     std::istringstream tokens(line);
     std::string keyword;
     tokens >> keyword;

@@ -27,6 +27,8 @@ write('obj_index_zero.obj', TRI + 'f 0 1 2\n')
 write('obj_negative_before_start.obj', TRI + 'f -1 -2 -9\n')
 write('obj_huge_index.obj', TRI + 'f 1 2 4000000000\n')
 write('obj_bom.obj', '\ufeff' + TRI + 'f 1 2 3\n')
+write('obj_utf16.obj', (TRI + 'f 1 2 3\n').encode('utf-16'))  # with its byte-order mark
+write('obj_utf16_be_no_mark.obj', (TRI + 'f 1 2 3\n').encode('utf-16-be'))
 write('obj_nan.obj', 'v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n')
 write('obj_inf.obj', 'v 0 0 0\nv 1 inf 0\nv 0 1 0\nf 1 2 3\n')
 write('obj_empty_face.obj', TRI + 'f\n')

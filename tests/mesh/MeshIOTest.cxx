@@ -67,6 +67,28 @@ TEST(MeshIOTest, GarbageInEveryFormat)
   }
 }
 
+TEST(MeshIOTest, Utf16ObjIsNamedNotEmpty)
+{
+  // A triangle saved as UTF-16 (little and big endian, with and without the
+  // byte-order mark) by an editor: named as such, not "empty mesh".
+  const std::string text = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  for (const bool little : { true, false })
+  {
+    for (const bool mark : { true, false })
+    {
+      std::string bytes = mark ? (little ? std::string("\xFF\xFE") : std::string("\xFE\xFF")) : "";
+      for (const char c : text)
+      {
+        bytes += little ? std::string{ c, '\0' } : std::string{ '\0', c };
+      }
+      const std::string err = ErrorOf(TempFile(std::string("utf16_") + (little ? "le" : "be") +
+          (mark ? "_bom" : "") + ".obj", bytes));
+      EXPECT_NE(err.find("UTF-16"), std::string::npos) << little << mark << ": " << err;
+      EXPECT_EQ(err.find('\n'), std::string::npos) << err;
+    }
+  }
+}
+
 TEST(MeshIOTest, NaNCoordinatesAreRejected)
 {
   const std::string err =

@@ -73,6 +73,7 @@ struct vtkShadingLabOpenGLPolyDataMapper::Internals
   int Drawn = PHONG;
   std::string AutoChoice;
   bool WarnedFlatProperty = false; ///< the Flat-property warning was given
+  bool WarnedNoForm = false;        ///< the FAST_PHONG-without-a-form warning, since the settings changed
   /// What the last choice was made from (input, mapper, camera and light
   /// modification times, lights on, renderer size, budget): a render that
   /// changes none of them keeps it (the choice costs ~10-35 ms on meshes of
@@ -123,6 +124,7 @@ void vtkShadingLabOpenGLPolyDataMapper::SetSettings(const sl::render::Settings& 
   current = settings;
   if (modified)
   {
+    this->Internal->WarnedNoForm = false;
     this->Modified();
   }
 }
@@ -444,9 +446,11 @@ void vtkShadingLabOpenGLPolyDataMapper::ReplaceShaderValues(
   std::map<vtkShader::Type, vtkShader*> shaders, vtkRenderer* ren, vtkActor* act)
 {
   ++this->ShaderBuildCount;
-  if (this->EffectiveMode() != this->GetDrawnMode())
+  if (this->EffectiveMode() != this->GetDrawnMode() && !this->Internal->WarnedNoForm)
   {
-    // Said once per shader build, not per frame: not a silent substitution.
+    // Said once per settings change (not per shader build: a mesh with
+    // several primitive kinds builds several): not a silent substitution.
+    this->Internal->WarnedNoForm = true;
     vtkWarningMacro("FAST_PHONG has no Cook-Torrance form (it expands N.L, N.H and N.V); "
                     "evaluating Cook-Torrance per fragment (PHONG)");
   }

@@ -169,6 +169,18 @@ void Property(std::ostream& out, const sr::SettingRow& row)
           << "\" number_of_elements=\"" << n << "\" default_values=\"" << Numbers(def.numbers, n)
           << "\">\n        <DoubleRangeDomain name=\"range\" min=\"" << Repeat(lo.str(), n)
           << "\" max=\"" << Repeat(hi.str(), n) << "\"/>\n";
+      if (row.key == "max-error")
+      {
+        // The budget is auto mode's: shown only while the mode is Auto.
+        const sr::SettingRow* mode = sr::FindSetting("mode");
+        size_t autoIndex = 0;
+        while (autoIndex < mode->choices.size() && mode->choices[autoIndex].key != "auto")
+        {
+          ++autoIndex;
+        }
+        out << "        <Hints><PropertyWidgetDecorator type=\"GenericDecorator\" mode=\"visibility\" "
+               "property=\"" << mode->property << "\" value=\"" << autoIndex << "\"/></Hints>\n";
+      }
       out << "        <Documentation>" << Documentation(row) << "</Documentation>\n"
           << "      </DoubleVectorProperty>\n";
       break;

@@ -85,15 +85,16 @@ int vtkWeightedPolyDataNormals::RequestData(
 
   const vtkIdType nIn = source->GetNumberOfPoints();
   const vtkIdType nOut = static_cast<vtkIdType>(result.originalPointIds.size());
-  vtkNew<vtkPoints> points;
-  points->SetDataType(source->GetPoints()->GetDataType());
-  points->SetNumberOfPoints(nOut);
+  vtkSmartPointer<vtkPoints> points;
   vtkPointData* inPD = source->GetPointData();
   vtkPointData* outPD = output->GetPointData();
   if (nOut == nIn)
   {
-    // No split: points and point data are shared with the input as they are.
-    points->ShallowCopy(source->GetPoints());
+    // No split: the input's points object and point data shared as they are
+    // (the vtkPoints itself: a new one ShallowCopy'd from it calls Modified,
+    // which vtkPoints passes to the shared data array, and the input's
+    // modification time moved).
+    points = source->GetPoints();
     outPD->PassData(inPD);
     outPD->SetNormals(nullptr);
   }
@@ -101,6 +102,9 @@ int vtkWeightedPolyDataNormals::RequestData(
   {
     // The first nIn output points are the input points in order; split
     // copies follow.
+    points = vtkSmartPointer<vtkPoints>::New();
+    points->SetDataType(source->GetPoints()->GetDataType());
+    points->SetNumberOfPoints(nOut);
     points->GetData()->InsertTuples(0, nIn, 0, source->GetPoints()->GetData());
     outPD->CopyNormalsOff();
     outPD->CopyAllocate(inPD, nOut);

@@ -356,3 +356,28 @@ TEST(NormalsTest, AngleWeightsAgreeOnBothSimdWidthsAndWithTheCornerFormula)
     EXPECT_NEAR(wide[i], general.normals[i], 2e-7) << i;
   }
 }
+
+// Filters never modify their input, its modification time included (a moved
+// time re-executes every pipeline downstream of it): split or not, on the
+// input or on a shallow copy of it (the mapper's and the CPU renderer's use).
+TEST(NormalsTest, InputKeepsItsModificationTime)
+{
+  for (const double featureAngle : { 30.0, 180.0 })
+  {
+    vtkSmartPointer<vtkPolyData> mesh;
+    mesh.TakeReference(shadinglab::datasets::MakeIcosphere(2));
+    const vtkMTimeType before = mesh->GetMTime();
+    for (const bool viaCopy : { false, true })
+    {
+      vtkNew<vtkPolyData> copy;
+      copy->ShallowCopy(mesh);
+      vtkNew<vtkWeightedPolyDataNormals> normals;
+      normals->SetInputData(viaCopy ? copy.GetPointer() : mesh.GetPointer());
+      normals->SetFeatureAngle(featureAngle);
+      normals->ConsistencyOn();
+      normals->Update();
+      ASSERT_NE(normals->GetOutput()->GetPointData()->GetNormals(), nullptr);
+      EXPECT_EQ(mesh->GetMTime(), before) << featureAngle << " " << viaCopy;
+    }
+  }
+}

@@ -189,21 +189,75 @@ int vtkSoftwareShadingRenderer::RequestInformation(
   return 1;
 }
 
-int vtkSoftwareShadingRenderer::RequestData(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+namespace
 {
-  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
-  vtkImageData* output = vtkImageData::GetData(outputVector, 0);
-  if (!input || input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0)
+
+/// The input to draw for `settings`: a smooth mode draws the input's
+/// normals or (none, or asked to) the settings' weighted normals split at
+/// creases, as the command line and the mapper do; made on a copy: the
+/// input is never modified.
+vtkSmartPointer<vtkPolyData> WithNormals(vtkPolyData* input, const sl::render::Settings& settings)
+{
+  vtkSmartPointer<vtkPolyData> drawn = input;
+  const sl::render::NormalSettings& made = settings.normals;
+  if (settings.render.mode != sl::render::ShadingMode::Flat &&
+    (!input->GetPointData()->GetNormals() || made.recompute))
   {
-    this->Internal->Error = "input has no polygons";
-    vtkErrorMacro("input has no polygons");
-    return 0;
+    vtkNew<vtkPolyData> copy;
+    copy->ShallowCopy(input);
+    vtkNew<vtkWeightedPolyDataNormals> normals;
+    normals->SetInputData(copy);
+    normals->SetWeighting(made.weighting);
+    normals->SetFeatureAngle(made.featureAngle);
+    normals->SetSplitting(made.featureAngle < 180.0);
+    normals->ConsistencyOn();
+    normals->Update();
+    drawn = normals->GetOutput();
   }
-  Internals& in = *this->Internal;
-  in.Error.clear();
-  in.ErrorIsRequest = false;
-  // The settings: the object's, or this class's properties.
+  return drawn;
+}
+
+/// The image as the output's point data, rows turned over (VTK's row 0 is
+/// the bottom): "RGB" (display bytes, the scalars), "LinearRGB", "Covered".
+void FillOutput(vtkImageData* output, const sl::render::Image& frame, sl::render::DisplayTransform display)
+{
+  const sl::render::Image* image = &frame;
+  output->SetExtent(0, image->width - 1, 0, image->height - 1, 0, 0);
+  const vtkIdType n = static_cast<vtkIdType>(image->width) * image->height;
+  const std::vector<uint8_t> rgb8 = image->ToRGB8(display);
+  vtkNew<vtkUnsignedCharArray> rgb;
+  rgb->SetName("RGB");
+  rgb->SetNumberOfComponents(3);
+  rgb->SetNumberOfTuples(n);
+  vtkNew<vtkFloatArray> linear;
+  linear->SetName("LinearRGB");
+  linear->SetNumberOfComponents(3);
+  linear->SetNumberOfTuples(n);
+  vtkNew<vtkUnsignedCharArray> covered;
+  covered->SetName("Covered");
+  covered->SetNumberOfTuples(n);
+  // Row by row, turned over (VTK's row 0 is the bottom): one copy of each.
+  const size_t W = static_cast<size_t>(image->width);
+  uint8_t* rgbOut = rgb->WritePointer(0, 3 * n);
+  float* linearOut = linear->WritePointer(0, 3 * n);
+  uint8_t* coveredOut = covered->WritePointer(0, n);
+  for (int y = 0; y < image->height; ++y)
+  {
+    const size_t src = static_cast<size_t>(image->height - 1 - y) * W, dst = static_cast<size_t>(y) * W;
+    std::copy_n(rgb8.data() + 3 * src, 3 * W, rgbOut + 3 * dst);
+    std::copy_n(image->rgb.data() + 3 * src, 3 * W, linearOut + 3 * dst);
+    std::copy_n(image->covered.data() + src, W, coveredOut + dst);
+  }
+  output->GetPointData()->SetScalars(rgb);
+  output->GetPointData()->AddArray(linear);
+  output->GetPointData()->AddArray(covered);
+}
+
+} // namespace
+
+sl::render::Settings vtkSoftwareShadingRenderer::CurrentSettings() const
+{
+  const Internals& in = *this->Internal;
   sl::render::Settings settings;
   if (in.Settings)
   {
@@ -221,28 +275,28 @@ int vtkSoftwareShadingRenderer::RequestData(
     settings.render.threads = this->NumberOfThreads;
     settings.material = in.Material;
   }
+  return settings;
+}
+
+int vtkSoftwareShadingRenderer::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkPolyData* input = vtkPolyData::GetData(inputVector[0], 0);
+  vtkImageData* output = vtkImageData::GetData(outputVector, 0);
+  if (!input || input->GetNumberOfPolys() + input->GetNumberOfStrips() == 0)
+  {
+    this->Internal->Error = "input has no polygons";
+    vtkErrorMacro("input has no polygons");
+    return 0;
+  }
+  Internals& in = *this->Internal;
+  in.Error.clear();
+  in.ErrorIsRequest = false;
+  const sl::render::Settings settings = this->CurrentSettings();
   sl::render::RenderOptions options = settings.render;
   options.width = this->Size[0];
   options.height = this->Size[1];
-  // A smooth mode draws the input's normals or (none, or asked to) the
-  // settings' weighted normals split at creases, as the command line and
-  // the mapper do; on a copy: the input is never modified.
-  vtkSmartPointer<vtkPolyData> drawn = input;
-  const sl::render::NormalSettings& made = settings.normals;
-  if (options.mode != sl::render::ShadingMode::Flat &&
-    (!input->GetPointData()->GetNormals() || made.recompute))
-  {
-    vtkNew<vtkPolyData> copy;
-    copy->ShallowCopy(input);
-    vtkNew<vtkWeightedPolyDataNormals> normals;
-    normals->SetInputData(copy);
-    normals->SetWeighting(made.weighting);
-    normals->SetFeatureAngle(made.featureAngle);
-    normals->SetSplitting(made.featureAngle < 180.0);
-    normals->ConsistencyOn();
-    normals->Update();
-    drawn = normals->GetOutput();
-  }
+  vtkSmartPointer<vtkPolyData> drawn = WithNormals(input, settings);
   // The mesh in a local frame (centred, unit size), the camera fitted to
   // it or converted from the vtkCamera, and the lights: as the command line.
   sl::render::WorldFrame frame;
@@ -325,35 +379,7 @@ int vtkSoftwareShadingRenderer::RequestData(
     vtkErrorMacro(<< e.what());
     return 0;
   }
-  output->SetExtent(0, image->width - 1, 0, image->height - 1, 0, 0);
-  const vtkIdType n = static_cast<vtkIdType>(image->width) * image->height;
-  const std::vector<uint8_t> rgb8 = image->ToRGB8(options.display);
-  vtkNew<vtkUnsignedCharArray> rgb;
-  rgb->SetName("RGB");
-  rgb->SetNumberOfComponents(3);
-  rgb->SetNumberOfTuples(n);
-  vtkNew<vtkFloatArray> linear;
-  linear->SetName("LinearRGB");
-  linear->SetNumberOfComponents(3);
-  linear->SetNumberOfTuples(n);
-  vtkNew<vtkUnsignedCharArray> covered;
-  covered->SetName("Covered");
-  covered->SetNumberOfTuples(n);
-  // Row by row, turned over (VTK's row 0 is the bottom): one copy of each.
-  const size_t W = static_cast<size_t>(image->width);
-  uint8_t* rgbOut = rgb->WritePointer(0, 3 * n);
-  float* linearOut = linear->WritePointer(0, 3 * n);
-  uint8_t* coveredOut = covered->WritePointer(0, n);
-  for (int y = 0; y < image->height; ++y)
-  {
-    const size_t src = static_cast<size_t>(image->height - 1 - y) * W, dst = static_cast<size_t>(y) * W;
-    std::copy_n(rgb8.data() + 3 * src, 3 * W, rgbOut + 3 * dst);
-    std::copy_n(image->rgb.data() + 3 * src, 3 * W, linearOut + 3 * dst);
-    std::copy_n(image->covered.data() + src, W, coveredOut + dst);
-  }
-  output->GetPointData()->SetScalars(rgb);
-  output->GetPointData()->AddArray(linear);
-  output->GetPointData()->AddArray(covered);
+  FillOutput(output, *image, options.display);
   return 1;
 }
 

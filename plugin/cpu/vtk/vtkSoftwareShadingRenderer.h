@@ -38,6 +38,12 @@
 
 class vtkCamera;
 class vtkShadingLabSettings;
+#ifndef __VTK_WRAP__
+namespace shadinglab::render
+{
+struct Settings;
+}
+#endif
 
 class SHADINGLABCPUVTK_EXPORT vtkSoftwareShadingRenderer : public vtkImageAlgorithm
 {
@@ -148,6 +154,10 @@ protected:
 
 private:
   vtkSoftwareShadingRenderer(const vtkSoftwareShadingRenderer&) = delete;
+#ifndef __VTK_WRAP__
+  /// The settings object's, or this class's properties (and the material).
+  shadinglab::render::Settings CurrentSettings() const;
+#endif
   void operator=(const vtkSoftwareShadingRenderer&) = delete;
 
   struct Internals;

@@ -192,6 +192,44 @@ vtkDataArray* FindField(vtkPolyData* pd, const ScalarField& field, bool& cells)
   return array;
 }
 
+/// `field`'s values into mesh.scalars (point data) or mesh.cellScalars
+/// (cell data, following the polygons the conversion made: `polygonOf`),
+/// and its finite values' range (see MeshFromPolyData).
+void CopyField(vtkPolyData* pd, const ScalarField& field, const std::vector<vtkIdType>& polygonOf,
+  Mesh& mesh, double* range)
+{
+  const vtkIdType np = pd->GetNumberOfPoints();
+  bool cells = false;
+  vtkDataArray* array = FindField(pd, field, cells);
+  std::vector<float>& out = cells ? mesh.cellScalars : mesh.scalars;
+  // Cell data counts verts and lines before the polygons.
+  const vtkIdType firstPolygon = pd->GetNumberOfVerts() + pd->GetNumberOfLines();
+  const size_t n = cells ? polygonOf.size() : static_cast<size_t>(np);
+  out.resize(n);
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (size_t i = 0; i < n; ++i)
+  {
+    const vtkIdType tuple =
+      cells ? firstPolygon + polygonOf[i] : static_cast<vtkIdType>(i);
+    const double v = ValueOf(array, tuple, field.component);
+    out[i] = static_cast<float>(v);
+    if (std::isfinite(v))
+    {
+      lo = std::min(lo, v);
+      hi = std::max(hi, v);
+    }
+  }
+  range[0] = lo <= hi ? lo : 0.0;
+  range[1] = lo <= hi ? hi : 1.0;
+  const double ulp = std::numeric_limits<float>::epsilon() *
+    std::max(std::abs(range[0]), std::abs(range[1]));
+  if (range[1] - range[0] <= kConstantFieldUlps * ulp)
+  {
+    // Constant up to rounding: one value, drawn as a constant field is.
+    range[0] = range[1] = 0.5 * (range[0] + range[1]);
+  }
+}
+
 Mesh Convert(vtkPolyData* input, WorldFrame& frame, bool normalize, const ScalarField* field,
   double* range)
 {
@@ -300,35 +338,7 @@ Mesh Convert(vtkPolyData* input, WorldFrame& frame, bool normalize, const Scalar
   }
   if (field)
   {
-    bool cells = false;
-    vtkDataArray* array = FindField(pd, *field, cells);
-    std::vector<float>& out = cells ? mesh.cellScalars : mesh.scalars;
-    // Cell data counts verts and lines before the polygons.
-    const vtkIdType firstPolygon = pd->GetNumberOfVerts() + pd->GetNumberOfLines();
-    const size_t n = cells ? polygonOf.size() : static_cast<size_t>(np);
-    out.resize(n);
-    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-    for (size_t i = 0; i < n; ++i)
-    {
-      const vtkIdType tuple =
-        cells ? firstPolygon + polygonOf[i] : static_cast<vtkIdType>(i);
-      const double v = ValueOf(array, tuple, field->component);
-      out[i] = static_cast<float>(v);
-      if (std::isfinite(v))
-      {
-        lo = std::min(lo, v);
-        hi = std::max(hi, v);
-      }
-    }
-    range[0] = lo <= hi ? lo : 0.0;
-    range[1] = lo <= hi ? hi : 1.0;
-    const double ulp = std::numeric_limits<float>::epsilon() *
-      std::max(std::abs(range[0]), std::abs(range[1]));
-    if (range[1] - range[0] <= kConstantFieldUlps * ulp)
-    {
-      // Constant up to rounding: one value, drawn as a constant field is.
-      range[0] = range[1] = 0.5 * (range[0] + range[1]);
-    }
+    CopyField(pd, *field, polygonOf, mesh, range);
   }
   // Cell normals apply to polygons only when the polydata has no verts or
   // lines before them in cell order.

@@ -224,7 +224,6 @@ void FillOutput(vtkImageData* output, const sl::render::Image& frame, sl::render
   const sl::render::Image* image = &frame;
   output->SetExtent(0, image->width - 1, 0, image->height - 1, 0, 0);
   const vtkIdType n = static_cast<vtkIdType>(image->width) * image->height;
-  const std::vector<uint8_t> rgb8 = image->ToRGB8(display);
   vtkNew<vtkUnsignedCharArray> rgb;
   rgb->SetName("RGB");
   rgb->SetNumberOfComponents(3);
@@ -236,7 +235,8 @@ void FillOutput(vtkImageData* output, const sl::render::Image& frame, sl::render
   vtkNew<vtkUnsignedCharArray> covered;
   covered->SetName("Covered");
   covered->SetNumberOfTuples(n);
-  // Row by row, turned over (VTK's row 0 is the bottom): one copy of each.
+  // Row by row, turned over (VTK's row 0 is the bottom), straight into the
+  // arrays: the frame's one copy.
   const size_t W = static_cast<size_t>(image->width);
   uint8_t* rgbOut = rgb->WritePointer(0, 3 * n);
   float* linearOut = linear->WritePointer(0, 3 * n);
@@ -244,7 +244,7 @@ void FillOutput(vtkImageData* output, const sl::render::Image& frame, sl::render
   for (int y = 0; y < image->height; ++y)
   {
     const size_t src = static_cast<size_t>(image->height - 1 - y) * W, dst = static_cast<size_t>(y) * W;
-    std::copy_n(rgb8.data() + 3 * src, 3 * W, rgbOut + 3 * dst);
+    image->ToRGB8(display, src, W, rgbOut + 3 * dst); // display bytes, made in place
     std::copy_n(image->rgb.data() + 3 * src, 3 * W, linearOut + 3 * dst);
     std::copy_n(image->covered.data() + src, W, coveredOut + dst);
   }

@@ -62,23 +62,27 @@ const char* DisplayTransformName(DisplayTransform transform)
 
 std::vector<uint8_t> Image::ToRGB8(DisplayTransform transform) const
 {
+  std::vector<uint8_t> out(this->rgb.size());
+  this->ToRGB8(transform, 0, this->rgb.size() / 3, out.data());
+  return out;
+}
+
+void Image::ToRGB8(DisplayTransform transform, size_t first, size_t count, uint8_t* out) const
+{
   if (this->displayApplied && transform != this->appliedDisplay)
   {
     throw std::logic_error(std::string("the image went through display '") +
       DisplayTransformName(this->appliedDisplay) + "' already, not '" +
       DisplayTransformName(transform) + "'");
   }
-  std::vector<uint8_t> out(this->rgb.size());
-  const size_t n = this->rgb.size() / 3;
-  for (size_t i = 0; i < n; ++i)
+  for (size_t i = first; i < first + count; ++i)
   {
     Vec3<float> c(this->rgb[3 * i], this->rgb[3 * i + 1], this->rgb[3 * i + 2]);
     c = this->displayApplied ? ApplyDisplay(DisplayTransform::Clamp, c) : ApplyDisplay(transform, c);
-    out[3 * i] = ToByte(c.x);
-    out[3 * i + 1] = ToByte(c.y);
-    out[3 * i + 2] = ToByte(c.z);
+    out[3 * (i - first)] = ToByte(c.x);
+    out[3 * (i - first) + 1] = ToByte(c.y);
+    out[3 * (i - first) + 2] = ToByte(c.z);
   }
-  return out;
 }
 
 } // namespace shadinglab::render

@@ -45,6 +45,9 @@ struct Image
   /// display transform is only quantized; asking it for another transform
   /// throws std::logic_error (a caller's bug: render with that transform).
   std::vector<uint8_t> ToRGB8(DisplayTransform transform) const;
+  /// The same for `count` pixels from pixel `first`, written to `out`
+  /// (3 bytes a pixel): a caller's own buffer, row by row.
+  void ToRGB8(DisplayTransform transform, size_t first, size_t count, uint8_t* out) const;
 };
 
 /**

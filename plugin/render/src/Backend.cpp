@@ -66,15 +66,19 @@ std::string GlRendererFromReport(const char* report)
 BackendChoice ChooseBackend(Backend requested, const BackendFacts& facts)
 {
   BackendChoice choice;
-  if (!facts.cpuOnly.empty())
-  {
+  // The CPU for `reason`: a conflict when the GPU was asked for.
+  auto onCpu = [&](const std::string& reason) {
     choice.backend = Backend::CPU;
-    choice.why = "cpu: " + facts.cpuOnly;
+    choice.why = "cpu: " + reason;
     if (requested == Backend::GPU)
     {
-      choice.conflict = facts.cpuOnly;
+      choice.conflict = reason;
     }
     return choice;
+  };
+  if (!facts.cpuOnly.empty())
+  {
+    return onCpu(facts.cpuOnly);
   }
   if (requested == Backend::CPU)
   {
@@ -84,13 +88,7 @@ BackendChoice ChooseBackend(Backend requested, const BackendFacts& facts)
   }
   if (!facts.glUsable)
   {
-    choice.backend = Backend::CPU;
-    choice.why = "cpu: " + facts.glProblem;
-    if (requested == Backend::GPU)
-    {
-      choice.conflict = facts.glProblem;
-    }
-    return choice;
+    return onCpu(facts.glProblem);
   }
   if (requested == Backend::GPU)
   {

@@ -8,6 +8,7 @@
 #include "shadinglab/model/Vec3.h"
 
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace shadinglab::mesh
@@ -62,6 +63,35 @@ template <typename T>
 Vec3<T> PointOf(const T* points, int64_t i)
 {
   return Vec3<T>(points[3 * i], points[3 * i + 1], points[3 * i + 2]);
+}
+
+/// The axis-aligned box (xmin, xmax, ymin, ymax, zmin, zmax) of n points
+/// given as 3 T each, NaN coordinates skipped as vtkPoints::GetBounds
+/// skips them; an empty box (min > max) for none. One pass, no VTK: the
+/// readers' check and the renderers' conversion of 16M-point meshes.
+template <typename T>
+void PointBox(const T* xyz, int64_t n, double box[6])
+{
+  T lo[3], hi[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    lo[c] = std::numeric_limits<T>::infinity();
+    hi[c] = -lo[c];
+  }
+  for (int64_t i = 0; i < n; ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const T v = xyz[3 * i + c];
+      lo[c] = v < lo[c] ? v : lo[c]; // NaN compares false: skipped
+      hi[c] = v > hi[c] ? v : hi[c];
+    }
+  }
+  for (int c = 0; c < 3; ++c)
+  {
+    box[2 * c] = static_cast<double>(lo[c]);
+    box[2 * c + 1] = static_cast<double>(hi[c]);
+  }
 }
 
 /// Root of v's set in a union-find forest (parent[v] == v at a root), with

@@ -3,6 +3,7 @@
 
 #include "VtkCompat.h"
 
+#include "FastReaders.h"
 #include "MeshPrecheck.h"
 #include "CompositeIO.h"
 
@@ -18,6 +19,7 @@
 #include <vtkUnsignedCharArray.h>
 #include <vtkPointData.h>
 #include <vtkDoubleArray.h>
+#include <vtkFloatArray.h>
 #include <vtkLogger.h>
 #include <vtkNew.h>
 #include <vtkOBJReader.h>
@@ -314,6 +316,69 @@ vtkSmartPointer<vtkPolyData> ReadWith(const std::string& path)
   return out;
 }
 
+/// The cell checks of ValidateMesh on 64-bit storage read in place (every
+/// reader's default): false when the storage is another, for the general
+/// loop to check.
+bool CheckCellsInPlace(vtkCellArray* cells, bool polys, vtkIdType np)
+{
+  using Int64Array = vtkAOSDataArrayTemplate<vtkTypeInt64>;
+  auto* offsets = Int64Array::SafeDownCast(cells->GetOffsetsArray());
+  auto* connectivity = Int64Array::SafeDownCast(cells->GetConnectivityArray());
+  if (!offsets || !connectivity)
+  {
+    return false;
+  }
+  const vtkTypeInt64* o = offsets->GetPointer(0);
+  const vtkTypeInt64* ids = connectivity->GetPointer(0);
+  const vtkIdType n = cells->GetNumberOfCells();
+  for (vtkIdType c = 0; c < n; ++c)
+  {
+    const vtkTypeInt64 size = o[c + 1] - o[c];
+    bool inRange = true;
+    for (vtkTypeInt64 k = o[c]; k < o[c + 1]; ++k)
+    {
+      inRange &= ids[k] >= 0 && ids[k] < np;
+    }
+    if ((polys && size < 3) || !inRange)
+    {
+      return false; // the general loop names the cell
+    }
+  }
+  return true;
+}
+
+/// The first point with a non-finite coordinate, read in place from float
+/// or double points, and their box; the number of points when there is
+/// none. Points of another type: 0 and false, for the caller's loop to
+/// check each and VTK to bound them.
+bool ScanPoints(vtkPoints* points, vtkIdType& firstNonFinite, double box[6])
+{
+  const vtkIdType n = points->GetNumberOfPoints();
+  auto scan = [&](const auto* xyz) {
+    firstNonFinite = n;
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      if (!std::isfinite(xyz[3 * i]) || !std::isfinite(xyz[3 * i + 1]) || !std::isfinite(xyz[3 * i + 2]))
+      {
+        firstNonFinite = i;
+        break;
+      }
+    }
+    mesh::PointBox(xyz, n, box);
+    return true;
+  };
+  if (auto* f = vtkFloatArray::SafeDownCast(points->GetData()))
+  {
+    return scan(f->GetPointer(0));
+  }
+  if (auto* d = vtkDoubleArray::SafeDownCast(points->GetData()))
+  {
+    return scan(d->GetPointer(0));
+  }
+  firstNonFinite = 0;
+  return false;
+}
+
 } // namespace
 
 void ValidateMesh(vtkPolyData* mesh, const std::string& what)
@@ -337,6 +402,10 @@ void ValidateMesh(vtkPolyData* mesh, const std::string& what)
       throw MeshError("malformed cells in '" + what + "': their offsets do not match their "
                       "connectivity (truncated or corrupt)");
     }
+    if (CheckCellsInPlace(cells, polys, np))
+    {
+      continue;
+    }
     for (vtkIdType c = 0; c < cells->GetNumberOfCells(); ++c)
     {
       cells->GetCellAtId(c, ids);
@@ -356,7 +425,10 @@ void ValidateMesh(vtkPolyData* mesh, const std::string& what)
     }
   }
   vtkPoints* pts = mesh->GetPoints();
-  for (vtkIdType i = 0; i < pts->GetNumberOfPoints(); ++i)
+  vtkIdType firstNonFinite = 0;
+  double bounds[6];
+  const bool boxed = ScanPoints(pts, firstNonFinite, bounds);
+  for (vtkIdType i = firstNonFinite; i < pts->GetNumberOfPoints(); ++i)
   {
     double p[3];
     pts->GetPoint(i, p);
@@ -369,8 +441,10 @@ void ValidateMesh(vtkPolyData* mesh, const std::string& what)
   // At least one polygon with an area: a mesh of degenerate faces only
   // (collinear or repeated points) has nothing to draw or to give normals
   // to, and every command says so alike.
-  double bounds[6];
-  mesh->GetBounds(bounds);
+  if (!boxed)
+  {
+    mesh->GetBounds(bounds);
+  }
   const double diagonal2 = (bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
     (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) + (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]);
   bool anyArea = false;
@@ -609,6 +683,11 @@ vtkPolyData* ReadMeshAt(const std::string& path, const ReadOptions& options, int
     }
     PrecheckXmlVtk(path, "PolyData");
     mesh = ReadWith<vtkXMLPolyDataReader>(path);
+  }
+  else if ((ext == "ply" || ext == "stl" || ext == "off") && FastReadersEnabled() &&
+    (mesh = ReadFast(path, ext)))
+  {
+    // read at memory speed, checked on the way (FastReaders.h)
   }
   else if (ext == "ply")
   {

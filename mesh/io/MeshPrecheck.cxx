@@ -2,6 +2,7 @@
 #include "MeshPrecheck.h"
 
 #include "MeshIO.h"
+#include "PlyHeader.h"
 #include "PrecheckCommon.h"
 
 #include <cerrno>
@@ -24,11 +25,11 @@ namespace
 using precheck::kMaxElementCount;
 using precheck::ParseInteger;
 using precheck::ReadInteger;
+using ply::PlyElement;
+using ply::PlyHeader;
+using ply::PlyProperty;
+using ply::ReadPlyHeader;
 
-/// The share of non-text bytes among the first 256 from which VTK's STL
-/// reader takes a file for binary (vtksys::SystemTools::DetectFileType's
-/// default percent_bin, 0.05).
-constexpr double kStlBinaryFraction = 0.05;
 
 /// Largest polygon accepted in a PLY face list: 1e6 vertices per face is
 /// far beyond any real polygon and keeps a corrupt count from allocating.
@@ -289,156 +290,6 @@ void PrecheckObj(const std::string& path)
 namespace
 {
 
-/// One PLY property: a scalar of `size` bytes, or a list (count, items).
-struct PlyProperty
-{
-  std::string name;
-  bool list = false;
-  int size = 0;      ///< scalar or item size in bytes
-  int countSize = 0; ///< list count size in bytes
-  bool integer = true;
-  bool isSigned = true;
-};
-
-struct PlyElement
-{
-  std::string name;
-  long long count = 0;
-  std::vector<PlyProperty> properties;
-};
-
-bool PlyType(const std::string& type, int& size, bool& integer, bool& isSigned)
-{
-  static const struct
-  {
-    const char* name;
-    int size;
-    bool integer, isSigned;
-  } types[] = { { "char", 1, true, true }, { "int8", 1, true, true }, { "uchar", 1, true, false },
-    { "uint8", 1, true, false }, { "short", 2, true, true }, { "int16", 2, true, true },
-    { "ushort", 2, true, false }, { "uint16", 2, true, false }, { "int", 4, true, true },
-    { "int32", 4, true, true }, { "uint", 4, true, false }, { "uint32", 4, true, false },
-    { "float", 4, false, true }, { "float32", 4, false, true }, { "double", 8, false, true },
-    { "float64", 8, false, true } };
-  for (const auto& t : types)
-  {
-    if (type == t.name)
-    {
-      size = t.size;
-      integer = t.integer;
-      isSigned = t.isSigned;
-      return true;
-    }
-  }
-  return false;
-}
-
-
-} // namespace
-
-namespace
-{
-
-/// What a PLY header declares.
-struct PlyHeader
-{
-  std::string format;
-  std::vector<PlyElement> elements;
-};
-
-/// A PLY header's format and elements, read up to end_header (at most
-/// 10,000 lines), every line checked; MeshError (`bad` first) otherwise.
-PlyHeader ReadPlyHeader(std::istream& in, const std::string& bad)
-{
-  std::string line;
-  PlyHeader header;
-  std::string& format = header.format;
-  std::vector<PlyElement>& elements = header.elements;
-  bool ended = false;
-  for (int lines = 0; lines < 10000 && std::getline(in, line); ++lines)
-  {
-    if (!line.empty() && line.back() == '\r')
-    {
-      line.pop_back();
-    }
-    if (std::any_of(line.begin(), line.end(), [](char c) {
-          return static_cast<unsigned char>(c) < 0x20 && c != '\t';
-        }))
-    {
-      // VTK's header parser stops at a NUL and reads what follows as the
-      // data's shape (a double free found by fuzz/MeshReaderFuzzer).
-      throw MeshError(bad + "a control character in the header (line '" +
-        line.substr(0, line.find('\0')) + "')");
-    }
-    std::istringstream tokens(line);
-    std::string keyword;
-    tokens >> keyword;
-    if (keyword == "end_header")
-    {
-      ended = true;
-      break;
-    }
-    if (keyword == "format")
-    {
-      tokens >> format;
-    }
-    else if (keyword == "element")
-    {
-      PlyElement e;
-      std::string count;
-      tokens >> e.name >> count;
-      if (!ParseInteger(count, e.count) || e.count < 0 || e.count > kMaxElementCount)
-      {
-        throw MeshError(bad + "element '" + e.name + "' has count '" + count +
-          "' (expected 0 to 2^31-1)");
-      }
-      elements.push_back(e);
-    }
-    else if (keyword == "property")
-    {
-      if (elements.empty())
-      {
-        throw MeshError(bad + "a property before any element");
-      }
-      PlyProperty p;
-      std::string type;
-      tokens >> type;
-      if (type == "list")
-      {
-        std::string countType, itemType;
-        tokens >> countType >> itemType >> p.name;
-        bool countInteger = true, countSigned = true;
-        p.list = true;
-        if (!PlyType(countType, p.countSize, countInteger, countSigned) || !countInteger ||
-          !PlyType(itemType, p.size, p.integer, p.isSigned))
-        {
-          throw MeshError(bad + "unknown list types '" + countType + " " + itemType + "'");
-        }
-      }
-      else
-      {
-        tokens >> p.name;
-        if (!PlyType(type, p.size, p.integer, p.isSigned))
-        {
-          throw MeshError(bad + "unknown property type '" + type + "'");
-        }
-      }
-      elements.back().properties.push_back(p);
-    }
-    else if (!keyword.empty() && keyword != "comment" && keyword != "obj_info")
-    {
-      // VTK's reader skips a line it does not know and then misreads the
-      // data (a crash found by fuzz/MeshReaderFuzzer): refuse it.
-      throw MeshError(bad + "unknown header line '" + line.substr(0, 40) + "'");
-    }
-  }
-  if (!ended)
-  {
-    throw MeshError(bad + "the header has no 'end_header' (truncated?)");
-  }
-  return header;
-}
-
 /// The vertex element's row count, after checking that it has x, y and z
 /// and that a non-empty face element has its index list.
 long long PlyVertexCount(const std::vector<PlyElement>& elements, const std::string& bad)
@@ -674,24 +525,13 @@ void PrecheckStl(const std::string& path)
   in.seekg(0, std::ios::end);
   const long long size = static_cast<long long>(in.tellg());
   in.seekg(0);
-  // VTK decides ASCII or binary the way vtksys::SystemTools::DetectFileType
-  // does: binary when 5 % or more of the first 256 bytes are outside
-  // 0x20-0x7F, newline, carriage return and tab (a form feed is binary). Decide the same way, or a file we checked as
-  // ASCII is read as binary with a header count of billions (an 11 GB
-  // allocation: fuzz/MeshReaderFuzzer).
   {
     char head[256];
     in.read(head, sizeof head);
     const std::streamsize n = in.gcount();
-    int binary = 0;
-    for (std::streamsize k = 0; k < n; ++k)
-    {
-      const int c = static_cast<unsigned char>(head[k]);
-      binary += !((c >= 0x20 && c <= 0x7F) || c == '\n' || c == '\r' || c == '\t');
-    }
     in.clear();
     in.seekg(0);
-    if (n > 0 && static_cast<double>(binary) / static_cast<double>(n) >= kStlBinaryFraction)
+    if (precheck::LooksBinaryStl(reinterpret_cast<const unsigned char*>(head), static_cast<size_t>(n)))
     {
       unsigned char header[84];
       if (size < 84 || !in.read(reinterpret_cast<char*>(header), 84) ||

@@ -138,4 +138,26 @@ inline std::string CheckCellType(long long type, long long points)
   return {};
 }
 
+/// The share of non-text bytes among the first 256 from which VTK's STL
+/// reader takes a file for binary (vtksys::SystemTools::DetectFileType's
+/// default percent_bin, 0.05).
+constexpr double kStlBinaryFraction = 0.05;
+
+/// Whether VTK's STL reader takes a file starting with these `n` (at most
+/// 256) bytes for binary, as vtksys::SystemTools::DetectFileType decides:
+/// 5 % or more of them outside 0x20-0x7F, newline, carriage return and tab
+/// (a form feed is binary). Decide the same way, or a file checked as ASCII
+/// is read as binary with a header count of billions (an 11 GB allocation:
+/// fuzz/MeshReaderFuzzer).
+inline bool LooksBinaryStl(const unsigned char* head, size_t n)
+{
+  int binary = 0;
+  for (size_t k = 0; k < n; ++k)
+  {
+    const int c = head[k];
+    binary += !((c >= 0x20 && c <= 0x7F) || c == '\n' || c == '\r' || c == '\t');
+  }
+  return n > 0 && static_cast<double>(binary) / static_cast<double>(n) >= kStlBinaryFraction;
+}
+
 } // namespace shadinglab::precheck

@@ -39,11 +39,15 @@ vtkSmartPointer<vtkCellArray> CellArrayFromFlat(const int64_t* offsets,
   return cells;
 }
 
-void FlatPolygonsFromPolyData(vtkPolyData* input, FlatPolygons& out)
+void FlatPolygonsFromPolyData(vtkPolyData* input, FlatPolygons& out, bool withPoints)
 {
   out.numberOfPoints = input->GetNumberOfPoints();
   auto* doubles = vtkDoubleArray::SafeDownCast(input->GetPoints() ? input->GetPoints()->GetData() : nullptr);
-  if (doubles)
+  if (!withPoints)
+  {
+    out.points = nullptr;
+  }
+  else if (doubles)
   {
     out.points = doubles->GetPointer(0);
   }
@@ -104,7 +108,7 @@ vtkSmartPointer<vtkPolyData> WithoutStrips(vtkPolyData* input, bool keepLinesAnd
 bool InconsistentlyOriented(vtkPolyData* input)
 {
   FlatPolygons flat;
-  FlatPolygonsFromPolyData(input, flat);
+  FlatPolygonsFromPolyData(input, flat, false);
   return HasInconsistentOrientation(flat);
 }
 

@@ -28,7 +28,9 @@ struct FlatPolygons : MeshView
 
 /// Views (or copies) points and polygons of a polydata. Strips must have
 /// been triangulated by the caller. The polydata must outlive the result.
-void FlatPolygonsFromPolyData(vtkPolyData* input, FlatPolygons& out);
+/// Without `withPoints` the points are left out (null), for algorithms of
+/// the connectivity alone: float points are then not copied to double.
+void FlatPolygonsFromPolyData(vtkPolyData* input, FlatPolygons& out, bool withPoints = true);
 
 /// The input itself when it has no triangle strips, else a copy with the
 /// strips triangulated (lines and vertices kept when `keepLinesAndVerts`).

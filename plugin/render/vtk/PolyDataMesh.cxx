@@ -13,6 +13,7 @@
 #include <stdexcept>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
 #include <vtkFloatArray.h>
 #include <vtkIdTypeArray.h>
 #include <vtkIdList.h>
@@ -192,6 +193,91 @@ vtkDataArray* FindField(vtkPolyData* pd, const ScalarField& field, bool& cells)
   return array;
 }
 
+/// The input polygon the conversion's polygon i came from (`polygonOf`
+/// empty: each is its own).
+vtkIdType PolygonOf(const std::vector<vtkIdType>& polygonOf, size_t i)
+{
+  return polygonOf.empty() ? static_cast<vtkIdType>(i) : polygonOf[i];
+}
+
+/// The points' box read in place from float or double points (as
+/// vtkPoints::GetBounds gives it, without its per-call dispatch); false
+/// for points of another type.
+bool BoxInPlace(vtkPoints* points, double box[6])
+{
+  if (auto* f = vtkFloatArray::SafeDownCast(points->GetData()))
+  {
+    mesh::PointBox(f->GetPointer(0), points->GetNumberOfPoints(), box);
+    return true;
+  }
+  if (auto* d = vtkDoubleArray::SafeDownCast(points->GetData()))
+  {
+    mesh::PointBox(d->GetPointer(0), points->GetNumberOfPoints(), box);
+    return true;
+  }
+  return false;
+}
+
+/// The points in the local frame as floats, read in place from float or
+/// double points; false for points of another type.
+bool LocalPointsInPlace(vtkPoints* points, const WorldFrame& frame, std::vector<float>& out)
+{
+  const vtkIdType n = points->GetNumberOfPoints();
+  auto convert = [&](const auto* xyz) {
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      const Vec3<double> local = frame.ToLocal(
+        Vec3<double>(static_cast<double>(xyz[3 * i]), static_cast<double>(xyz[3 * i + 1]), static_cast<double>(xyz[3 * i + 2])));
+      out[3 * i] = static_cast<float>(local.x);
+      out[3 * i + 1] = static_cast<float>(local.y);
+      out[3 * i + 2] = static_cast<float>(local.z);
+    }
+    return true;
+  };
+  if (auto* f = vtkFloatArray::SafeDownCast(points->GetData()))
+  {
+    return convert(f->GetPointer(0));
+  }
+  if (auto* d = vtkDoubleArray::SafeDownCast(points->GetData()))
+  {
+    return convert(d->GetPointer(0));
+  }
+  return false;
+}
+
+/// When every polygon is a triangle held in 64-bit storage (every reader's
+/// default): its offsets and connectivity copied as they are, true;
+/// otherwise false and nothing done.
+bool TrianglesInPlace(vtkCellArray* polys, Mesh& mesh)
+{
+  using Int64Array = vtkAOSDataArrayTemplate<vtkTypeInt64>;
+  auto* offsets = Int64Array::SafeDownCast(polys->GetOffsetsArray());
+  auto* connectivity = Int64Array::SafeDownCast(polys->GetConnectivityArray());
+  const vtkIdType n = polys->GetNumberOfCells();
+  if (!offsets || !connectivity || n == 0)
+  {
+    return false;
+  }
+  const vtkTypeInt64* o = offsets->GetPointer(0);
+  bool triangles = true;
+  for (vtkIdType c = 0; c <= n; ++c)
+  {
+    triangles &= o[c] == 3 * c;
+  }
+  if (!triangles)
+  {
+    return false;
+  }
+  mesh.offsets.resize(static_cast<size_t>(n + 1));
+  for (vtkIdType c = 0; c <= n; ++c)
+  {
+    mesh.offsets[static_cast<size_t>(c)] = 3 * c;
+  }
+  const vtkTypeInt64* ids = connectivity->GetPointer(0);
+  mesh.connectivity.assign(ids, ids + 3 * n);
+  return true;
+}
+
 /// `field`'s values into mesh.scalars (point data) or mesh.cellScalars
 /// (cell data, following the polygons the conversion made: `polygonOf`),
 /// and its finite values' range (see MeshFromPolyData).
@@ -204,13 +290,12 @@ void CopyField(vtkPolyData* pd, const ScalarField& field, const std::vector<vtkI
   std::vector<float>& out = cells ? mesh.cellScalars : mesh.scalars;
   // Cell data counts verts and lines before the polygons.
   const vtkIdType firstPolygon = pd->GetNumberOfVerts() + pd->GetNumberOfLines();
-  const size_t n = cells ? polygonOf.size() : static_cast<size_t>(np);
+  const size_t n = cells ? static_cast<size_t>(mesh.NumberOfPolygons()) : static_cast<size_t>(np);
   out.resize(n);
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (size_t i = 0; i < n; ++i)
   {
-    const vtkIdType tuple =
-      cells ? firstPolygon + polygonOf[i] : static_cast<vtkIdType>(i);
+    const vtkIdType tuple = cells ? firstPolygon + PolygonOf(polygonOf, i) : static_cast<vtkIdType>(i);
     const double v = ValueOf(array, tuple, field.component);
     out[i] = static_cast<float>(v);
     if (std::isfinite(v))
@@ -227,6 +312,51 @@ void CopyField(vtkPolyData* pd, const ScalarField& field, const std::vector<vtkI
   {
     // Constant up to rounding: one value, drawn as a constant field is.
     range[0] = range[1] = 0.5 * (range[0] + range[1]);
+  }
+}
+
+/// Polygons the renderers cannot take whole (concave ones, which a fan or
+/// a scanline pairing of one span would fill wrongly, and ones with more
+/// than kMaxWholePolygon vertices) are triangulated by ear cutting; the
+/// triangles keep their polygon's cell normal. `polygonOf` maps back.
+void ConvertPolygons(vtkPolyData* pd, Mesh& mesh, std::vector<vtkIdType>& polygonOf)
+{
+  vtkCellArray* polys = pd->GetPolys();
+  mesh.offsets.reserve(static_cast<size_t>(polys->GetNumberOfCells() + 1));
+  mesh.offsets.push_back(0);
+  mesh.connectivity.reserve(static_cast<size_t>(polys->GetNumberOfConnectivityIds()));
+  polygonOf.reserve(static_cast<size_t>(polys->GetNumberOfCells()));
+  vtkNew<vtkIdList> ids;
+  vtkNew<vtkPolygon> polygon;
+  vtkNew<vtkIdList> triangles;
+  for (vtkIdType c = 0; c < polys->GetNumberOfCells(); ++c)
+  {
+    polys->GetCellAtId(c, ids);
+    const vtkIdType n = ids->GetNumberOfIds();
+    if (n > 3 && (n > kMaxWholePolygon || !IsConvex(pd->GetPoints(), ids)))
+    {
+      polygon->Initialize(static_cast<int>(n), ids->GetPointer(0), pd->GetPoints());
+      triangles->Reset();
+      if (polygon->EarCutTriangulation(triangles) && triangles->GetNumberOfIds() >= 3)
+      {
+        for (vtkIdType t = 0; t + 2 < triangles->GetNumberOfIds(); t += 3)
+        {
+          for (int k = 0; k < 3; ++k)
+          {
+            mesh.connectivity.push_back(ids->GetId(triangles->GetId(t + k)));
+          }
+          mesh.offsets.push_back(static_cast<int64_t>(mesh.connectivity.size()));
+          polygonOf.push_back(c);
+        }
+        continue;
+      }
+    }
+    for (vtkIdType k = 0; k < n; ++k)
+    {
+      mesh.connectivity.push_back(ids->GetId(k));
+    }
+    mesh.offsets.push_back(static_cast<int64_t>(mesh.connectivity.size()));
+    polygonOf.push_back(c);
   }
 }
 
@@ -249,7 +379,10 @@ Mesh Convert(vtkPolyData* input, WorldFrame& frame, bool normalize, const Scalar
   if (normalize && np > 0)
   {
     double b[6];
-    pd->GetBounds(b);
+    if (!BoxInPlace(pd->GetPoints(), b))
+    {
+      pd->GetBounds(b);
+    }
     const Vec3<double> lo(b[0], b[2], b[4]), hi(b[1], b[3], b[5]);
     const double radius = 0.5 * Length(hi - lo);
     frame.center = (lo + hi) * 0.5;
@@ -257,7 +390,7 @@ Mesh Convert(vtkPolyData* input, WorldFrame& frame, bool normalize, const Scalar
     frame.scale = radius > 0 && std::isfinite(radius) ? radius : 1.0;
   }
   mesh.points.resize(static_cast<size_t>(3 * np));
-  for (vtkIdType i = 0; i < np; ++i)
+  for (vtkIdType i = np > 0 && LocalPointsInPlace(pd->GetPoints(), frame, mesh.points) ? np : 0; i < np; ++i)
   {
     double p[3];
     pd->GetPoint(i, p);
@@ -295,46 +428,10 @@ Mesh Convert(vtkPolyData* input, WorldFrame& frame, bool normalize, const Scalar
     }
   }
   vtkCellArray* polys = pd->GetPolys();
-  mesh.offsets.reserve(static_cast<size_t>(polys->GetNumberOfCells() + 1));
-  mesh.offsets.push_back(0);
-  mesh.connectivity.reserve(static_cast<size_t>(polys->GetNumberOfConnectivityIds()));
-  // Polygons the renderers cannot take whole (concave ones, which a fan or
-  // a scanline pairing of one span would fill wrongly, and ones with more
-  // than kMaxWholePolygon vertices) are triangulated by ear cutting; the
-  // triangles keep their polygon's cell normal. `polygonOf` maps back.
-  std::vector<vtkIdType> polygonOf;
-  polygonOf.reserve(static_cast<size_t>(polys->GetNumberOfCells()));
-  vtkNew<vtkIdList> ids;
-  vtkNew<vtkPolygon> polygon;
-  vtkNew<vtkIdList> triangles;
-  for (vtkIdType c = 0; c < polys->GetNumberOfCells(); ++c)
+  std::vector<vtkIdType> polygonOf; // empty: polygon i is input polygon i
+  if (!TrianglesInPlace(polys, mesh))
   {
-    polys->GetCellAtId(c, ids);
-    const vtkIdType n = ids->GetNumberOfIds();
-    if (n > 3 && (n > kMaxWholePolygon || !IsConvex(pd->GetPoints(), ids)))
-    {
-      polygon->Initialize(static_cast<int>(n), ids->GetPointer(0), pd->GetPoints());
-      triangles->Reset();
-      if (polygon->EarCutTriangulation(triangles) && triangles->GetNumberOfIds() >= 3)
-      {
-        for (vtkIdType t = 0; t + 2 < triangles->GetNumberOfIds(); t += 3)
-        {
-          for (int k = 0; k < 3; ++k)
-          {
-            mesh.connectivity.push_back(ids->GetId(triangles->GetId(t + k)));
-          }
-          mesh.offsets.push_back(static_cast<int64_t>(mesh.connectivity.size()));
-          polygonOf.push_back(c);
-        }
-        continue;
-      }
-    }
-    for (vtkIdType k = 0; k < n; ++k)
-    {
-      mesh.connectivity.push_back(ids->GetId(k));
-    }
-    mesh.offsets.push_back(static_cast<int64_t>(mesh.connectivity.size()));
-    polygonOf.push_back(c);
+    ConvertPolygons(pd, mesh, polygonOf);
   }
   if (field)
   {
@@ -346,10 +443,11 @@ Mesh Convert(vtkPolyData* input, WorldFrame& frame, bool normalize, const Scalar
   if (cn && cn->GetNumberOfComponents() == 3 && pd->GetNumberOfVerts() == 0 &&
     pd->GetNumberOfLines() == 0 && cn->GetNumberOfTuples() == polys->GetNumberOfCells())
   {
-    mesh.faceNormals.resize(3 * polygonOf.size());
-    for (size_t i = 0; i < polygonOf.size(); ++i)
+    const size_t n = static_cast<size_t>(mesh.NumberOfPolygons());
+    mesh.faceNormals.resize(3 * n);
+    for (size_t i = 0; i < n; ++i)
     {
-      const double* v = cn->GetTuple3(polygonOf[i]);
+      const double* v = cn->GetTuple3(PolygonOf(polygonOf, i));
       for (int c = 0; c < 3; ++c)
       {
         mesh.faceNormals[3 * i + c] = static_cast<float>(v[c]);

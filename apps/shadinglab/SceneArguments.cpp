@@ -188,6 +188,10 @@ void ReadAndPrepare(const Arguments& args, const std::string& input, SceneArgume
       preparation.repair = true;
       AddNotice(scene, "faces oriented inconsistently: made consistent (as 'normals' does)");
     }
+    else
+    {
+      preparation.knownConsistent = polydata->GetNumberOfStrips() == 0;
+    }
     // No normals and a smooth mode: the default normals, split at creases
     // as ParaView's Generate Surface Normals does (flat needs none).
     preparation.computeNormals = !polydata->GetPointData()->GetNormals() &&

@@ -162,6 +162,7 @@ vtkSmartPointer<vtkPolyData> PrepareMesh(
     normals->SetInputData(current);
     normals->SetWeighting(static_cast<int>(o.weighting));
     normals->SetFeatureAngle(o.featureAngle);
+    normals->SetConsistency(!(o.knownConsistent && current == input));
     normals->Update();
     current = normals->GetOutput();
     report.creaseEdges = normals->GetNumberOfCreaseEdges();

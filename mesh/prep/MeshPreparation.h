@@ -48,6 +48,10 @@ struct PreparationOptions
   bool computeNormals = true;  ///< weighted vertex normals (when not subdividing)
   NormalWeighting weighting = NormalWeighting::Area;
   double featureAngle = 30.0;  ///< crease angle in degrees, [0, 180]
+  /// The caller has found the polygons consistently oriented (the CLI
+  /// checks before it decides to repair): the normals filter does not
+  /// check again (0.4 s of a 16M-triangle mesh).
+  bool knownConsistent = false;
 };
 
 /// What the step did (the CLI's --json).

@@ -404,12 +404,19 @@ Mesh Convert(vtkPolyData* input, WorldFrame& frame, bool normalize, const Scalar
     if (n->GetNumberOfComponents() == 3 && n->GetNumberOfTuples() == np)
     {
       mesh.normals.resize(static_cast<size_t>(3 * np));
-      for (vtkIdType i = 0; i < np; ++i)
+      if (auto* f = vtkFloatArray::SafeDownCast(n))
       {
-        const double* v = n->GetTuple3(i);
-        for (int c = 0; c < 3; ++c)
+        std::copy(f->GetPointer(0), f->GetPointer(0) + 3 * np, mesh.normals.begin());
+      }
+      else
+      {
+        for (vtkIdType i = 0; i < np; ++i)
         {
-          mesh.normals[3 * i + c] = static_cast<float>(v[c]);
+          const double* v = n->GetTuple3(i);
+          for (int c = 0; c < 3; ++c)
+          {
+            mesh.normals[3 * i + c] = static_cast<float>(v[c]);
+          }
         }
       }
     }

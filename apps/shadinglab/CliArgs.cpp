@@ -11,6 +11,13 @@
 namespace shadinglab::cli
 {
 
+double PeakRssMb()
+{
+  struct rusage usage;
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) / 1024.0; // KB on Linux
+}
+
 double PeakResidentMB()
 {
   struct rusage usage{};

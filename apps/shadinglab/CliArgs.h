@@ -28,6 +28,10 @@ private:
   std::chrono::steady_clock::time_point Start = std::chrono::steady_clock::now();
 };
 
+/// The process's peak resident memory so far, in MB (getrusage's
+/// ru_maxrss): read after each stage, the --stats memory by stage.
+double PeakRssMb();
+
 /// The process's peak resident memory so far, in MB (getrusage).
 double PeakResidentMB();
 

@@ -110,7 +110,8 @@ int RunRender(int argc, char** argv)
                 "\"pixels_at_255\":%lld,\"pixels_shaded\":%lld,\"overdraw\":%.3f,\"fast_phong_exact\":%lld,"
                 "\"fast_phong_as_phong\":%s,\"threads\":%d,"
                 "\"shader_builds\":%d,\"normals_computed\":%s,\"read_ms\":%.3f,"
-                "\"prepare_ms\":%.3f,\"render_ms\":%.3f,\"write_ms\":%.3f,\"total_ms\":%.3f%s}\n",
+                "\"prepare_ms\":%.3f,\"render_ms\":%.3f,\"write_ms\":%.3f,\"total_ms\":%.3f,"
+                "\"peak_rss_read_mb\":%.1f,\"peak_rss_prepare_mb\":%.1f,\"peak_rss_mb\":%.1f%s}\n",
       render::BackendName(renderer->GetBackend()), render::ShadingModeName(stats.drawnMode),
       ReflectanceModelName(request->scene.material.model), options.width, options.height, options.ssaa,
       stats.milliseconds, static_cast<long long>(stats.polygons),
@@ -127,8 +128,8 @@ int RunRender(int argc, char** argv)
       stats.threads, stats.shaderBuilds,
       stats.normalsComputed || request->normalsMade ? "true" : "false", request->readMs,
       request->prepareMs,
-      stats.milliseconds, writeMs, total.Milliseconds(),
-      stats.autoChoice.empty() ? "" : (",\"auto\":\"" + stats.autoChoice + "\"").c_str());
+      stats.milliseconds, writeMs, total.Milliseconds(), request->readPeakMb, request->preparePeakMb,
+      PeakRssMb(), stats.autoChoice.empty() ? "" : (",\"auto\":\"" + stats.autoChoice + "\"").c_str());
   }
   return 0;
 }

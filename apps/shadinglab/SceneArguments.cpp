@@ -176,6 +176,7 @@ void ReadAndPrepare(const Arguments& args, const std::string& input, SceneArgume
     throw UsageError(e.what());
   }
   scene.readMs = reading.Milliseconds();
+  scene.readPeakMb = PeakRssMb();
   const Stopwatch preparing;
   scene.input = input;
   mesh::PreparationOptions preparation = MeshPipelineFromArguments(args, false);
@@ -416,6 +417,7 @@ std::unique_ptr<SceneArguments> SceneFromArguments(int argc, char** argv, const 
   CameraFromArguments(args, scene);
   LightsFromArguments(args, scene);
   scene.prepareMs += placing.Milliseconds();
+  scene.preparePeakMb = PeakRssMb();
   return result;
 }
 

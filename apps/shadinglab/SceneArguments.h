@@ -45,6 +45,7 @@ struct SceneArguments
   bool normalsMade = false;
   double readMs = 0;    ///< reading (and checking) the input file
   double prepareMs = 0; ///< the repair check, repair, conversion
+  double readPeakMb = 0, preparePeakMb = 0; ///< peak resident memory after each (PeakRssMb)
 };
 
 /// The options 'render' and 'compare' accept, in their --help.

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <limits>
 #include <numeric>
+#include <thread>
 #include <utility>
 
 namespace shadinglab::mesh
@@ -231,111 +232,168 @@ void JoinAcrossSmoothEdges(const MeshView& m, const CornerTable& t, const Corner
 
 } // namespace
 
+namespace
+{
+
+/// Vertices below which the pass runs on the calling thread alone: a
+/// thread's start (~50 us) costs more than ~20k vertices' work.
+constexpr int64_t kParallelVertices = 100000;
+
+/// What one range of vertices makes: the split points it adds (numbered
+/// from 0 in the range, renumbered when the ranges are joined in order),
+/// their normals and input points, the corners moved to them, and its
+/// edge counts. The normals of the range's own vertices go straight into
+/// the shared array (the ranges are disjoint).
+struct RangeResult
+{
+  std::vector<double> splitNormals;
+  std::vector<int64_t> splitOrigins;
+  std::vector<std::pair<int64_t, int64_t>> moved; ///< (corner, split point in the range)
+  NormalResult counts;
+};
+
+/// The vertex pass over [v0, v1) (see ComputeVertexNormals).
+template <typename CornerT>
+void VertexPass(const MeshView& m, const CornerTable& table, const CornerT* cornerTable,
+  const NormalOptions& opt, const FeatureEdges& features, double cosFeature, int64_t v0,
+  int64_t v1, double* normals, RangeResult& out)
+{
+  VertexScratch s;
+  for (int64_t v = v0; v < v1; ++v)
+  {
+    const int64_t cb = table.start[v], ce = table.start[v + 1];
+    const int32_t count = static_cast<int32_t>(ce - cb);
+    if (count == 0)
+    {
+      normals[3 * v + 2] = 1.0;
+      continue;
+    }
+    s.parent.resize(static_cast<size_t>(count));
+    std::iota(s.parent.begin(), s.parent.end(), 0);
+    s.area.resize(static_cast<size_t>(count));
+    s.areaLength.resize(static_cast<size_t>(count));
+    for (int32_t i = 0; i < count; ++i)
+    {
+      const int64_t p = table.PolygonOf(static_cast<int64_t>(cornerTable[cb + i]));
+      s.area[i] = AreaVectorAt(m, table.FirstCorner(m, p), table.CornerCount(m, p));
+      s.areaLength[i] = std::sqrt(Dot(s.area[i], s.area[i]));
+    }
+    if (opt.splitting)
+    {
+      JoinAcrossSmoothEdges(m, table, cornerTable + cb, v, count, opt, features, cosFeature, s, out.counts);
+    }
+    else
+    {
+      for (int32_t i = 1; i < count; ++i)
+      {
+        s.parent[i] = 0;
+      }
+    }
+    // One output point per group of corners; the first group keeps v
+    // (-1: v itself; k >= 0: the range's split point k).
+    s.groupOf.assign(static_cast<size_t>(count), -1);
+    int32_t groups = 0;
+    s.groupPoint.clear();
+    for (int32_t i = 0; i < count; ++i)
+    {
+      const int32_t root = s.Find(i);
+      if (s.groupOf[root] < 0)
+      {
+        s.groupOf[root] = groups++;
+        int64_t split = -1;
+        if (s.groupOf[root] > 0)
+        {
+          split = static_cast<int64_t>(out.splitOrigins.size());
+          out.splitOrigins.push_back(v);
+          out.splitNormals.insert(out.splitNormals.end(), { 0.0, 0.0, 0.0 });
+        }
+        s.groupPoint.push_back(split);
+      }
+      const int64_t split = s.groupPoint[s.groupOf[root]];
+      const int64_t c = static_cast<int64_t>(cornerTable[cb + i]);
+      const int64_t p = table.PolygonOf(c);
+      const int64_t b = table.FirstCorner(m, p), n = table.CornerCount(m, p);
+      if (n < 3)
+      {
+        continue;
+      }
+      if (split >= 0)
+      {
+        out.moved.emplace_back(c, split);
+      }
+      const V3 w = CornerContribution(m, b, n, c - b, s.area[i], s.areaLength[i], opt.weighting);
+      double* to = split >= 0 ? &out.splitNormals[3 * split] : &normals[3 * v];
+      to[0] += w.x;
+      to[1] += w.y;
+      to[2] += w.z;
+    }
+  }
+}
+
+} // namespace
+
 NormalResult ComputeVertexNormals(const MeshView& m, const NormalOptions& opt)
 {
   NormalResult r;
   const int64_t nv = m.numberOfPoints, np = m.numberOfPolygons;
   const int64_t nc = np > 0 ? m.offsets[np] : 0;
-  // Corners moved to a split copy of their vertex (corner, new point): the
-  // output connectivity is made from them only if there are any.
-  std::vector<std::pair<int64_t, int64_t>> moved;
-
   // Scratch arrays persist per thread across calls: a filter re-run on a
   // large mesh then reuses their pages instead of faulting in ~100 MB anew
   // (measured: a third of the time was the kernel zeroing fresh pages).
   // No per-polygon table of area vectors is kept (160 MB on 5M triangles):
   // the vertex pass computes the area vectors of the polygons around each
   // vertex as it reaches it, the same arithmetic, so the same bits.
-  static thread_local CornerTable table;
+  static thread_local CornerTable tableOfThisThread;
+  CornerTable& table = tableOfThisThread; // the workers read the caller's table
   BuildCornerTable(m, table);
   const FeatureEdges features(opt.featureEdges);
   const double cosFeature = std::cos(opt.featureAngle * 3.14159265358979323846 / 180.0);
-
   std::vector<double> normals(static_cast<size_t>(3 * nv), 0.0);
-  r.originalPointIds.resize(static_cast<size_t>(nv));
-  std::iota(r.originalPointIds.begin(), r.originalPointIds.end(), 0);
-
-  VertexScratch s;
-  // The vertex pass, compiled once per width of the corner table (no
-  // per-corner branch on it).
-  auto vertexPass = [&](const auto* cornerTable)
-  {
-    for (int64_t v = 0; v < nv; ++v)
+  // The vertex pass over ranges of vertices, one per thread, joined in
+  // vertex order: split points are numbered as one pass in order numbers
+  // them, so the result is the same bits on any number of threads.
+  const int threads = opt.threads > 0 ? opt.threads
+    : nv < kParallelVertices
+    ? 1
+    : static_cast<int>(std::clamp<unsigned>(std::thread::hardware_concurrency(), 1u, 8u));
+  std::vector<RangeResult> ranges(static_cast<size_t>(threads));
+  auto pass = [&](int k) {
+    const int64_t v0 = nv * k / threads, v1 = nv * (k + 1) / threads;
+    if (table.narrow)
     {
-      const int64_t cb = table.start[v], ce = table.start[v + 1];
-      const int32_t count = static_cast<int32_t>(ce - cb);
-      if (count == 0)
-      {
-        normals[3 * v + 2] = 1.0;
-        continue;
-      }
-      s.parent.resize(static_cast<size_t>(count));
-      std::iota(s.parent.begin(), s.parent.end(), 0);
-      s.area.resize(static_cast<size_t>(count));
-      s.areaLength.resize(static_cast<size_t>(count));
-      for (int32_t i = 0; i < count; ++i)
-      {
-        const int64_t p = table.PolygonOf(static_cast<int64_t>(cornerTable[cb + i]));
-        s.area[i] = AreaVectorAt(m, table.FirstCorner(m, p), table.CornerCount(m, p));
-        s.areaLength[i] = std::sqrt(Dot(s.area[i], s.area[i]));
-      }
-      if (opt.splitting)
-      {
-        JoinAcrossSmoothEdges(m, table, cornerTable + cb, v, count, opt, features, cosFeature, s, r);
-      }
-      else
-      {
-        for (int32_t i = 1; i < count; ++i)
-        {
-          s.parent[i] = 0;
-        }
-      }
-      // One output point per group of corners; the first group keeps v.
-      s.groupOf.assign(static_cast<size_t>(count), -1);
-      int32_t groups = 0;
-      s.groupPoint.clear();
-      for (int32_t i = 0; i < count; ++i)
-      {
-        const int32_t root = s.Find(i);
-        if (s.groupOf[root] < 0)
-        {
-          s.groupOf[root] = groups++;
-          int64_t point = v;
-          if (s.groupOf[root] > 0)
-          {
-            point = static_cast<int64_t>(r.originalPointIds.size());
-            r.originalPointIds.push_back(v);
-            normals.insert(normals.end(), { 0.0, 0.0, 0.0 });
-            ++r.splitPoints;
-          }
-          s.groupPoint.push_back(point);
-        }
-        const int64_t point = s.groupPoint[s.groupOf[root]];
-        const int64_t c = static_cast<int64_t>(cornerTable[cb + i]);
-        const int64_t p = table.PolygonOf(c);
-        const int64_t b = table.FirstCorner(m, p), n = table.CornerCount(m, p);
-        if (n < 3)
-        {
-          continue;
-        }
-        if (point != v)
-        {
-          moved.emplace_back(c, point);
-        }
-        const V3 w = CornerContribution(m, b, n, c - b, s.area[i], s.areaLength[i], opt.weighting);
-        normals[3 * point] += w.x;
-        normals[3 * point + 1] += w.y;
-        normals[3 * point + 2] += w.z;
-      }
+      VertexPass(m, table, table.corners32.data(), opt, features, cosFeature, v0, v1, normals.data(), ranges[k]);
+    }
+    else
+    {
+      VertexPass(m, table, table.corners64.data(), opt, features, cosFeature, v0, v1, normals.data(), ranges[k]);
     }
   };
-  if (table.narrow)
+  std::vector<std::thread> workers;
+  for (int k = 1; k < threads; ++k)
   {
-    vertexPass(table.corners32.data());
+    workers.emplace_back(pass, k);
   }
-  else
+  pass(0);
+  for (std::thread& w : workers)
   {
-    vertexPass(table.corners64.data());
+    w.join();
+  }
+  r.originalPointIds.resize(static_cast<size_t>(nv));
+  std::iota(r.originalPointIds.begin(), r.originalPointIds.end(), 0);
+  std::vector<std::pair<int64_t, int64_t>> moved; // (corner, output point)
+  for (RangeResult& range : ranges)
+  {
+    const int64_t base = static_cast<int64_t>(r.originalPointIds.size());
+    r.originalPointIds.insert(r.originalPointIds.end(), range.splitOrigins.begin(), range.splitOrigins.end());
+    normals.insert(normals.end(), range.splitNormals.begin(), range.splitNormals.end());
+    for (const auto& [c, split] : range.moved)
+    {
+      moved.emplace_back(c, base + split);
+    }
+    r.creaseEdges += range.counts.creaseEdges;
+    r.nonManifoldEdges += range.counts.nonManifoldEdges;
+    r.boundaryEdges += range.counts.boundaryEdges;
+    r.splitPoints += static_cast<int64_t>(range.splitOrigins.size());
   }
   for (size_t i = 0; i < normals.size(); i += 3)
   {

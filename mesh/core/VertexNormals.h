@@ -33,6 +33,10 @@ struct NormalOptions
   std::vector<int64_t> featureEdges;
   /// Split across boundary edges and non-manifold edges (more than two faces).
   bool splitNonManifold = true;
+  /// Threads of ComputeVertexNormals' vertex pass: 0, one per core (at
+  /// most 8) on meshes of 100k vertices or more; else exactly this many.
+  /// The result is the same bits for any number.
+  int threads = 0;
 };
 
 struct NormalResult

@@ -139,6 +139,54 @@ TEST(NormalsTest, CubeHasTwelveCreasesAndThreeNormalsPerCorner)
   EXPECT_NEAR(d[0], -1 / std::sqrt(3.0), 1e-7); // float output
 }
 
+TEST(NormalsTest, ThreadsGiveTheSameBitsAndSplitNumbering)
+{
+  // A rough terrain of quads: creases everywhere at 30 degrees, so every
+  // range of vertices adds split points, numbered across the ranges.
+  const int n = 60;
+  std::vector<double> points;
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> height(0.0, 1.0);
+  for (int j = 0; j <= n; ++j)
+  {
+    for (int i = 0; i <= n; ++i)
+    {
+      points.insert(points.end(), { double(i), double(j), height(random) });
+    }
+  }
+  std::vector<int64_t> offsets{ 0 }, connectivity;
+  for (int j = 0; j < n; ++j)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      const int64_t a = j * (n + 1) + i;
+      connectivity.insert(connectivity.end(), { a, a + 1, a + n + 2, a + n + 1 });
+      offsets.push_back(static_cast<int64_t>(connectivity.size()));
+    }
+  }
+  shadinglab::mesh::MeshView mesh;
+  mesh.points = points.data();
+  mesh.numberOfPoints = static_cast<int64_t>(points.size() / 3);
+  mesh.offsets = offsets.data();
+  mesh.connectivity = connectivity.data();
+  mesh.numberOfPolygons = static_cast<int64_t>(offsets.size() - 1);
+  shadinglab::mesh::NormalOptions options;
+  options.threads = 1;
+  const auto one = shadinglab::mesh::ComputeVertexNormals(mesh, options);
+  ASSERT_GT(one.splitPoints, 100);
+  for (int threads : { 2, 3, 7 })
+  {
+    options.threads = threads;
+    const auto many = shadinglab::mesh::ComputeVertexNormals(mesh, options);
+    EXPECT_EQ(many.normals, one.normals) << threads << " threads";
+    EXPECT_EQ(many.originalPointIds, one.originalPointIds) << threads << " threads";
+    EXPECT_EQ(many.connectivity, one.connectivity) << threads << " threads";
+    EXPECT_EQ(many.creaseEdges, one.creaseEdges);
+    EXPECT_EQ(many.boundaryEdges, one.boundaryEdges);
+    EXPECT_EQ(many.splitPoints, one.splitPoints);
+  }
+}
+
 TEST(NormalsTest, FeatureAngleDecidesAndLinesForceCreases)
 {
   // A folded strip: two quads meeting at 20 degrees.

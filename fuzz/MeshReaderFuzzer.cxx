@@ -2,7 +2,7 @@
 // libFuzzer target: the one mesh entry point (ReadMesh) on arbitrary bytes,
 // in the format of SHADINGLAB_FUZZ_EXTENSION. Any outcome but a value or a
 // MeshError (a crash, a hang, a sanitizer report, another exception) is a
-// finding. For the formats of the fast readers (PLY, STL, OFF) the input is
+// finding. For the formats of the fast readers (PLY, STL, OFF, OBJ) the input is
 // also read through the checked VTK path: the two must agree, the same
 // mesh bit for bit or both a MeshError (differential fuzzing).
 #include "FastReaders.h"
@@ -53,7 +53,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size)
   };
   vtkPolyData* fast = read(false);
   const std::string ext = SHADINGLAB_FUZZ_EXTENSION;
-  if (ext == "ply" || ext == "stl" || ext == "off")
+  if (ext == "ply" || ext == "stl" || ext == "off" || ext == "obj")
   {
     vtkPolyData* checked = read(true);
     const std::string difference = fast && checked ? shadinglab::test::MeshDifference(fast, checked)

@@ -21,10 +21,11 @@
 namespace shadinglab
 {
 
-// The formats' readers (FastPly.cxx, FastStl.cxx, FastOff.cxx).
+// The formats' readers (FastPly.cxx, FastStl.cxx, FastOff.cxx, FastObj.cxx).
 vtkSmartPointer<vtkPolyData> ReadFastPly(fastread::MappedFile& file);
 vtkSmartPointer<vtkPolyData> ReadFastStl(fastread::MappedFile& file);
 vtkSmartPointer<vtkPolyData> ReadFastOff(fastread::MappedFile& file);
+vtkSmartPointer<vtkPolyData> ReadFastObj(fastread::MappedFile& file);
 
 namespace fastread
 {
@@ -149,7 +150,7 @@ bool FastReadersEnabled()
 
 vtkSmartPointer<vtkPolyData> ReadFast(const std::string& path, const std::string& ext)
 {
-  if (ext != "ply" && ext != "stl" && ext != "off")
+  if (ext != "ply" && ext != "stl" && ext != "off" && ext != "obj")
   {
     return nullptr;
   }
@@ -166,7 +167,7 @@ vtkSmartPointer<vtkPolyData> ReadFast(const std::string& path, const std::string
   {
     return ReadFastStl(file);
   }
-  return ReadFastOff(file);
+  return ext == "off" ? ReadFastOff(file) : ReadFastObj(file);
 }
 
 } // namespace shadinglab

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Readers at memory speed for the formats scans come in: binary and ASCII
-// PLY, binary and ASCII STL, OFF. Each parses its file in one walk over a
+// PLY, binary and ASCII STL, OFF, OBJ. Each parses its file in one walk over a
 // memory map, checking as it goes what the precheck (MeshPrecheck.h) and
 // ValidateMesh check: counts against the bytes present, indices within the
 // points, finite coordinates. Their output is the one VTK's reader (ours
@@ -23,7 +23,7 @@ class vtkPolyData;
 namespace shadinglab
 {
 
-/// The fast reader for `ext` ("ply", "stl", "off"), or null when there is
+/// The fast reader for `ext` ("ply", "stl", "off", "obj"), or null when there is
 /// none for it or it leaves this file to the checked path (see above).
 /// Throws MeshError only when the file cannot be opened or mapped.
 vtkSmartPointer<vtkPolyData> ReadFast(const std::string& path, const std::string& ext);

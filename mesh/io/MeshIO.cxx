@@ -684,7 +684,7 @@ vtkPolyData* ReadMeshAt(const std::string& path, const ReadOptions& options, int
     PrecheckXmlVtk(path, "PolyData");
     mesh = ReadWith<vtkXMLPolyDataReader>(path);
   }
-  else if ((ext == "ply" || ext == "stl" || ext == "off") && FastReadersEnabled() &&
+  else if ((ext == "ply" || ext == "stl" || ext == "off" || ext == "obj") && FastReadersEnabled() &&
     (mesh = ReadFast(path, ext)))
   {
     // read at memory speed, checked on the way (FastReaders.h)

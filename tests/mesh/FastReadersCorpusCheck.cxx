@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: BSD-3-Clause
-// Every .ply, .stl and .off file of a folder (the bad-input corpus) read
+// Every .ply, .stl, .off and .obj file of a folder (the bad-input corpus) read
 // through the fast readers and through the checked VTK path: both must
 // refuse it with the same one line, or give the same mesh bit for bit.
 //
@@ -54,7 +54,7 @@ int main(int argc, char** argv)
   for (const auto& entry : std::filesystem::directory_iterator(argv[1]))
   {
     const std::string ext = entry.path().extension().string();
-    if (ext == ".ply" || ext == ".stl" || ext == ".off")
+    if (ext == ".ply" || ext == ".stl" || ext == ".off" || ext == ".obj")
     {
       files.push_back(entry.path().string());
     }

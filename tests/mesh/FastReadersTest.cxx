@@ -12,6 +12,7 @@
 #include <vtkCellArray.h>
 #include <vtkFloatArray.h>
 #include <vtkNew.h>
+#include <vtkOBJWriter.h>
 #include <vtkPLYWriter.h>
 #include <vtkPlaneSource.h>
 #include <vtkPointData.h>
@@ -226,6 +227,25 @@ TEST(FastReadersTest, OffEqualsTheCheckedReader)
   ExpectSameAsVtk(path, "off");
 }
 
+TEST(FastReadersTest, ObjEqualsVtks)
+{
+  const std::string written = Scratch("sphere.obj");
+  vtkNew<vtkOBJWriter> w;
+  w->SetInputData(Sphere(false));
+  w->SetFileName(written.c_str());
+  ASSERT_EQ(w->Write(), 1);
+  ExpectSameAsVtk(written, "obj");
+  // Groups before the first face, comments, blank lines, a quad.
+  const std::string grouped = Scratch("grouped.obj");
+  WriteText(grouped, "# made by FastReadersTest\nv 0 0 0\nv 1 0 0\nv 1 1 0.5\n\nv 0 1 1e-3\ng first\n"
+                     "f 1 2 3\ng second part\nf 1 3 4\ng\n  f 2 3 4 1 \n");
+  ExpectSameAsVtk(grouped, "obj");
+  // A face before any group: VTK raises its group id from -1 to 0 there.
+  const std::string early = Scratch("early.obj");
+  WriteText(early, "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3\ng later\nf 1 3 4\n");
+  ExpectSameAsVtk(early, "obj");
+}
+
 TEST(FastReadersTest, LeavesWhatItDoesNotReadToTheCheckedPath)
 {
   // Texture coordinates become an array in VTK's reader: not the fast path's.
@@ -234,6 +254,9 @@ TEST(FastReadersTest, LeavesWhatItDoesNotReadToTheCheckedPath)
                 "property float z\nproperty float u\nproperty float v\nelement face 1\n"
                 "property list uchar int vertex_indices\nend_header\n0 0 0 0 0\n1 0 0 1 0\n0 1 0 0 1\n3 0 1 2\n");
   EXPECT_EQ(shadinglab::ReadFast(uv, "ply"), nullptr);
+  const std::string slashed = Scratch("slashed.obj");
+  WriteText(slashed, "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3/1\n");
+  EXPECT_EQ(shadinglab::ReadFast(slashed, "obj"), nullptr);
   // Bad files too: the checked path names their problem.
   const std::string bad = Scratch("bad_index.ply");
   WriteText(bad, "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"

@@ -1,5 +1,5 @@
 # The plugin's mesh reader in pvpython: OpenDataFile picks it for .ply,
-# .stl and .off; it gives VTK's readers' points and cells; a malformed
+# .stl, .off and .obj; it gives VTK's readers' points and cells; a malformed
 # file gives one error line and an empty output, no crash.
 #
 #   pvpython ReaderTest.py PLUGIN DATADIR OUTDIR PVPYTHON
@@ -46,13 +46,15 @@ def same(a, b):
             and ca.shape == cb.shape and (ca == cb).all() and (oa == ob).all())
 
 
-for name, vtk_reader in (('sphere_lowpoly.ply', PLYReader), ('cylinder_8.stl', STLReader)):
+for name, vtk_reader in (('sphere_lowpoly.ply', lambda f: PLYReader(FileNames=[f])),
+                         ('cylinder_8.stl', lambda f: STLReader(FileNames=[f])),
+                         ('corrugated_plane.obj', lambda f: WavefrontOBJReader(FileName=f))):
     path = os.path.join(data, name)
     ours = OpenDataFile(path)
     check(ours.GetXMLName() == 'FastMeshReader',
           'OpenDataFile reads %s with the ShadingLab reader (got %s)' % (name, ours.GetXMLName()))
     a = fetch(ours)
-    b = fetch(vtk_reader(FileNames=[path]))
+    b = fetch(vtk_reader(path))
     check(a.GetNumberOfPolys() > 0 and same(a, b),
           "%s: the same %d points and %d polygons as VTK's reader" % (
               name, a.GetNumberOfPoints(), a.GetNumberOfPolys()))

@@ -31,7 +31,7 @@ int vtkShadingLabMeshReader::CanReadFile(const char* name)
   const auto dot = path.find_last_of('.');
   std::string ext = dot == std::string::npos ? "" : path.substr(dot + 1);
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext == "ply" || ext == "stl" || ext == "off" ? 1 : 0;
+  return ext == "ply" || ext == "stl" || ext == "off" || ext == "obj" ? 1 : 0;
 }
 
 int vtkShadingLabMeshReader::RequestInformation(

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkShadingLabMeshReader
- * @brief   ParaView reader: PLY, STL and OFF at memory speed (ShadingLab)
+ * @brief   ParaView reader: PLY, STL, OFF and OBJ at memory speed (ShadingLab)
  *
  * Reads a mesh file through ShadingLab's ReadMesh: binary and ASCII PLY
- * and STL and OFF by the fast readers (mesh/io/FastReaders.h: the same
- * points, cells and arrays as VTK's vtkPLYReader and vtkSTLReader, read
+ * and STL, OFF and OBJ by the fast readers (mesh/io/FastReaders.h: the same
+ * points, cells and arrays as VTK's vtkPLYReader, vtkSTLReader and vtkOBJReader, read
  * in one walk over a memory map), any other file through the checked VTK
  * path. A file that cannot be read gives one error naming the problem
  * and an empty output. The whole mesh goes to piece 0 (as vtkSTLReader
@@ -33,7 +33,7 @@ public:
   vtkGetStringMacro(FileName);
   ///@}
 
-  /// Whether the extension is one this reader takes (.ply, .stl, .off).
+  /// Whether the extension is one this reader takes (.ply, .stl, .off, .obj).
   int CanReadFile(const char* name);
 
   /// The last read's error, one line ("" after a successful read).

@@ -383,6 +383,11 @@ bool ScanPoints(vtkPoints* points, vtkIdType& firstNonFinite, double box[6])
 
 void ValidateMesh(vtkPolyData* mesh, const std::string& what)
 {
+  ValidateMeshCells(mesh, what, true);
+}
+
+void ValidateMeshCells(vtkPolyData* mesh, const std::string& what, bool checkCells)
+{
   if (!mesh || mesh->GetNumberOfPoints() == 0 || mesh->GetNumberOfPolys() == 0)
   {
     throw MeshError("empty mesh: '" + what + "' has no polygons");
@@ -393,6 +398,10 @@ void ValidateMesh(vtkPolyData* mesh, const std::string& what)
   vtkNew<vtkIdList> ids;
   for (vtkCellArray* cells : { mesh->GetVerts(), mesh->GetLines(), mesh->GetPolys(), mesh->GetStrips() })
   {
+    if (!checkCells)
+    {
+      break; // a fast reader checked them as it parsed
+    }
     const bool polys = cells == mesh->GetPolys();
     // Offsets that do not fit the connectivity (a legacy file declaring
     // more cells than it lists) would make every cell access overflow:
@@ -657,6 +666,7 @@ vtkPolyData* ReadMeshAt(const std::string& path, const ReadOptions& options, int
   }
   const std::string ext = Extension(path);
   vtkSmartPointer<vtkPolyData> mesh;
+  bool readFast = false;
   // VTK readers report problems through vtkErrorMacro and vtkLogger to
   // stderr; silence both so the user sees our one-line message only.
   const int warnings = vtkObject::GetGlobalWarningDisplay();
@@ -687,7 +697,7 @@ vtkPolyData* ReadMeshAt(const std::string& path, const ReadOptions& options, int
   else if ((ext == "ply" || ext == "stl" || ext == "off" || ext == "obj") && FastReadersEnabled() &&
     (mesh = ReadFast(path, ext)))
   {
-    // read at memory speed, checked on the way (FastReaders.h)
+    readFast = true; // read at memory speed, its cells checked on the way (FastReaders.h)
   }
   else if (ext == "ply")
   {
@@ -772,7 +782,7 @@ vtkPolyData* ReadMeshAt(const std::string& path, const ReadOptions& options, int
     triangles->Update();
     mesh->ShallowCopy(triangles->GetOutput());
   }
-  ValidateMesh(mesh, path);
+  ValidateMeshCells(mesh, path, !readFast);
   mesh->Register(nullptr);
   return mesh;
 }

@@ -25,9 +25,11 @@ namespace shadinglab
 namespace
 {
 
-/// The bytes of a face line at least ("f 1 2 3\n"): the polygon arrays are
-/// sized from the file at this density at most, then trimmed.
-constexpr size_t kMinFaceLine = 8;
+/// Bytes of file per polygon the arrays are first sized for: a scan's OBJ
+/// spends ~40 bytes per triangle (a vertex line of ~30 for every two faces
+/// of ~25); 32 over-sizes that a little, the arrays grow past it when a
+/// file is denser and are trimmed at the end.
+constexpr size_t kBytesPerPolygonEstimate = 32;
 
 } // namespace
 
@@ -37,9 +39,7 @@ vtkSmartPointer<vtkPolyData> ReadFastObj(fastread::MappedFile& file)
   std::vector<double> xyz;
   std::vector<int64_t> groupsBefore; // per face: the `g` lines before it
   int64_t groups = 0;
-  // A vertex line is at least 8 bytes, a face line 8: the estimate below
-  // takes the file as faces and is trimmed; the arrays grow past it.
-  const int64_t estimate = static_cast<int64_t>(file.Size() / (4 * kMinFaceLine)) + 1;
+  const int64_t estimate = static_cast<int64_t>(file.Size() / kBytesPerPolygonEstimate) + 1;
   fastread::Polygons out(0, estimate, 3 * estimate);
   int64_t polygons = 0;
   while (text.at < text.end)

@@ -137,7 +137,8 @@ render::Scene PanelScene(CpuMeshCache& cache, const PanelSpec& spec, const ViewS
   scene.mesh = &cache.Get(spec.mesh, view.colorBy);
   const bool scalars = !scene.mesh->scalars.empty() || !scene.mesh->cellScalars.empty();
   scene.colorMap = scalars ? &view.colorMap : nullptr;
-  scene.material = spec.material;
+  // Colour by data drops the highlights, as on every front end.
+  scene.material = render::MaterialForData(spec.material, render::Highlights::Auto, scalars);
   scene.camera = render::CameraFromVtk(view.camera);
   scene.lighting = ViewLighting(view, scene.camera);
   render::ToLocal(cache.Frame, scene.camera);

@@ -68,6 +68,11 @@ void GpuPanel::Configure()
   this->Mapper->SetInputData(this->SpecValue.mesh);
   const render::RenderOptions options = PanelOptions(this->SpecValue, *this->View, 1, 1);
   gl::ConfigureActor(options, this->SpecValue.material, this->Mapper, this->Actor);
+  // Colour by data drops the highlights (render::MaterialForData): the
+  // mapper applies it, knowing whether VTK mapped colours this frame.
+  render::Settings settings = this->Mapper->GetSettings();
+  settings.highlights = render::Highlights::Auto;
+  this->Mapper->SetSettings(settings);
 }
 
 void GpuPanel::OnSpecChanged()

@@ -76,6 +76,10 @@ struct ViewState
   double lightDistance = 0.0;
   /// dw of the one light (eq. 1.1, steradians), as the settings table's default.
   double lightSolidAngle = render::Settings().lightSolidAngle;
+  /// A mesh scene: vtkLightKit's five lights (render::LightKit) scaled by
+  /// lightIntensity, the key light at lightAzimuth and lightElevation;
+  /// otherwise the lecture's one light.
+  bool lightKit = false;
   Vec3<float> background{ 0.32f, 0.34f, 0.43f };
   /// Linear intensity to pixel, as the settings table's default (every
   /// panel, both backends; profiles and error maps read display values).
@@ -93,7 +97,8 @@ render::RenderOptions PanelOptions(const PanelSpec& spec, const ViewState& view,
   int height);
 
 /// The scene's lighting for `camera`: one directional light from the view
-/// state's direction, ambient intensity 1 (the material's ambient sets Ra).
+/// state's direction, or the light kit with its key light there; ambient
+/// intensity 1 (the material's ambient sets Ra).
 Lighting<double> ViewLighting(const ViewState& view, const render::Camera& camera);
 
 } // namespace shadinglab::widgets

@@ -34,6 +34,15 @@ void GpuFacts(render::BackendFacts& facts)
 Lighting<double> ViewLighting(const ViewState& view, const render::Camera& camera)
 {
   Lighting<double> lighting;
+  if (view.lightKit)
+  {
+    lighting = render::LightKit(camera, view.lightIntensity, view.lightAzimuth, view.lightElevation);
+    for (int k = 0; k < lighting.lightCount; ++k)
+    {
+      lighting.lights[k].solidAngle = view.lightSolidAngle;
+    }
+    return lighting;
+  }
   lighting.lightCount = 1;
   lighting.lights[0] =
     render::CameraLight(camera, view.lightAzimuth, view.lightElevation, view.lightIntensity);

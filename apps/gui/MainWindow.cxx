@@ -220,6 +220,7 @@ bool MainWindow::LoadScene(const std::string& name, std::string& error)
   this->View->View().lightElevation = scene.lightElevation;
   this->View->View().lightIntensity = scene.lightIntensity;
   this->View->View().lightDistance = scene.lightDistance;
+  this->View->View().lightKit = scene.lightKit;
   this->View->View().display = scene.display;
   this->ListArrays();
   this->LightAzimuth->setValue(static_cast<int>(scene.lightAzimuth));

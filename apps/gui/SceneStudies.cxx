@@ -52,6 +52,7 @@ widgets::ViewState StudyView(const Scene& scene, const std::vector<widgets::Pane
   view.lightElevation = scene.lightElevation;
   view.lightIntensity = scene.lightIntensity;
   view.lightDistance = scene.lightDistance;
+  view.lightKit = scene.lightKit;
   view.display = scene.display;
   return view;
 }

@@ -514,7 +514,19 @@ Scene MakeScene(const std::string& name, const SceneOptions& options)
   scene.name = name;
   if (scene.usesInput && options.input)
   {
+    // The user's mesh is seen as the CLI and ParaView show it: the default
+    // display transform and the light kit, its key light where vtkLightKit
+    // puts it.
     scene.display = render::RenderOptions().display;
+    scene.lightKit = true;
+    scene.lightAzimuth = render::kLightKitKeyAzimuth;
+    scene.lightElevation = render::kLightKitKeyElevation;
+    scene.lightDistance = 0;
+  }
+  else if (!scene.panels.empty())
+  {
+    scene.explanation += " Lit by one light, as in the lecture: a face turned away from it "
+                         "shows only the ambient term R<sub>a</sub>I<sub>a</sub>.";
   }
   return scene;
 }

@@ -80,6 +80,9 @@ struct Scene
   /// 0: a directional light; > 0: a point light this far from the focal
   /// point, in the light's direction.
   double lightDistance = 0;
+  /// The user's mesh: vtkLightKit's lights as ParaView (render::LightKit);
+  /// the lecture's scenes keep one light and say so in their explanation.
+  bool lightKit = false;
   widgets::ProfileLine line;
   PlotKind plot = PlotKind::Profile;
   bool perceived = false;

@@ -5,7 +5,9 @@
 #include "RenderOutput.h"
 #include "SceneArguments.h"
 
+#include "shadinglab/cpu/SoftwareRenderer.h"
 #include "shadinglab/model/Materials.h"
+#include "shadinglab/render/Fidelity.h"
 
 #include <cstdio>
 #include <iostream>
@@ -95,11 +97,32 @@ int RunRender(int argc, char** argv)
     std::cerr << "shadinglab render: notice: '" << request->input << "': " << request->notices << "\n";
   }
 
+  if (stats.pixelsCovered == 0)
+  {
+    std::cerr << "shadinglab render: notice: the picture is empty: no polygon covers a pixel ("
+              << static_cast<long long>(stats.culled) << " culled, "
+              << static_cast<long long>(stats.clipped) << " clipped by the view, "
+              << static_cast<long long>(stats.degenerate)
+              << " edge-on or degenerate); try another --azimuth/--elevation or --zoom\n";
+  }
   if (stats.fastPhongAsPhong)
   {
     std::cerr << "shadinglab render: notice: fast-phong drew exact Phong: the triangles average "
               << static_cast<long long>(stats.pixelsPerTriangle + 0.5)
               << " pixels, too few for its quadratics to pay (--fast-phong-as-is keeps them)\n";
+  }
+  std::string fidelity;
+  if (args.Has("stats") && request->scene.colorMap)
+  {
+    // docs/model.md eq. 9.3, on the CPU renderer's linear frames.
+    cpu::SoftwareRenderer reference;
+    const render::FidelityResult f =
+      render::MeasureColorFidelity(reference, request->scene, options);
+    char text[160];
+    std::snprintf(text, sizeof text,
+      ",\"color_fidelity\":{\"covered\":%lld,\"unfaithful\":%lld,\"fraction\":%.6f}",
+      static_cast<long long>(f.covered), static_cast<long long>(f.unfaithful), f.Fraction());
+    fidelity = text;
   }
   if (args.Has("stats"))
   {
@@ -111,7 +134,7 @@ int RunRender(int argc, char** argv)
                 "\"fast_phong_as_phong\":%s,\"threads\":%d,"
                 "\"shader_builds\":%d,\"normals_computed\":%s,\"read_ms\":%.3f,"
                 "\"prepare_ms\":%.3f,\"render_ms\":%.3f,\"write_ms\":%.3f,\"total_ms\":%.3f,"
-                "\"peak_rss_read_mb\":%.1f,\"peak_rss_prepare_mb\":%.1f,\"peak_rss_mb\":%.1f%s}\n",
+                "\"peak_rss_read_mb\":%.1f,\"peak_rss_prepare_mb\":%.1f,\"peak_rss_mb\":%.1f%s%s}\n",
       render::BackendName(renderer->GetBackend()), render::ShadingModeName(stats.drawnMode),
       ReflectanceModelName(request->scene.material.model), options.width, options.height, options.ssaa,
       stats.milliseconds, static_cast<long long>(stats.polygons),
@@ -129,7 +152,8 @@ int RunRender(int argc, char** argv)
       stats.normalsComputed || request->normalsMade ? "true" : "false", request->readMs,
       request->prepareMs,
       stats.milliseconds, writeMs, total.Milliseconds(), request->readPeakMb, request->preparePeakMb,
-      PeakRssMb(), stats.autoChoice.empty() ? "" : (",\"auto\":\"" + stats.autoChoice + "\"").c_str());
+      PeakRssMb(), stats.autoChoice.empty() ? "" : (",\"auto\":\"" + stats.autoChoice + "\"").c_str(),
+      fidelity.c_str());
   }
   return 0;
 }

@@ -237,6 +237,26 @@ void ReadAndPrepare(const Arguments& args, const std::string& input, SceneArgume
 
 }
 
+/// The material as drawn on this mesh (render::MaterialForData): a surface
+/// coloured by data loses its highlights and grey ambient unless --ks or
+/// --highlights on asks for them; what was kept or changed is noticed.
+void DataColorFromArguments(const Arguments& args, SceneArguments& scene)
+{
+  render::Settings& settings = scene.settings;
+  const bool colored = scene.scene.colorMap != nullptr;
+  if (colored && args.Has("ks") && !args.Has("highlights"))
+  {
+    settings.highlights = render::Highlights::On; // an explicit --ks is honoured
+  }
+  scene.scene.material = render::MaterialForData(settings.material, settings.highlights, colored);
+  const std::string notice =
+    render::DataColorNotice(settings.material, settings.highlights, colored, settings.preset);
+  if (!notice.empty())
+  {
+    AddNotice(scene, notice);
+  }
+}
+
 /// The camera fitted to the mesh and moved by the camera flags.
 void CameraFromArguments(const Arguments& args, SceneArguments& scene)
 {
@@ -365,8 +385,7 @@ void LightsFromArguments(const Arguments& args, SceneArguments& scene)
   }
   if (lighting.lightCount == 0)
   {
-    lighting.lights[0] = render::KeyLight(camera, lightIntensity);
-    lighting.lightCount = 1;
+    lighting = render::LightKit(camera, lightIntensity);
   }
   else
   {
@@ -413,6 +432,7 @@ std::unique_ptr<SceneArguments> SceneFromArguments(int argc, char** argv, const 
 
   SettingsFromArguments(args, scene);
   ReadAndPrepare(args, input, scene);
+  DataColorFromArguments(args, scene);
   const Stopwatch placing;
   CameraFromArguments(args, scene);
   LightsFromArguments(args, scene);

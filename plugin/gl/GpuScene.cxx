@@ -25,6 +25,9 @@ void ConfigureActor(const render::RenderOptions& options, const Material<double>
   render::Settings settings = mapper->GetSettings();
   settings.render = options;
   settings.material = material;
+  // The Renderer contract: the scene's material is drawn as given (front
+  // ends apply render::MaterialForData before).
+  settings.highlights = render::Highlights::On;
   // The Renderer contract: a mesh without normals gets the CPU renderer's
   // area-weighted normals, not split (front ends split before, as asked).
   settings.normals = render::NormalSettings();

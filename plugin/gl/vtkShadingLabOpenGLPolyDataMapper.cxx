@@ -107,7 +107,7 @@ namespace
 auto ModifyingPart(const sl::render::Settings& s)
 {
   const sl::Material<double>& m = s.material;
-  return std::make_tuple(m.model, m.ks > 0, m.lobeCount, m.IsConductor(), m.spectralCount > 0, s.render.polarizer >= 0,
+  return std::make_tuple(m.model, m.ks > 0, s.highlights, m.lobeCount, m.IsConductor(), m.spectralCount > 0, s.render.polarizer >= 0,
     s.render.lightPolarizer >= 0, s.render.mode,
     s.render.interpolation, s.render.display, s.render.maxError, s.normals.weighting, s.normals.featureAngle,
     s.normals.recompute);
@@ -294,9 +294,19 @@ void vtkShadingLabOpenGLPolyDataMapper::ChooseAutoMode(vtkRenderer* ren, vtkPoly
   in.AutoChoice = choice.why;
 }
 
+sl::Material<double> vtkShadingLabOpenGLPolyDataMapper::DrawnMaterial() const
+{
+  // VTK's MapScalars leaves vertex colours (Colors) or texture coordinates
+  // into the colour map (ColorCoordinates) when the surface is coloured by
+  // data: mapped scalars or direct RGB.
+  const bool colored = this->Colors != nullptr || this->ColorCoordinates != nullptr;
+  const sl::render::Settings& s = this->Internal->Settings;
+  return sl::render::MaterialForData(s.material, s.highlights, colored);
+}
+
 std::string vtkShadingLabOpenGLPolyDataMapper::Variant(vtkRenderer* ren) const
 {
-  const sl::Material<double>& m = this->Internal->Settings.material;
+  const sl::Material<double> m = this->DrawnMaterial();
   const int model = static_cast<int>(m.model);
   int lights = 0;
   bool point = false;
@@ -589,7 +599,7 @@ void vtkShadingLabOpenGLPolyDataMapper::SetMapperShaderParameters(
   {
     return;
   }
-  const sl::Material<double>& m = this->Internal->Settings.material;
+  const sl::Material<double> m = this->DrawnMaterial();
   vtkCamera* camera = ren->GetActiveCamera();
   vtkMatrix4x4* view = camera->GetViewTransformMatrix();
 

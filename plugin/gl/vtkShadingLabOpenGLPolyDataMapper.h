@@ -172,6 +172,9 @@ private:
   /// The mode the shaders evaluate: the drawn mode, or PHONG where the
   /// material's model has no form in it (render::SupportsModel).
   int EffectiveMode() const;
+  /// The settings' material as drawn on this input: without highlights on
+  /// colours from data (render::MaterialForData), once MapScalars has run.
+  shadinglab::Material<double> DrawnMaterial() const;
   /// AUTO: chooses the drawn mode for `input` seen by `ren`.
   void ChooseAutoMode(vtkRenderer* ren, vtkPolyData* input);
   bool Substitute(vtkShader* shader, const std::string& tag, const std::string& code);

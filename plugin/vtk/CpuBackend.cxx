@@ -213,6 +213,9 @@ render::Scene CpuBackend::SceneFor(
     }
     scene.colorMap = &this->Map;
   }
+  // Colours from data (mapped or direct RGB) keep no highlights unless asked.
+  const bool colored = scene.colorMap || !this->Mesh.colors.empty();
+  scene.material = render::MaterialForData(scene.material, settings.highlights, colored);
   return scene;
 }
 

@@ -227,3 +227,72 @@ TEST(ColorByTest, MisspellingsAreOneLineAndExitTwo)
     EXPECT_NE(r.err.find(c.says), std::string::npos) << c.flags << ": " << r.err;
   }
 }
+
+namespace
+{
+/// `--stats`' color_fidelity fraction (docs/model.md eq. 9.3), or -1.
+double FidelityOf(const std::string& stats)
+{
+  const std::string key = "\"color_fidelity\":{";
+  const auto at = stats.find(key);
+  if (at == std::string::npos)
+  {
+    return -1;
+  }
+  const auto fraction = stats.find("\"fraction\":", at);
+  return fraction == std::string::npos ? -1 : std::stod(stats.substr(fraction + 11));
+}
+} // namespace
+
+TEST(ColorByTest, ByDefaultEveryPixelIsTheMapsColourScaledByShading)
+{
+  // docs/model.md section 9: without --ks no white highlight and no grey
+  // ambient is added to the map's colours; an explicit --ks is honoured
+  // (with a notice), and so is --highlights on, whose picture is then
+  // measurably untrue to the map.
+  const std::string field = WriteField();
+  const std::string out = ::testing::TempDir() + "/shadinglab_fidelity.png";
+  const std::string base = "render " + field +
+    " --backend cpu --size 320x240 --mode phong --elevation 40 --stats --color-by height --out " + out;
+  const auto plain = RunCli(base);
+  ASSERT_EQ(plain.status, 0) << plain.err;
+  EXPECT_EQ(FidelityOf(plain.out), 0.0) << plain.out;
+  EXPECT_EQ(plain.err.find("not data"), std::string::npos) << plain.err;
+  for (const std::string extra : { " --ks 0.3", " --highlights on" })
+  {
+    const auto lit = RunCli(base + extra);
+    ASSERT_EQ(lit.status, 0) << lit.err;
+    EXPECT_GT(FidelityOf(lit.out), 0.5) << extra << ": " << lit.out;
+    EXPECT_NE(lit.err.find("highlights on a surface coloured by data"), std::string::npos) << lit.err;
+  }
+  // --highlights auto wins over an explicit --ks.
+  const auto automatic = RunCli(base + " --ks 0.3 --highlights auto");
+  ASSERT_EQ(automatic.status, 0) << automatic.err;
+  EXPECT_EQ(FidelityOf(automatic.out), 0.0) << automatic.out;
+  // A conductor on data is drawn diffuse in the data colour, and says so.
+  const auto gold = RunCli(base + " --material gold");
+  ASSERT_EQ(gold.status, 0) << gold.err;
+  EXPECT_EQ(FidelityOf(gold.out), 0.0) << gold.out;
+  EXPECT_NE(gold.err.find("gold is a conductor"), std::string::npos) << gold.err;
+  // Without colour by data --stats carries no fidelity.
+  const auto uncoloured = RunCli("render " + field + " --backend cpu --size 80x60 --stats --out " + out);
+  ASSERT_EQ(uncoloured.status, 0) << uncoloured.err;
+  EXPECT_EQ(FidelityOf(uncoloured.out), -1) << uncoloured.out;
+}
+
+TEST(ColorByTest, AnEmptyPictureSaysWhy)
+{
+  // The height field seen exactly edge-on: no polygon covers a pixel.
+  const std::string path = PerTestTempPath("shadinglab_flat", ".vtk");
+  {
+    std::ofstream f(path);
+    f << "# vtk DataFile Version 3.0\nflat\nASCII\nDATASET POLYDATA\nPOINTS 4 float\n"
+         "-1 -1 0\n1 -1 0\n1 1 0\n-1 1 0\nPOLYGONS 1 5\n4 0 1 2 3\n";
+  }
+  const std::string out = ::testing::TempDir() + "/shadinglab_empty.png";
+  const auto r = RunCli("render " + path + " --backend cpu --size 80x60 --elevation 90 --out " + out);
+  ASSERT_EQ(r.status, 0) << r.err;
+  EXPECT_NE(r.err.find("the picture is empty"), std::string::npos) << r.err;
+  const auto seen = RunCli("render " + path + " --backend cpu --size 80x60 --out " + out);
+  EXPECT_EQ(seen.err.find("the picture is empty"), std::string::npos) << seen.err;
+}

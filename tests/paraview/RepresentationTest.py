@@ -442,6 +442,9 @@ rep.Kd = 0.7
 rep.Ks = 0.3
 rep.Shininess = 32
 rep.AmbientReflectance = 0.0
+# The whole model on data, highlights included (Auto leaves them off a
+# surface coloured by data: section 7c).
+rep.Highlights = 'On'
 ColorBy(rep, ('POINTS', 'Elevation'))
 # The CLI's default map, named: ParaView 6.0's default is Fast.
 GetColorTransferFunction('Elevation').ApplyPreset('Cool to Warm', True)
@@ -462,11 +465,11 @@ coarse_colored_path = os.path.join(outdir, 'coarse_elevation.vtp')
 SaveData(coarse_colored_path, proxy=coarse_elevation)
 coarse_colored = Show(coarse_elevation, view)
 coarse_colored.Representation = 'ShadingLab Surface'
-for prop in ['ReflectanceModel', 'Kd', 'Ks', 'Shininess', 'AmbientReflectance']:
+for prop in ['ReflectanceModel', 'Kd', 'Ks', 'Shininess', 'AmbientReflectance', 'Highlights']:
     coarse_colored.GetProperty(prop).SetData(rep.GetProperty(prop).GetData())
 ColorBy(coarse_colored, ('POINTS', 'Elevation'))
 coarse_colored.ShadingMode = 'Flat'
-def cpu_parity(label, path, cli_mode, flat=False, model='blinn-phong'):
+def cpu_parity(label, path, cli_mode, flat=False, model='blinn-phong', highlights='on'):
     """The view against `shadinglab render --backend cpu` of `path`
     coloured by Elevation for the same camera, light and material; returns
     the view's picture."""
@@ -475,6 +478,7 @@ def cpu_parity(label, path, cli_mode, flat=False, model='blinn-phong'):
     subprocess.run([cli, 'render', path, '--backend', 'cpu', '--mode', cli_mode,
                     '--model', model, '--kd', '0.7', '--ks', '0.3', '--shininess', '32',
                     '--ambient', '0', '--color-by', 'Elevation', '--display', 'neutral',
+                    '--highlights', highlights,
                     '--size', '%dx%d' % (W, H), '--camera-position', vector(pos),
                     '--focal-point', vector(focal), '--view-up', vector(up),
                     '--view-angle', '%.17g' % camera.GetViewAngle(),
@@ -540,7 +544,7 @@ rep.Visibility = 0
 coarse_colored.Visibility = 0
 cylinder = Show(OpenDataFile(cylinder_colored_path), view)
 cylinder.Representation = 'ShadingLab Surface'
-for prop in ['ReflectanceModel', 'Kd', 'Ks', 'Shininess', 'AmbientReflectance']:
+for prop in ['ReflectanceModel', 'Kd', 'Ks', 'Shininess', 'AmbientReflectance', 'Highlights']:
     cylinder.GetProperty(prop).SetData(rep.GetProperty(prop).GetData())
 cylinder.ShadingMode = 'Phong'
 ColorBy(cylinder, ('POINTS', 'Elevation'))
@@ -551,6 +555,19 @@ Render(view)
 pos, focal, up = camera.GetPosition(), camera.GetFocalPoint(), camera.GetViewUp()
 direction = [p - f for p, f in zip(pos, focal)]
 cpu_parity('creased_cylinder_phong', cylinder_colored_path, 'phong')
+
+# 7c. Highlights Auto (the default): a surface coloured by data is drawn
+#     without its specular lobe or grey ambient (render::MaterialForData),
+#     as the CLI draws it, and differs from the picture with highlights.
+with_highlights = shot('cylinder_highlights_on')
+cylinder.Highlights = 'Auto'
+Render(view)
+without = cpu_parity('creased_cylinder_phong_auto', cylinder_colored_path, 'phong', highlights='auto')
+inside = covered(without) & covered(with_highlights)
+check(numpy.abs(without[inside] - with_highlights[inside]).max() > 40,
+      'Highlights Auto on data drops the highlights (max change %d over %d pixels)' % (
+          numpy.abs(without[inside] - with_highlights[inside]).max(), inside.sum()))
+cylinder.Highlights = 'On'
 
 # 8. The lights' solid angle (LightSolidAngle, eq. 1.1): irradiance I_L dw,
 #    so pi / 2 halves a white Lambertian sphere's brightest pixel (linear,

@@ -349,9 +349,7 @@ int vtkSoftwareShadingRenderer::RequestData(
     }
     else
     {
-      lighting = sl::Lighting<double>();
-      lighting.lights[0] = sl::render::KeyLight(camera, settings.lightIntensity);
-      lighting.lightCount = 1;
+      lighting = sl::render::LightKit(camera, settings.lightIntensity);
       for (int k = 0; k < lighting.lightCount; ++k)
       {
         lighting.lights[k].solidAngle = settings.lightSolidAngle;
@@ -359,7 +357,8 @@ int vtkSoftwareShadingRenderer::RequestData(
       lighting.ambientIntensity = sl::Vec3<double>(1, 1, 1);
     }
     in.Model = sl::ReflectanceModelName(settings.material.model);
-    sl::render::Scene scene{ &mesh, camera, lighting, settings.material };
+    sl::render::Scene scene{ &mesh, camera, lighting,
+      sl::render::MaterialForData(settings.material, settings.highlights, colored) };
     scene.colorMap = colored ? &map : nullptr;
     image = &in.Renderer.Render(scene, options, &in.Stats);
     in.Stats.normalsComputed = in.Stats.normalsComputed || drawn != input;

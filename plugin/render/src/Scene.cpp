@@ -267,6 +267,31 @@ Light<double> KeyLight(const Camera& camera, double intensity)
   return key;
 }
 
+Lighting<double> LightKit(
+  const Camera& camera, double intensity, double keyAzimuthDeg, double keyElevationDeg)
+{
+  // vtkLightKit's defaults (VTK 9.2 to 9.6, Rendering/Core/vtkLightKit.cxx):
+  // KeyLightIntensity and the key-to-fill, key-to-back and key-to-head ratios.
+  constexpr double kKey = 0.75, kKeyToFill = 3.0, kKeyToBack = 3.5, kKeyToHead = 3.0;
+  // Its angles (elevation, azimuth) in the camera's frame: vtkLight's
+  // SetDirectionAngle, which is CameraLight's convention.
+  struct KitLight
+  {
+    double elevation, azimuth, intensity;
+  };
+  const KitLight kit[] = { { keyElevationDeg, keyAzimuthDeg, kKey }, { -75.0, -10.0, kKey / kKeyToFill },
+    { 0.0, 110.0, kKey / kKeyToBack }, { 0.0, -110.0, kKey / kKeyToBack },
+    { 0.0, 0.0, kKey / kKeyToHead } };
+  Lighting<double> lighting;
+  lighting.lightCount = 0;
+  for (const KitLight& light : kit)
+  {
+    lighting.lights[lighting.lightCount++] =
+      CameraLight(camera, light.azimuth, light.elevation, intensity * light.intensity);
+  }
+  return lighting;
+}
+
 Lighting<double> LightsOrHeadlight(const Lighting<double>& lighting, const Camera& camera)
 {
   if (lighting.lightCount > 0)

@@ -448,6 +448,19 @@ void MaterialRows(std::vector<SettingRow>& t)
     t.push_back(r);
   }
   {
+    SettingRow r = Row("highlights", "Highlights", "Highlights", G::Material, K::Choice);
+    r.choices = ChoicesOf(kHighlightModes);
+    r.doc = "draw the specular lobe: auto leaves it off a surface coloured by data (white "
+            "added to a colour map reads as data), on draws it always, off never";
+    r.frontEnds = kCli | kParaView | kMapper;
+    r.metavar = "H";
+    r.set = [](Settings& s, const SettingValue& v) {
+      s.highlights = kHighlightModes[static_cast<int>(v.numbers[0])].value;
+    };
+    r.get = [](const Settings& s) { return Number(static_cast<int>(s.highlights)); };
+    t.push_back(r);
+  }
+  {
     SettingRow r = Row("shininess", "Shininess", "Shininess n", G::Material, K::Real);
     r.min = 0;
     r.max = 1e4;

@@ -122,6 +122,25 @@ CameraBasis BasisOf(const Camera& camera);
 /// light of every front end (CLI, explorer, VTK classes).
 Light<double> KeyLight(const Camera& camera, double intensity = 1.0);
 
+/// vtkLightKit's key light direction in the camera's frame (degrees).
+inline constexpr double kLightKitKeyAzimuth = 10.0, kLightKitKeyElevation = 50.0;
+
+/**
+ * The default lights of every front end that draws a mesh (the CLI, the
+ * explorer's mesh scenes, the VTK classes without vtkLights): vtkLightKit's
+ * geometry and intensities, as ParaView's render view lights by default.
+ * Directional camera lights: key (elevation 50, azimuth 10 degrees,
+ * intensity 0.75), fill (-75, -10; key / 3), two back lights (0, +-110;
+ * key / 3.5 each) and a headlight (key / 3), all scaled by `intensity`.
+ * White: vtkLightKit's warm key and cool fill would tint a colour map's
+ * colours by a few percent (docs/model.md section 9). With it no face
+ * turned toward the camera is unlit (the headlight reaches it). The key
+ * light may be turned (the explorer's light control, as ParaView's Light
+ * Kit panel); the others stay where vtkLightKit puts them.
+ */
+Lighting<double> LightKit(const Camera& camera, double intensity = 1.0,
+  double keyAzimuthDeg = kLightKitKeyAzimuth, double keyElevationDeg = kLightKitKeyElevation);
+
 /// The lights a renderer shades with: `lighting`, or with no light a
 /// headlight (a directional light from the camera, as VTK's automatic light).
 Lighting<double> LightsOrHeadlight(const Lighting<double>& lighting, const Camera& camera);

@@ -14,6 +14,7 @@
 #include "shadinglab/model/Shading.h"
 #include "shadinglab/model/Spectrum.h"
 #include "shadinglab/render/Backend.h"
+#include "shadinglab/render/DataColor.h"
 #include "shadinglab/render/Options.h"
 #include "shadinglab/render/Renderer.h"
 
@@ -81,6 +82,9 @@ struct Settings
   double lightSolidAngle = kPi<double>;
   Material<double> material;
   std::string preset; ///< the preset `material` was started from ("" custom)
+  /// Whether the specular lobe is drawn; Auto leaves it off a surface
+  /// coloured by data (render::MaterialForData, docs/model.md section 9).
+  Highlights highlights = Highlights::Auto;
   /// Fresnel per wavelength (docs/model.md section 7) from the measured
   /// data of `nk` or else of the preset; ApplySetting keeps
   /// material.spectral* in step (ResolveSpectral).

@@ -138,6 +138,17 @@ def main():
     script = os.path.join(out, 'paraview_surface.py')
     with open(script, 'w') as f:
         f.write(PARAVIEW)
+    import platform
+    commit = subprocess.run(['git', '-C', here, 'rev-parse', '--short', 'HEAD'],
+                            capture_output=True, text=True).stdout.strip()
+    dirty = subprocess.run(['git', '-C', here, 'status', '--porcelain', '--untracked-files=no'],
+                           capture_output=True, text=True).stdout.strip()
+    cpu = next((l.split(':', 1)[1].strip() for l in open('/proc/cpuinfo') if l.startswith('model name')), '?')
+    print('Written by `bench/color_fidelity.py`; do not edit. Measured on %s, %d cores, %s; '
+          'date %s, commit %s%s.\n' % (cpu, os.cpu_count(), platform.platform(),
+                                        subprocess.run(['date', '+%Y-%m-%d'], capture_output=True,
+                                                       text=True).stdout.strip(),
+                                        commit, ' with uncommitted changes' if dirty else ''))
     print('| mesh, colour by | fidelity before | fidelity after | mean luminance: ParaView | '
           'CLI before | CLI after |')
     print('|---|---|---|---|---|---|')

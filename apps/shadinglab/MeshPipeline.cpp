@@ -68,6 +68,13 @@ mesh::PreparationOptions MeshPipelineFromArguments(const Arguments& args, bool a
   {
     throw UsageError("--scheme needs --subdivide N");
   }
+  if ((args.Has("weights") || args.Has("normals")) && o.subdivisionLevels > 0)
+  {
+    // Not silently ignored: the refined mesh's normals are the limit
+    // surface's own, whatever weighting was asked for.
+    throw UsageError("--" + std::string(args.Has("weights") ? "weights" : "normals") + " " +
+      weights + " has no effect with --subdivide: the normals then come from the limit surface");
+  }
   return o;
 }
 

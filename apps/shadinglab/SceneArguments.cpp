@@ -177,6 +177,16 @@ void ReadAndPrepare(const Arguments& args, const std::string& input, SceneArgume
   }
   scene.readMs = reading.Milliseconds();
   scene.readPeakMb = PeakRssMb();
+  if (!scene.settings.color.array.empty())
+  {
+    // The arrays of the file as read: preparing adds Normals and
+    // OriginalPointIds, which a misspelt name's error must not list.
+    const std::string problem = render::CheckColorArray(polydata, scene.settings.color, "--");
+    if (!problem.empty())
+    {
+      throw UsageError(problem);
+    }
+  }
   const Stopwatch preparing;
   scene.input = input;
   mesh::PreparationOptions preparation = MeshPipelineFromArguments(args, false);

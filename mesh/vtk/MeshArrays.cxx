@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "MeshArrays.h"
 #include "Orientation.h"
+#include "PolygonTriangulation.h"
 
 #include <vtkAOSDataArrayTemplate.h>
+#include <vtkCellData.h>
 #include <vtkCellArray.h>
 #include <vtkDoubleArray.h>
 #include <vtkFloatArray.h>
@@ -159,6 +161,89 @@ std::vector<int64_t> LineSegments(vtkPolyData* input)
     }
   }
   return segments;
+}
+
+vtkSmartPointer<vtkPolyData> WithConcavePolygonsSplit(vtkPolyData* input, int64_t* split)
+{
+  if (split)
+  {
+    *split = 0;
+  }
+  vtkCellArray* polys = input ? input->GetPolys() : nullptr;
+  vtkPoints* points = input ? input->GetPoints() : nullptr;
+  if (!polys || !points || polys->GetNumberOfCells() == 0 || polys->GetMaxCellSize() <= 3)
+  {
+    return input; // triangles only (scans, isosurfaces): no pass over the cells
+  }
+  auto pointOf = [points](vtkIdType id) {
+    double p[3];
+    points->GetPoint(id, p);
+    return Vec3<double>(p[0], p[1], p[2]);
+  };
+  // First pass: is any polygon concave? (Most meshes: none, nothing copied.)
+  vtkNew<vtkIdList> ids;
+  std::vector<char> concave(static_cast<size_t>(polys->GetNumberOfCells()), 0);
+  int64_t count = 0;
+  for (vtkIdType c = 0; c < polys->GetNumberOfCells(); ++c)
+  {
+    polys->GetCellAtId(c, ids);
+    const vtkIdType n = ids->GetNumberOfIds();
+    if (n > 3 && !IsConvexPolygon(n, [&](int64_t k) { return pointOf(ids->GetId(k)); }))
+    {
+      concave[static_cast<size_t>(c)] = 1;
+      ++count;
+    }
+  }
+  if (count == 0)
+  {
+    return input;
+  }
+  // Cell data is indexed verts, lines, polys, strips: the polygons' part
+  // is rebuilt, the other cells keep theirs (copied first, in order).
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  out->ShallowCopy(input);
+  vtkNew<vtkCellArray> cells;
+  vtkCellData* from = input->GetCellData();
+  vtkNew<vtkCellData> data;
+  data->CopyAllocate(from, polys->GetNumberOfCells() + count);
+  const vtkIdType before = input->GetNumberOfVerts() + input->GetNumberOfLines();
+  vtkIdType next = 0;
+  for (vtkIdType c = 0; c < before; ++c)
+  {
+    data->CopyData(from, c, next++);
+  }
+  std::vector<int64_t> triangles;
+  for (vtkIdType c = 0; c < polys->GetNumberOfCells(); ++c)
+  {
+    polys->GetCellAtId(c, ids);
+    triangles.clear();
+    if (concave[static_cast<size_t>(c)] &&
+      TriangulatePolygon(ids->GetNumberOfIds(), [&](int64_t k) { return pointOf(ids->GetId(k)); },
+        triangles))
+    {
+      for (size_t t = 0; t + 2 < triangles.size(); t += 3)
+      {
+        const vtkIdType tri[3] = { ids->GetId(triangles[t]), ids->GetId(triangles[t + 1]),
+          ids->GetId(triangles[t + 2]) };
+        cells->InsertNextCell(3, tri);
+        data->CopyData(from, before + c, next++);
+      }
+      if (split)
+      {
+        ++*split;
+      }
+      continue;
+    }
+    cells->InsertNextCell(ids);
+    data->CopyData(from, before + c, next++);
+  }
+  for (vtkIdType c = 0; c < input->GetNumberOfStrips(); ++c)
+  {
+    data->CopyData(from, before + polys->GetNumberOfCells() + c, next++);
+  }
+  out->SetPolys(cells);
+  out->GetCellData()->ShallowCopy(data);
+  return out;
 }
 
 } // namespace shadinglab::mesh

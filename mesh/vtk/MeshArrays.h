@@ -36,6 +36,13 @@ void FlatPolygonsFromPolyData(vtkPolyData* input, FlatPolygons& out, bool withPo
 /// strips triangulated (lines and vertices kept when `keepLinesAndVerts`).
 vtkSmartPointer<vtkPolyData> WithoutStrips(vtkPolyData* input, bool keepLinesAndVerts);
 
+/// The input itself when every polygon is convex, else a copy whose concave
+/// polygons are replaced by their ear-clipped triangles
+/// (TriangulatePolygon), each with its polygon's cell data: what a fan
+/// triangulation (VTK's OpenGL mapper) draws correctly. `split`: how many
+/// polygons were.
+vtkSmartPointer<vtkPolyData> WithConcavePolygonsSplit(vtkPolyData* input, int64_t* split = nullptr);
+
 /// The inverse: a cell array holding `numberOfPolygons` polygons given as
 /// offsets (numberOfPolygons + 1 entries, or none for no polygon) and
 /// connectivity, copied.

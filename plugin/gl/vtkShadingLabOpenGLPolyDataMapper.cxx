@@ -60,6 +60,12 @@ struct vtkShadingLabOpenGLPolyDataMapper::Internals
   vtkPolyData* PreparedInput = nullptr;
   int PreparedKind = -1;
   std::array<double, 2> PreparedSettings{ -1.0, -1.0 }; ///< weighting, feature angle
+  /// What is drawn: the prepared input with its concave polygons split
+  /// (mesh::WithConcavePolygonsSplit; VTK fans polygons), made once per
+  /// change of what it came from.
+  vtkSmartPointer<vtkPolyData> Split;
+  vtkPolyData* SplitInput = nullptr;
+  vtkMTimeType SplitFrom = 0;
   std::map<const vtkOpenGLHelper*, std::string> BuiltVariant;
   std::map<const vtkShaderProgram*, std::vector<float>> LastUniforms;
   // AUTO: the input in its local frame with its normals (the input's, else
@@ -377,6 +383,25 @@ void vtkShadingLabOpenGLPolyDataMapper::RenderPieceStart(vtkRenderer* ren, vtkAc
 }
 
 vtkPolyData* vtkShadingLabOpenGLPolyDataMapper::PrepareInput(vtkPolyData* input)
+{
+  vtkPolyData* prepared = this->PrepareNormals(input);
+  Internals& in = *this->Internal;
+  if (!prepared)
+  {
+    return prepared;
+  }
+  if (in.SplitInput != prepared || in.SplitFrom != prepared->GetMTime() || !in.Split)
+  {
+    // VTK's buffers fan every polygon: a concave one (a keyhole, a star)
+    // would be filled over its notches. Its ear-clipped triangles instead.
+    in.Split = sl::mesh::WithConcavePolygonsSplit(prepared);
+    in.SplitInput = prepared;
+    in.SplitFrom = prepared->GetMTime();
+  }
+  return in.Split;
+}
+
+vtkPolyData* vtkShadingLabOpenGLPolyDataMapper::PrepareNormals(vtkPolyData* input)
 {
   const sl::render::NormalSettings& made = this->Internal->Settings.normals;
   const bool flat = this->GetDrawnMode() == FLAT;

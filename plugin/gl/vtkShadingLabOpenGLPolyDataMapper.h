@@ -150,8 +150,11 @@ protected:
     vtkOpenGLHelper& cellBO, vtkRenderer* ren, vtkActor* act) override;
 
   /// The input with the normals the settings ask for (made here when it
-  /// has none, or on request; none in flat mode): what both backends draw.
+  /// has none, or on request; none in flat mode) and its concave polygons
+  /// split into ear-clipped triangles: what both backends draw.
   vtkPolyData* PrepareInput(vtkPolyData* input);
+  /// The normals' part of PrepareInput.
+  vtkPolyData* PrepareNormals(vtkPolyData* input);
   /// A subclass that drew the input another way (the CPU backend) reports
   /// the mode it drew and, for AUTO, why (GetDrawnMode, GetAutoChoice).
   void SetDrawnElsewhere(int mode, const std::string& autoChoice);

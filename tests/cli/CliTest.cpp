@@ -355,6 +355,7 @@ TEST(CliTest, NormalsBadInputExitsTwoWithOneLine)
     "normals " + good + " --weights funny" + out,         // bad weights
     "normals " + good + " --subdivide 9" + out,           // too many levels
     "normals " + good + " --scheme loop" + out,           // scheme without subdivide
+    "normals " + good + " --subdivide 1 --weights angle" + out, // weights the limit surface ignores
     "normals " + kData + "cylinder_8.vtp --subdivide 1 --scheme loop" + out, // loop on quads
     "normals " + good + " --feature-angle 200" + out,     // angle out of range
     "normals " + good + " --weld 5" + out,                // absurd tolerance

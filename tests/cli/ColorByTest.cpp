@@ -226,6 +226,13 @@ TEST(ColorByTest, MisspellingsAreOneLineAndExitTwo)
     EXPECT_EQ(CountLines(r.err), 1) << c.flags << ": " << r.err;
     EXPECT_NE(r.err.find(c.says), std::string::npos) << c.flags << ": " << r.err;
   }
+  // The arrays listed are the file's, not those the normals filter adds
+  // (the field has no normals: phong makes them).
+  const auto r = RunCli("render " + field + " --backend cpu --size 64x48 --mode phong --color-by heigth --out " + out);
+  EXPECT_EQ(r.status, 2);
+  EXPECT_NE(r.err.find("point arrays: height, flow;"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("Normals"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("OriginalPointIds"), std::string::npos) << r.err;
 }
 
 namespace

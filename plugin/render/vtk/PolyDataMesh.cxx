@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "PolyDataMesh.h"
 
+#include "PolygonTriangulation.h"
+
 #include "Geometry.h"
 
 #include <vtkCellArray.h>
@@ -317,7 +319,8 @@ void CopyField(vtkPolyData* pd, const ScalarField& field, const std::vector<vtkI
 
 /// Polygons the renderers cannot take whole (concave ones, which a fan or
 /// a scanline pairing of one span would fill wrongly, and ones with more
-/// than kMaxWholePolygon vertices) are triangulated by ear cutting; the
+/// than kMaxWholePolygon vertices) are triangulated by ear clipping
+/// (mesh::TriangulatePolygon: keyholes, stars, combs, collinear runs); the
 /// triangles keep their polygon's cell normal. `polygonOf` maps back.
 void ConvertPolygons(vtkPolyData* pd, Mesh& mesh, std::vector<vtkIdType>& polygonOf)
 {
@@ -327,23 +330,30 @@ void ConvertPolygons(vtkPolyData* pd, Mesh& mesh, std::vector<vtkIdType>& polygo
   mesh.connectivity.reserve(static_cast<size_t>(polys->GetNumberOfConnectivityIds()));
   polygonOf.reserve(static_cast<size_t>(polys->GetNumberOfCells()));
   vtkNew<vtkIdList> ids;
-  vtkNew<vtkPolygon> polygon;
-  vtkNew<vtkIdList> triangles;
+  std::vector<int64_t> triangles;
+  vtkPoints* points = pd->GetPoints();
   for (vtkIdType c = 0; c < polys->GetNumberOfCells(); ++c)
   {
     polys->GetCellAtId(c, ids);
     const vtkIdType n = ids->GetNumberOfIds();
-    if (n > 3 && (n > kMaxWholePolygon || !IsConvex(pd->GetPoints(), ids)))
+    if (n > 3 && (n > kMaxWholePolygon || !IsConvex(points, ids)))
     {
-      polygon->Initialize(static_cast<int>(n), ids->GetPointer(0), pd->GetPoints());
-      triangles->Reset();
-      if (polygon->EarCutTriangulation(triangles) && triangles->GetNumberOfIds() >= 3)
+      triangles.clear();
+      const bool split = mesh::TriangulatePolygon(
+        n,
+        [&](int64_t k) {
+          double p[3];
+          points->GetPoint(ids->GetId(k), p);
+          return Vec3<double>(p[0], p[1], p[2]);
+        },
+        triangles);
+      if (split)
       {
-        for (vtkIdType t = 0; t + 2 < triangles->GetNumberOfIds(); t += 3)
+        for (size_t t = 0; t + 2 < triangles.size(); t += 3)
         {
           for (int k = 0; k < 3; ++k)
           {
-            mesh.connectivity.push_back(ids->GetId(triangles->GetId(t + k)));
+            mesh.connectivity.push_back(ids->GetId(triangles[t + k]));
           }
           mesh.offsets.push_back(static_cast<int64_t>(mesh.connectivity.size()));
           polygonOf.push_back(c);
@@ -480,6 +490,27 @@ vtkSmartPointer<vtkFloatArray> FloatArray(const std::vector<float>& values, cons
 }
 
 } // namespace
+
+std::string CheckColorArray(
+  vtkPolyData* polydata, const ColorBySettings& color, const std::string& prefix)
+{
+  ScalarField field;
+  std::string problem = ParseScalarField(color.array, field);
+  if (!problem.empty())
+  {
+    return problem;
+  }
+  try
+  {
+    bool cells = false;
+    FindField(polydata, field, cells);
+  }
+  catch (const std::invalid_argument& e)
+  {
+    return prefix + "color-by: " + e.what();
+  }
+  return "";
+}
 
 std::string MeshColoredBy(vtkPolyData* polydata, WorldFrame& frame, const ColorBySettings& color,
   const std::string& prefix, Mesh& mesh, ColorMap& map, std::string& title)

@@ -71,6 +71,15 @@ std::string MeshColoredBy(vtkPolyData* polydata, WorldFrame& frame, const ColorB
   const std::string& prefix, Mesh& mesh, ColorMap& map, std::string& title);
 
 /**
+ * MeshColoredBy's check of the array alone: "" when `polydata` has it (and
+ * the component), or the same one-line error. Front ends check the mesh as
+ * read, before preparing it adds arrays of its own (Normals,
+ * OriginalPointIds) that an error listing the arrays would name.
+ */
+std::string CheckColorArray(vtkPolyData* polydata, const ColorBySettings& color,
+  const std::string& prefix);
+
+/**
  * The inverse: points, point normals (active), colours as a float RGB
  * array in [0, 1] (active scalars, to be mapped as direct scalars), polygons
  * and cell normals (active), and the scalars or cellScalars as a point or

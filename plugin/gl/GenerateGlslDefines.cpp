@@ -50,6 +50,7 @@ int main(int argc, char** argv)
   define("SL_MIN_VOH", sl::kMinVoH<double>);
   define("SL_MIN_NORMAL_LENGTH_SQ", sl::kMinNormalLengthSq<double>);
   define("SL_TINY_DENOMINATOR", sl::kTinyDenominator<double>);
+  define("SL_MIN_FRESNEL_GAP", sl::kMinFresnelGap<double>);
   define("SL_POLARIZER_TRANSMITTANCE", sl::kPolarizerTransmittance<double>);
   define("SL_NEUTRAL_F90", sl::render::kNeutralF90);
   define("SL_NEUTRAL_START_COMPRESSION", sl::render::kNeutralStartCompression);

@@ -340,6 +340,7 @@ std::string vtkShadingLabOpenGLPolyDataMapper::Variant(vtkRenderer* ren) const
     << "#define SL_SPECULAR " << (specular ? 1 : 0) << "\n"
     << "#define SL_LOBE_COUNT " << std::max(1, std::min(m.lobeCount, sl::kMaxLobes)) << "\n"
     << "#define SL_CONDUCTOR " << (m.IsConductor() ? 1 : 0) << "\n"
+    << "#define SL_TINT " << (m.albedoTintsFresnel ? 1 : 0) << "\n"
     << "#define SL_SPECTRAL " << (m.spectralCount > 0 ? 1 : 0) << "\n"
     << "#define SL_ANALYSER " << (this->Internal->Settings.render.polarizer >= 0 ? 1 : 0) << "\n"
     << "#define SL_LIGHT_POLARIZER " << (this->Internal->Settings.render.lightPolarizer >= 0 ? 1 : 0) << "\n"

@@ -975,6 +975,31 @@ TEST(GpuParityGLTest, ColourByPointAndCellDataBothBackends)
       EXPECT_GT(plain.mean, 10.0) << what << ": colour by data changes the picture";
     }
   }
+  // A metal coloured by data (docs/model.md eq. 9.4: the data colour as its
+  // Fresnel F0, a tinted surround), polarized or not, on both backends.
+  const sl::Material<double> gold = render::MaterialForData(
+    sl::FindMaterialPreset("gold")->material, render::Highlights::Auto, true);
+  ASSERT_TRUE(gold.albedoTintsFresnel);
+  for (auto mode : { render::ShadingMode::Gouraud, render::ShadingMode::Phong })
+  {
+    for (double polarizer : { -1.0, 30.0 })
+    {
+      opt.mode = mode;
+      opt.polarizer = polarizer;
+      render::Scene scene{ &mesh, Camera(), Lights(false), gold, &map };
+      const render::Image ref = cpuRenderer.Render(scene, opt);
+      const auto d = Compare(ref, gpuRenderer.Render(scene, opt));
+      const std::string what = std::string("tinted gold, ") + render::ShadingModeName(mode) +
+        (polarizer >= 0 ? ", analyser at 30 deg" : "");
+      EXPECT_GT(d.pixels, 10000) << what;
+      EXPECT_LE(d.mean, kMeanThreshold) << what;
+      EXPECT_LE(d.p99, kP99Threshold) << what;
+      // The tint is there: untinted gold differs.
+      scene.material.albedoTintsFresnel = false;
+      EXPECT_GT(Compare(ref, cpuRenderer.Render(scene, opt)).mean, 10.0) << what;
+    }
+  }
+  opt.polarizer = -1.0;
 }
 
 namespace

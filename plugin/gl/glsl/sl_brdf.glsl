@@ -206,3 +206,12 @@ vec3 HalfVector(vec3 L, vec3 V, vec3 N)
   bool defined = lengthSq >= SL_MIN_HALF_VECTOR_LENGTH * SL_MIN_HALF_VECTOR_LENGTH;
   return defined ? s * inversesqrt(max(lengthSq, SL_TINY_DENOMINATOR)) : N;
 }
+
+// glTF 2.0's metallic convention on the exact Fresnel term (docs/model.md
+// eq. 9.4; Shading.h F_Tinted): the data colour c at normal incidence,
+// rising to white as the metal's own F rises from its F0.
+vec3 F_Tinted(vec3 F, vec3 F0, vec3 c)
+{
+  vec3 w = clamp((F - F0) / max(vec3(1.0) - F0, vec3(SL_MIN_FRESNEL_GAP)), 0.0, 1.0);
+  return c + (vec3(1.0) - c) * w;
+}

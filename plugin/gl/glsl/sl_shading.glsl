@@ -156,6 +156,21 @@ vec3 F_Polarized(float cosTheta_i, vec3 L, vec3 V)
 }
 #endif
 
+#if SL_MODEL == SL_MODEL_COOK_TORRANCE && SL_SPECULAR
+// F at cos(theta_i) (Shading.h Material::Fresnel).
+vec3 SlFresnel(float cosTheta_i)
+{
+#if SL_SPECTRAL
+  return F_Spectral(cosTheta_i, slSpectralEta, slSpectralK, slSpectralWeight);
+#elif SL_CONDUCTOR
+  return F_RGB(cosTheta_i, slEta, slK);
+#else
+  return vec3(F_Dielectric(cosTheta_i, slEta.x), F_Dielectric(cosTheta_i, slEta.y),
+    F_Dielectric(cosTheta_i, slEta.z));
+#endif
+}
+#endif
+
 // kd Rd + ks Rs for one pair of directions (Shading.h EvaluateBrdf;
 // docs/model.md eq. 1.2).
 vec3 EvaluateBrdf(vec3 diffuseColor, vec3 N, vec3 L, vec3 V)
@@ -191,18 +206,22 @@ vec3 EvaluateBrdf(vec3 diffuseColor, vec3 N, vec3 L, vec3 V)
   float VoH = max(dot(V, H), 0.0);
   float D = D_BeckmannMixture(NoH, slLobeWeight, slLobeM, SL_LOBE_COUNT);
   float G = G_CookTorrance(NoH, NoV, NoL, VoH);
-#if SL_SPECTRAL
-  vec3 F = F_Spectral(VoH, slSpectralEta, slSpectralK, slSpectralWeight);
-#elif SL_CONDUCTOR
-  vec3 F = F_RGB(VoH, slEta, slK);
-#else
-  vec3 F = vec3(F_Dielectric(VoH, slEta.x), F_Dielectric(VoH, slEta.y), F_Dielectric(VoH, slEta.z));
+  vec3 F = SlFresnel(VoH);
+#if SL_TINT
+  // The data colour as F0 (eq. 9.4, Shading.h F_Tinted).
+  vec3 Ft = F_Tinted(F, SlFresnel(1.0), diffuseColor);
 #endif
   float DG = Fs_CookTorrance(1.0, D, G, NoL, NoV, slJacobian);
 #if SL_ANALYSER || SL_LIGHT_POLARIZER
   // Polarized (eq. 8.2-8.6; EvaluateBrdf in Shading.h); diffuse reflection
   // depolarizes: half of it passes an analyser.
+#if SL_TINT
+  F = F_Polarized(VoH, L, V) * Ft / max(F, vec3(SL_TINY_DENOMINATOR));
+#else
   F = F_Polarized(VoH, L, V);
+#endif
+#elif SL_TINT
+  F = Ft;
 #endif
 #if SL_ANALYSER
   diffuse *= SL_POLARIZER_TRANSMITTANCE;
@@ -218,6 +237,9 @@ vec3 Shade(vec3 diffuseColor, vec3 P, vec3 N, vec3 V)
   vec3 result = SL_POLARIZER_TRANSMITTANCE * slAmbient; // unpolarized ambient light
 #else
   vec3 result = slAmbient;
+#endif
+#if SL_TINT
+  result *= diffuseColor; // eq. 9.4: the surroundings in the data colour
 #endif
   for (int j = 0; j < SL_LIGHT_COUNT; ++j)
   {

@@ -43,9 +43,16 @@ FidelityResult CompareWithMap(
       const double a = bins > 1 ? t - k : 0.0;
       const Vec3<float>& c0 = map.colors[static_cast<size_t>(k)];
       const Vec3<float>& c1 = map.colors[static_cast<size_t>(std::min(bins - 1, k + 1))];
-      expected = Vec3<double>(c0.x + a * (c1.x - c0.x), c0.y + a * (c1.y - c0.y),
-        c0.z + a * (c1.z - c0.z));
-      expected = Vec3<double>(expected.x * W[0], expected.y * W[1], expected.z * W[2]);
+      // The map's colour under the lights' colour (W's hue), then the
+      // brightness s >= 0 that fits P best: P must be s times it.
+      const double hue[3] = { W[0] / W[c], W[1] / W[c], W[2] / W[c] };
+      const Vec3<double> colour((c0.x + a * (c1.x - c0.x)) * hue[0],
+        (c0.y + a * (c1.y - c0.y)) * hue[1], (c0.z + a * (c1.z - c0.z)) * hue[2]);
+      const double norm = Dot(colour, colour);
+      const double s = norm > 0
+        ? std::max(0.0, (P[0] * colour.x + P[1] * colour.y + P[2] * colour.z) / norm)
+        : 0.0;
+      expected = colour * s;
     }
     const bool faithful = std::abs(P[0] - expected.x) <= kFidelityTolerance &&
       std::abs(P[1] - expected.y) <= kFidelityTolerance &&

@@ -87,6 +87,13 @@ constexpr T kTinyDenominator = T(1e-30);
 template <typename T>
 constexpr T kPolarizerTransmittance = T(0.5);
 
+/// Floor of 1 - F0 in the tinted Fresnel term (docs/model.md eq. 9.4):
+/// real metals reflect at most ~0.98 at normal incidence (silver), so the
+/// floor only ever acts on a perfect mirror (F0 = 1, where F = F0 at every
+/// angle and the rise is 0 anyway); it keeps 0 / 0 from any pixel.
+template <typename T>
+constexpr T kMinFresnelGap = T(1e-6);
+
 /// Maximum number of Beckmann lobes in a mixture D = sum_k w_k D(m_k) and of
 /// lights in one evaluation; fixed so the GPU uniform arrays match.
 constexpr int kMaxLobes = 4;

@@ -110,6 +110,10 @@ struct Material
   /// Fresnel (complex index eta + i k).
   Vec3<T> k{ T(0), T(0), T(0) };
   SpecularVariant variant = SpecularVariant::CookTorrance1982;
+  /// A conductor coloured by data (render::MaterialForData): the per-point
+  /// colour rho becomes the Fresnel term's F0 and tints the ambient term
+  /// (glTF 2.0's metallic convention; docs/model.md eq. 9.4).
+  bool albedoTintsFresnel = false;
 
   /// Fresnel per wavelength (docs/model.md eq. 7.3): with spectralCount > 0
   /// F = sum_i spectralWeight[i] F(cos, spectralEta[i], spectralK[i])
@@ -140,6 +144,7 @@ struct Material
     out.eta = Vec3<U>(eta);
     out.k = Vec3<U>(k);
     out.variant = variant;
+    out.albedoTintsFresnel = albedoTintsFresnel;
     // Only the samples in use: the wide kernel casts the material to
     // every lane once per pixel queue.
     out.spectralCount = spectralCount;
@@ -183,6 +188,23 @@ struct Material
       : F_RGB(cosTheta_i, eta, k);
   }
 };
+
+/**
+ * glTF 2.0's metallic convention on the exact Fresnel term (docs/model.md
+ * eq. 9.4; Khronos glTF 2.0 specification, appendix B, "metal_brdf"):
+ * F_t = c + (1 - c) w, w = clamp((F - F0) / max(1 - F0, kMinFresnelGap),
+ * 0, 1), per channel: the data colour c at normal incidence, rising to
+ * white at grazing as the metal's own F rises from its F0.
+ */
+template <typename T>
+SL_INLINE Vec3<T> F_Tinted(const Vec3<T>& F, const Vec3<T>& F0, const Vec3<T>& c)
+{
+  auto rise = [](const T& f, const T& f0) {
+    return Min(Max((f - f0) / Max(T(1) - f0, T(kMinFresnelGap<ScalarOf<T>>)), T(0)), T(1));
+  };
+  const Vec3<T> w(rise(F.x, F0.x), rise(F.y, F0.y), rise(F.z, F0.z));
+  return c + (Vec3<T>(T(1), T(1), T(1)) - c) * w;
+}
 
 /**
  * Checks a material against the model's domain. Returns an empty string when
@@ -533,12 +555,25 @@ SL_INLINE Vec3<T> EvaluateBrdf(
         // it passes an analyser.
         const Analyser<T>* a = analyser && analyser->on ? analyser : nullptr;
         const T DG = Fs_CookTorrance(T(1), D, G, NoL, NoV, material.variant);
-        f = diffuse * T(a ? kPolarizerTransmittance<ScalarOf<T>> : 1) +
-          F_Polarized(material, VoH, L, V, a, lightPolarizer && lightPolarizer->on ? lightPolarizer : nullptr) *
-            (material.ks * DG);
+        Vec3<T> polarized =
+          F_Polarized(material, VoH, L, V, a, lightPolarizer && lightPolarizer->on ? lightPolarizer : nullptr);
+        if (material.albedoTintsFresnel)
+        {
+          // The tint scales what passes, channel by channel, as it scales F.
+          const Vec3<T> F1 = material.Fresnel(VoH);
+          const Vec3<T> Ft = F_Tinted(F1, material.Fresnel(T(1)), diffuseColor);
+          const T tiny(kTinyDenominator<ScalarOf<T>>);
+          polarized = Vec3<T>(polarized.x * Ft.x / Max(F1.x, tiny), polarized.y * Ft.y / Max(F1.y, tiny),
+            polarized.z * Ft.z / Max(F1.z, tiny));
+        }
+        f = diffuse * T(a ? kPolarizerTransmittance<ScalarOf<T>> : 1) + polarized * (material.ks * DG);
         break;
       }
       F = material.Fresnel(VoH);
+      if (material.albedoTintsFresnel)
+      {
+        F = F_Tinted(F, material.Fresnel(T(1)), diffuseColor);
+      }
       const T DG = Fs_CookTorrance(T(1), D, G, NoL, NoV, material.variant);
       f = diffuse + F * (material.ks * DG);
       break;
@@ -572,6 +607,10 @@ SL_INLINE Vec3<T> Shade(
   // The ambient light is unpolarized: half passes an analyser.
   Vec3<T> result = material.ambient * lighting.ambientIntensity *
     T(analyser ? kPolarizerTransmittance<ScalarOf<T>> : ScalarOf<T>(1));
+  if (material.albedoTintsFresnel)
+  {
+    result = result * diffuseColor; // eq. 9.4: the surroundings in the data colour
+  }
   for (int j = 0; j < lighting.lightCount; ++j)
   {
     Vec3<T> L, irradiance;

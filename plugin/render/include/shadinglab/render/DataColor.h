@@ -35,6 +35,9 @@ inline constexpr EnumName<Highlights> kHighlightModes[] = {
  * coloured by data the grey ambient Ra goes too (ParaView's Surface:
  * Specular 0, Ambient 0, Diffuse 1), so every pixel is s * map(value) with
  * s in [0, 1]. A Lambert or Lommel-Seeliger material has no lobe to drop.
+ * A Cook-Torrance conductor coloured by data with highlights Auto keeps its
+ * highlights instead, the data colour as its Fresnel F0 and tinting a grey
+ * surround (eq. 9.4, Material::albedoTintsFresnel), as glTF draws metals.
  */
 Material<double> MaterialForData(const Material<double>& material, Highlights highlights,
   bool coloredByData);

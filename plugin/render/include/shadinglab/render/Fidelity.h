@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // How true a picture coloured by data is to its colour map (docs/model.md
 // eq. 9.3): the share of covered pixels whose colour is not the map's
-// colour at the pixel's value, scaled by shading.
+// colour at the pixel's value times a brightness s >= 0.
 #pragma once
 
 #include "shadinglab/render/Image.h"
@@ -13,7 +13,7 @@
 namespace shadinglab::render
 {
 
-/// How far (linear, any channel) a pixel may be from shade x map(value) and
+/// How far (linear, any channel) a pixel may be from s x map(value) and
 /// still be true to the map: 2/255, twice an 8-bit step, so float rounding
 /// and supersampled edges where two bins mix never count, while a white
 /// highlight or a grey ambient term (Ra Ia = 0.05 by default) always does.
@@ -25,7 +25,7 @@ inline constexpr double kFidelityUnlit = 1e-4;
 struct FidelityResult
 {
   int64_t covered = 0;    ///< pixels drawn
-  int64_t unfaithful = 0; ///< of those, not shade x map(value)
+  int64_t unfaithful = 0; ///< of those, not s x map(value)
   double Fraction() const
   {
     return covered > 0 ? static_cast<double>(unfaithful) / static_cast<double>(covered) : 0.0;
@@ -36,9 +36,10 @@ struct FidelityResult
  * Compares `picture` (linear) with W, the same view drawn with a white map
  * and without highlights or ambient (render::MaterialForData, Off), and Q,
  * drawn so with a grey ramp over the map's bins: the pixel's value is
- * t = Q / W, and a pixel is true to the map when |P - W x map(t)| <=
- * kFidelityTolerance in every channel (eq. 9.3). Light colours cancel: W
- * carries them.
+ * t = Q / W, and a pixel is true to the map when |P - s map(t)| <=
+ * kFidelityTolerance in every channel for the best s >= 0 (eq. 9.3): any
+ * brightness, no other hue. Light colours cancel: map(t) is taken under
+ * W's hue.
  */
 FidelityResult CompareWithMap(
   const Image& picture, const Image& white, const Image& ramp, const ColorMap& map);

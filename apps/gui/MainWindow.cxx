@@ -14,6 +14,7 @@
 #include "ShadingPanel.h"
 
 #include "MeshIO.h"
+#include "VtkCamera.h"
 #include "shadinglab/model/Materials.h"
 
 #include <cstring>
@@ -37,6 +38,7 @@
 #include <QMessageBox>
 #include <QMimeData>
 #include <QScrollArea>
+#include <QScrollBar>
 #include <QSlider>
 #include <QSpinBox>
 #include <QSplitter>
@@ -46,11 +48,23 @@
 #include <QTimer>
 #include <QVBoxLayout>
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
 namespace shadinglab::gui
 {
+
+namespace
+{
+/// The docks' widths in pixels (the controls' at least, or as wide as they
+/// need): at 1280 x 720 the two leave the panels more than half the width.
+constexpr int kLectureDockWidth = 220;
+constexpr int kControlsDockWidth = 250;
+/// The characters a closed choice box shows ("Perspective-c..."): enough
+/// to tell its choices apart.
+constexpr int kChoiceCharacters = 10;
+} // namespace
 
 namespace
 {
@@ -106,13 +120,14 @@ MainWindow::MainWindow(const SceneOptions& options)
     item->setToolTip(info.summary);
   }
   this->SceneNames->setMaximumHeight(230);
-  left->setMaximumWidth(250);
+  left->setMaximumWidth(kLectureDockWidth);
   leftLayout->addWidget(new QLabel("<b>Scenes</b>"));
   leftLayout->addWidget(this->SceneNames);
   leftLayout->addWidget(this->Explanation, 1);
   auto* leftDock = new QDockWidget("Lecture", this);
   leftDock->setWidget(left);
-  leftDock->setFeatures(QDockWidget::NoDockWidgetFeatures);
+  leftDock->setObjectName("LectureDock");
+  leftDock->setFeatures(QDockWidget::DockWidgetClosable);
   this->addDockWidget(Qt::LeftDockWidgetArea, leftDock);
   connect(this->SceneNames, &QListWidget::currentTextChanged, this, [this](const QString& name) {
     if (this->Updating || name.toStdString() == this->Current.name)
@@ -128,16 +143,46 @@ MainWindow::MainWindow(const SceneOptions& options)
 
   auto* rightDock = new QDockWidget("Controls", this);
   auto* scroll = new QScrollArea;
-  scroll->setWidget(this->BuildControls());
+  QWidget* controlsRoot = this->BuildControls();
+  // Choices shrink to a few characters (their full text in the popup), so
+  // the dock's width is the panels', not the longest choice's.
+  for (QComboBox* box : controlsRoot->findChildren<QComboBox*>())
+  {
+    box->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    box->setMinimumContentsLength(kChoiceCharacters);
+  }
+  // A long label goes above its field rather than widening the dock.
+  for (QFormLayout* form : controlsRoot->findChildren<QFormLayout*>())
+  {
+    form->setRowWrapPolicy(QFormLayout::WrapLongRows);
+  }
+  scroll->setWidget(controlsRoot);
   scroll->setWidgetResizable(true);
-  scroll->setMinimumWidth(300);
+  // As narrow as the controls can be (never clipped: no horizontal bar).
+  const int controlsWidth = std::max(kControlsDockWidth,
+    controlsRoot->minimumSizeHint().width() + scroll->verticalScrollBar()->sizeHint().width() +
+      2 * scroll->frameWidth());
+  scroll->setMinimumWidth(controlsWidth);
   scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
   rightDock->setWidget(scroll);
-  rightDock->setFeatures(QDockWidget::NoDockWidgetFeatures);
+  rightDock->setObjectName("ControlsDock");
+  rightDock->setFeatures(QDockWidget::DockWidgetClosable);
   // The wheel scrolls the dock; it changes a control only with its focus.
   new widgets::WheelGuard(scroll);
   this->addDockWidget(Qt::RightDockWidgetArea, rightDock);
   this->BuildMenus();
+  // Both docks fold away (View menu, F7 and F8): the panels take the width.
+  QMenu* panes = this->menuBar()->addMenu("&Panes");
+  QAction* lecture = leftDock->toggleViewAction();
+  lecture->setShortcut(QKeySequence(Qt::Key_F7));
+  QAction* controls = rightDock->toggleViewAction();
+  controls->setShortcut(QKeySequence(Qt::Key_F8));
+  panes->addAction(lecture);
+  panes->addAction(controls);
+  // Once shown (the main window lays docks out from their size hints).
+  QTimer::singleShot(0, this, [this, leftDock, rightDock, controlsWidth] {
+    this->resizeDocks({ leftDock, rightDock }, { kLectureDockWidth, controlsWidth }, Qt::Horizontal);
+  });
 
   this->PlotTimer->setSingleShot(true);
   this->PlotTimer->setInterval(kPlotDelayMs);
@@ -156,8 +201,8 @@ void MainWindow::BuildMenus()
 {
   QMenu* file = this->menuBar()->addMenu("&File");
   file->addAction("&Open mesh...", this, [this] {
-    const QString path = QFileDialog::getOpenFileName(this, "Open a mesh", QString(),
-      "Meshes (*.vtp *.vtk *.vtu *.ply *.obj *.stl *.off);;All files (*)");
+    const QString path =
+      QFileDialog::getOpenFileName(this, "Open a mesh", QString(), MainWindow::MeshFileFilter());
     std::string error;
     if (!path.isEmpty() && !this->OpenMesh(path.toStdString(), error))
     {
@@ -195,6 +240,16 @@ void MainWindow::BuildMenus()
     }
     this->View->RenderAll();
   });
+}
+
+QString MainWindow::MeshFileFilter()
+{
+  QStringList patterns;
+  for (const std::string& ext : ReadableExtensions())
+  {
+    patterns << QString("*.%1").arg(QString::fromStdString(ext));
+  }
+  return QString("Meshes (%1);;All files (*)").arg(patterns.join(' '));
 }
 
 bool MainWindow::LoadScene(const std::string& name, std::string& error)
@@ -282,12 +337,27 @@ void MainWindow::ReloadScene()
   }
   std::string error;
   const std::string name = this->Current.name;
+  // What the user set that the scene's own defaults would overwrite.
+  const widgets::ViewState before = this->View->View();
+  const render::Camera camera = render::CameraFromVtk(before.camera);
   this->Current.name.clear();
   if (!this->LoadScene(name, error))
   {
     this->statusBar()->showMessage(QString::fromStdString(error));
     QMessageBox::warning(this, "ShadingLab", QString::fromStdString(error));
+    return;
   }
+  widgets::ViewState& view = this->View->View();
+  view.lightAzimuth = before.lightAzimuth;
+  view.lightElevation = before.lightElevation;
+  view.lightIntensity = before.lightIntensity;
+  this->Updating = true;
+  this->LightAzimuth->setValue(static_cast<int>(before.lightAzimuth));
+  this->LightElevation->setValue(static_cast<int>(before.lightElevation));
+  this->LightIntensity->setValue(before.lightIntensity);
+  this->Updating = false;
+  this->View->SetCamera(camera);
+  this->View->RenderAll();
 }
 
 bool MainWindow::OpenMesh(const std::string& path, std::string& error)
@@ -339,9 +409,19 @@ void MainWindow::OnRotation(int degrees)
 
 void MainWindow::OnPanelSelected(int index)
 {
-  if (index < 0 || index >= this->View->PanelCount())
+  const bool any = index >= 0 && index < this->View->PanelCount();
+  // A scene without panels (scanline, brdf) has no panel to set: its
+  // controls show nothing of the previous scene's.
+  for (QWidget* control : std::initializer_list<QWidget*>{ this->Mode, this->Backend,
+         this->Interpolation, this->Scan, this->ScanPrecision, this->Editor })
   {
-    this->PanelLabel->setText("(no panel)");
+    control->setEnabled(any);
+  }
+  if (!any)
+  {
+    this->PanelLabel->setText("(this scene has no shaded panel)");
+    this->MaxError->setEnabled(false);
+    this->Editor->SetMaterial(Material<double>());
     return;
   }
   const widgets::ShadingPanel* panel = this->View->Panel(index);

@@ -63,6 +63,12 @@ public:
   const Scene& CurrentScene() const { return this->Current; }
   /// The current plot's numbers as CSV (profile, study or lobes).
   std::string PlotCsv() const;
+  /// File > Open's filter: every extension the reader takes
+  /// (ReadableExtensions, the list of the CLI's help).
+  static QString MeshFileFilter();
+  /// Rebuilds the current scene for a changed option, keeping the light
+  /// and the camera the user set (one control never resets another).
+  void ReloadScene();
 
 protected:
   void dragEnterEvent(QDragEnterEvent* event) override;
@@ -85,7 +91,6 @@ private:
   void OnPanelEdited();
   void UpdatePlot();
   void UpdateBrdfPlot();
-  void ReloadScene();
   /// orientation: new quads in the same panels (the study and the widgets
   /// stay; only the panels re-render and the plot's marker moves).
   void OnRotation(int degrees);

@@ -113,6 +113,8 @@ QGroupBox* MainWindow::BuildLightBox()
   auto* lightForm = new QFormLayout(lightBox);
   this->LightAzimuth = MakeSlider(-90, 90, -25);
   this->LightElevation = MakeSlider(-90, 90, 25);
+  this->LightAzimuth->setObjectName("lightAzimuth");
+  this->LightElevation->setObjectName("lightElevation");
   lightForm->addRow("Azimuth (deg)", this->LightAzimuth);
   lightForm->addRow("Elevation (deg)", this->LightElevation);
   this->LightIntensity = widgets::MakeSettingSpinBox("light-intensity");
@@ -151,7 +153,8 @@ QGroupBox* MainWindow::BuildLightBox()
 /// The preparation of the user's mesh (normals, creases, subdivision, repair).
 QGroupBox* MainWindow::BuildMeshBox()
 {
-  auto* meshBox = new QGroupBox("Mesh preparation (your mesh: modes, silhouette, moon, metal)");
+  auto* meshBox = new QGroupBox("Mesh preparation (your mesh)");
+  meshBox->setToolTip("Applies to your mesh in the scenes that show it: modes, silhouette, moon, metal");
   auto* meshForm = new QFormLayout(meshBox);
   this->Weighting = new QComboBox;
   for (const char* name : { "uniform", "area", "angle", "max" })
@@ -169,7 +172,9 @@ QGroupBox* MainWindow::BuildMeshBox()
   this->Subdivision->setRange(0, mesh::kMaxSubdivisionLevels);
   this->Subdivision->setValue(this->Options.preparation.subdivisionLevels);
   meshForm->addRow("Subdivision levels", this->Subdivision);
-  this->Repair = new QCheckBox("weld, orient, non-manifold, T-junctions");
+  this->Repair = new QCheckBox("weld, orient, T-junctions");
+  this->Repair->setToolTip("Welds duplicate points, orients faces consistently, splits "
+                           "non-manifold edges and fixes T-junctions");
   this->Repair->setChecked(this->Options.preparation.repair);
   meshForm->addRow("Repair", this->Repair);
   auto applyPreparation = [this] {
@@ -197,9 +202,11 @@ QGroupBox* MainWindow::BuildPlotBox()
 {
   auto* plotBox = new QGroupBox("Plot");
   auto* plotForm = new QFormLayout(plotBox);
-  this->ProfileTool = new QCheckBox("left-drag draws the profile line (or Ctrl+drag)");
+  this->ProfileTool = new QCheckBox("left-drag draws the profile");
+  this->ProfileTool->setToolTip("Left-drag in a panel draws the profile line (Ctrl+drag always does)");
   plotForm->addRow(this->ProfileTool);
-  this->Perceived = new QCheckBox("show the perceived profile (lateral inhibition)");
+  this->Perceived = new QCheckBox("perceived profile");
+  this->Perceived->setToolTip("Adds the profile as the eye perceives it (lateral inhibition)");
   plotForm->addRow(this->Perceived);
   this->Rotation = MakeSlider(0, 90, 0);
   plotForm->addRow("orientation: rotation", this->Rotation);

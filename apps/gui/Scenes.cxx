@@ -526,7 +526,7 @@ Scene MakeScene(const std::string& name, const SceneOptions& options)
   else if (!scene.panels.empty())
   {
     scene.explanation += " Lit by one light, as in the lecture: a face turned away from it "
-                         "shows only the ambient term R<sub>a</sub>I<sub>a</sub>.";
+                         "shows only the ambient term Ra Ia.";
   }
   return scene;
 }

@@ -38,7 +38,7 @@ const char* kUsage =
   "       shadinglab-gui --list-scenes | --version\n"
   "\n"
   "The ShadingLab explorer: the lecture's interpolation artifacts side by side.\n"
-  "INPUT is any file the CLI reads (.vtp .vtk .vtu .vts .vtr .vti .vtm .pvd .e .ply .obj .stl .off).\n"
+  "INPUT is any file the CLI reads (see shadinglab render --help).\n"
   "With --screenshot and/or --profile the window is rendered, the files are\n"
   "written (the profile or study numbers as CSV) and the program exits.\n"
   "Needs an X display (e.g. xvfb-run); without one it exits with status 2.\n";

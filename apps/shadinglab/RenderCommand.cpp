@@ -18,11 +18,7 @@ namespace shadinglab::cli
 namespace
 {
 
-const char* kRenderHelp =
-  "usage: shadinglab render INPUT [--backend auto|cpu|gpu] [--mode MODE] [--size WxH]\n"
-  "                         [--out OUT.png] [options]\n"
-  "\n"
-  "INPUT: .vtp .vtk .vtu .vts .vtr .vti .vtm .pvd .e .exo .ex2 .ply .obj .stl .off\n"
+const char* kRenderOptionsHelp =
   "  --size WxH          image size (default 1024x768)\n"
   "  --out FILE.png      output image (default out.png)\n"
   "  --stats             print one JSON line of timings and counts\n"
@@ -32,6 +28,14 @@ const char* kRenderHelp =
   "                      s0, s1, s2 or s3 (a .vti of that Stokes component per channel),\n"
   "                      stokes (a .vti of S0..S3 per channel and DoLP, AoP)\n"
   "With --color-by the PNG carries a colour legend at its right edge.\n";
+
+std::string RenderHelp()
+{
+  return "usage: shadinglab render INPUT [--backend auto|cpu|gpu] [--mode MODE] [--size WxH]\n"
+         "                         [--out OUT.png] [options]\n"
+         "\n"
+         "INPUT: " + ReadableExtensionsText() + "\n" + kRenderOptionsHelp;
+}
 
 /// Covered pixels with a channel at 255: where the display transform
 /// clipped (or the surface is exactly white).
@@ -50,7 +54,7 @@ long long CountClipped(const render::Image& image, const std::vector<uint8_t>& r
 int RunRender(int argc, char** argv)
 {
   const Stopwatch total;
-  const auto request = SceneFromArguments(argc, argv, kRenderHelp, { "output" });
+  const auto request = SceneFromArguments(argc, argv, RenderHelp(), { "output" });
   if (request->helpShown)
   {
     return 0;

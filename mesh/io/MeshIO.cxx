@@ -637,6 +637,23 @@ vtkSmartPointer<vtkDataSet> ReadStructured(const std::string& path, const std::s
 
 } // namespace
 
+const std::vector<std::string>& ReadableExtensions()
+{
+  static const std::vector<std::string> extensions = { "vtp", "vtk", "vtu", "vts", "vtr", "vti",
+    "vtm", "pvd", "e", "exo", "ex2", "exii", "ply", "obj", "stl", "off" };
+  return extensions;
+}
+
+std::string ReadableExtensionsText()
+{
+  std::string text;
+  for (const std::string& ext : ReadableExtensions())
+  {
+    text += (text.empty() ? "." : " .") + ext;
+  }
+  return text;
+}
+
 vtkPolyData* ReadMesh(const std::string& path, const ReadOptions& options)
 {
   if (options.nonlinearSubdivisionLevel < 0 ||
@@ -767,7 +784,7 @@ vtkPolyData* ReadMeshAt(const std::string& path, const ReadOptions& options, int
   else
   {
     throw MeshError("cannot read '" + path +
-      "': unknown extension (expected .vtp .vtk .vtu .vts .vtr .vti .vtm .pvd .e .exo .ex2 .ply .obj .stl .off)");
+      "': unknown extension (expected " + ReadableExtensionsText() + ")");
   }
   if (!mesh)
   {

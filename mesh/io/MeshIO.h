@@ -4,6 +4,7 @@
 
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 class vtkPolyData;
 
@@ -42,6 +43,13 @@ struct ReadOptions
  * range. The caller owns the result.
  */
 vtkPolyData* ReadMesh(const std::string& path, const ReadOptions& options = {});
+
+/// The extensions ReadMesh reads, without the dot, in the order help lists
+/// them: the one list of the CLI's help, its error for an unknown
+/// extension and the explorer's File > Open filter.
+const std::vector<std::string>& ReadableExtensions();
+/// ReadableExtensions as ".vtp .vtk ...".
+std::string ReadableExtensionsText();
 
 /// Writes by extension: .vtp, .vtk, .ply, .obj, .stl, .off. Throws MeshError.
 void WriteMesh(vtkPolyData* mesh, const std::string& path);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // shadinglab brdf: CSV format, values, and error exits.
 #include "CliTestUtil.h"
+#include "MeshIO.h"
 
 #include <gtest/gtest.h>
 
@@ -581,4 +582,21 @@ TEST(CliTest, StatsBreakTheRunIntoReadPrepareRenderWrite)
   }
   EXPECT_GT(JsonNumber(n.out, "write_ms"), 0.0) << n.out;
   EXPECT_LE(sum, JsonNumber(n.out, "total_ms") + 1e-3) << n.out;
+}
+
+// The formats the reader takes are one list (ReadableExtensions): the
+// help names each, and an unknown extension's error names them all.
+TEST(CliTest, HelpAndErrorsNameEveryReadableFormat)
+{
+  const auto help = RunCli("render --help");
+  ASSERT_EQ(help.status, 0);
+  const std::string unknown = shadinglab::testing::PerTestTempPath("shadinglab_unknown", ".xyz");
+  std::ofstream(unknown) << "0 0 0\n";
+  const auto bad = RunCli("render " + unknown);
+  EXPECT_EQ(bad.status, 2);
+  for (const std::string& ext : shadinglab::ReadableExtensions())
+  {
+    EXPECT_NE(help.out.find(" ." + ext), std::string::npos) << ext;
+    EXPECT_NE(bad.err.find(" ." + ext), std::string::npos) << ext << ": " << bad.err;
+  }
 }

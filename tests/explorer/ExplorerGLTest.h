@@ -32,4 +32,5 @@ private slots:
   void CreasesAveragedCorrugationShadesFlat();
   void ScanlineInspectorShowsTheRenderersNumbers();
   void WheelChangesAControlOnlyWithItsFocus();
+  void ControlsKeepEachOtherAndFold();
 };

@@ -3,9 +3,12 @@
 // both backends, polarization and spectral Fresnel.
 #include "ExplorerGLTest.h"
 #include "ExplorerTestUtil.h"
+#include "MeshIO.h"
 
 #include <QApplication>
+#include <QAction>
 #include <QDockWidget>
+#include <QDoubleSpinBox>
 #include <QScrollArea>
 #include <QScrollBar>
 #include <QSlider>
@@ -232,4 +235,62 @@ void ExplorerGLTest::WheelChangesAControlOnlyWithItsFocus()
   QVERIFY(slider->hasFocus());
   wheel(slider);
   QVERIFY(slider->value() != before);
+}
+
+// One control never resets another: changing a scene's own option (the
+// polarizer) rebuilds the scene but keeps the light and the camera the user
+// set; a scene without panels leaves no panel controls of the previous one;
+// File > Open lists every format the reader takes; the docks fold away and
+// leave the panels most of a 1280 x 720 window.
+void ExplorerGLTest::ControlsKeepEachOtherAndFold()
+{
+  auto window = Open("polarization", render::Backend::CPU);
+  window->resize(1280, 720);
+  Settle();
+  auto* azimuth = window->findChild<QSlider*>("lightAzimuth");
+  QVERIFY(azimuth);
+  azimuth->setValue(37);
+  Settle();
+  window->Comparison()->View().camera->Azimuth(20);
+  const double* moved = window->Comparison()->View().camera->GetPosition();
+  const double movedX = moved[0];
+  auto* polarizer = window->findChild<QDoubleSpinBox*>("polarizer");
+  QVERIFY(polarizer);
+  polarizer->setValue(45);
+  emit polarizer->editingFinished();
+  Settle();
+  QCOMPARE(window->Comparison()->View().lightAzimuth, 37.0);
+  QCOMPARE(azimuth->value(), 37);
+  QVERIFY(std::abs(window->Comparison()->View().camera->GetPosition()[0] - movedX) < 1e-6);
+
+  std::string error;
+  QVERIFY(window->LoadScene("scanline", error));
+  Settle();
+  QVERIFY(!window->Materials()->isEnabled());
+  QVERIFY(window->LoadScene("modes", error));
+  Settle();
+  QVERIFY(window->Materials()->isEnabled());
+
+  const QString filter = gui::MainWindow::MeshFileFilter();
+  for (const std::string& ext : ReadableExtensions())
+  {
+    QVERIFY2(filter.contains(QString("*.%1 ").arg(QString::fromStdString(ext))) ||
+        filter.contains(QString("*.%1)").arg(QString::fromStdString(ext))),
+      qPrintable(filter + " lacks " + QString::fromStdString(ext)));
+  }
+
+  window->resize(1280, 720);
+  Settle();
+  const int panels = window->Comparison()->width();
+  QVERIFY2(panels >= 700, qPrintable(QString("panels get %1 px of 1280").arg(panels)));
+  QDockWidget* controls = nullptr;
+  for (QDockWidget* dock : window->findChildren<QDockWidget*>())
+  {
+    controls = dock->windowTitle() == "Controls" ? dock : controls;
+  }
+  QVERIFY(controls);
+  controls->toggleViewAction()->trigger();
+  Settle();
+  QVERIFY(!controls->isVisible());
+  QVERIFY(window->Comparison()->width() > panels + 200);
 }

@@ -85,13 +85,30 @@ void BrdfPlot::SetSpecularOnly(bool on)
   this->Redraw();
 }
 
+namespace
+{
+/// The log scale's span: four decades below the largest peak, where the
+/// broadest lobe's tails (and a Lambert term, 1/pi) already show.
+constexpr double kLogDecades = 4.0;
+} // namespace
+
+void BrdfPlot::SetScale(BrdfScale scale)
+{
+  this->Scale = scale;
+  this->Redraw();
+}
+
 void BrdfPlot::Redraw()
 {
   auto* chart = new QPolarChart;
+  const char* scaleNote = this->Scale == BrdfScale::PerLobe ? "each lobe to its peak"
+    : this->Scale == BrdfScale::Log                         ? "log scale"
+                                                            : "linear";
   StyleChart(chart,
-    QString("BRDF lobes in the plane of incidence, light at %1 deg%2")
+    QString("BRDF lobes in the plane of incidence, light at %1 deg (%2%3)")
       .arg(this->ThetaL, 0, 'f', 0)
-      .arg(this->SpecularOnly ? " (specular term ks f_s)" : ""));
+      .arg(this->SpecularOnly ? "ks f_s, " : "")
+      .arg(scaleNote));
   // The angular axis runs clockwise from the top: the normal is up, angles
   // from the normal read -90 (left) .. 90 (right).
   auto* angular = new QCategoryAxis;
@@ -103,9 +120,13 @@ void BrdfPlot::Redraw()
     angular->append(QString("%1%2").arg(fromNormal).arg(QChar(0x00B0)), a);
   }
   angular->setTitleText("viewing angle from the normal");
-  auto* radial = MakeAxis("f_r (1/sr)");
+  auto* radial = MakeAxis(this->Scale == BrdfScale::PerLobe ? "f_r / its peak"
+      : this->Scale == BrdfScale::Log                      ? "log10 f_r (1/sr)"
+                                                           : "f_r (1/sr)");
   chart->addAxis(angular, QPolarChart::PolarOrientationAngular);
   chart->addAxis(radial, QPolarChart::PolarOrientationRadial);
+  // Every lobe's values first: the scales need the peaks.
+  std::vector<std::vector<double>> values;
   double maxValue = 1e-3;
   for (const BrdfLobe& lobe : this->Lobes)
   {
@@ -114,36 +135,76 @@ void BrdfPlot::Redraw()
     {
       material.kd = 0.0;
     }
+    values.emplace_back();
+    for (int i = 0; i <= 180; ++i)
+    {
+      values.back().push_back(BrdfInPlane(material, this->ThetaL, -90.0 + i));
+      maxValue = std::max(maxValue, values.back().back());
+    }
+  }
+  const double logFloor = std::log10(maxValue) - kLogDecades;
+  this->Peaks.clear();
+  double radialMax = 1e-3;
+  for (size_t l = 0; l < this->Lobes.size(); ++l)
+  {
+    const BrdfLobe& lobe = this->Lobes[l];
+    const double peak = *std::max_element(values[l].begin(), values[l].end());
+    auto radius = [&](double f) {
+      switch (this->Scale)
+      {
+        case BrdfScale::PerLobe:
+          return peak > 0 ? f / peak : 0.0;
+        case BrdfScale::Log:
+          return f > 0 ? std::max(0.0, std::log10(f) - logFloor) : 0.0;
+        case BrdfScale::Absolute:
+          break;
+      }
+      return f;
+    };
     // Two series per lobe, split at the normal (angle 0 = 360 on the axis).
     auto* right = new QLineSeries;
     auto* left = new QLineSeries;
+    double drawnPeak = 0.0;
     for (int i = 0; i <= 180; ++i)
     {
       const double thetaV = -90.0 + i;
-      const double value = BrdfInPlane(material, this->ThetaL, thetaV);
-      maxValue = std::max(maxValue, value);
+      const double r = radius(values[l][static_cast<size_t>(i)]);
+      drawnPeak = std::max(drawnPeak, r);
       if (thetaV >= 0)
       {
-        right->append(thetaV, value);
+        right->append(thetaV, r);
       }
       if (thetaV <= 0)
       {
-        left->append(360.0 + thetaV, value);
+        left->append(360.0 + thetaV, r);
       }
     }
+    this->Peaks.push_back(drawnPeak);
+    radialMax = std::max(radialMax, drawnPeak);
     QPen pen(lobe.color, 2);
+    // The legend gives each lobe's peak: the per-lobe scale hides it.
+    const QString name = QString("%1 (peak %2/sr)")
+                           .arg(QString::fromStdString(lobe.name))
+                           .arg(peak, 0, 'g', 2);
     for (QLineSeries* s : { left, right })
     {
       s->setPen(pen);
-      s->setName(QString::fromStdString(lobe.name));
+      s->setName(name);
       chart->addSeries(s);
       s->attachAxis(angular);
       s->attachAxis(radial);
     }
     chart->legend()->markers(left).front()->setVisible(false);
   }
-  radial->setRange(0, maxValue * 1.05);
+  radial->setRange(0, radialMax * 1.05);
   radial->applyNiceNumbers(); // ticks at round values (0, 1, 2, ...) not 0.99
+  if (this->Scale == BrdfScale::Log)
+  {
+    // Ticks in decades: the axis counts decades above the floor.
+    radial->setLabelFormat(QString("%.0f"));
+    radial->setTitleText(QString("decades above %1/sr").arg(std::pow(10.0, logFloor), 0, 'g', 1));
+  }
+  this->RadialEnd = radial->max();
   // The lobes' names are long ("Cook-Torrance 1982, m = 0.3"): beside the
   // polar plot, which is square, they fit whole; below it they were cut.
   chart->legend()->setAlignment(Qt::AlignRight);

@@ -35,6 +35,16 @@ double BrdfInPlane(const Material<double>& material, double thetaL, double theta
 /// matched widths (Phong n, Beckmann m = sqrt(2 / (n + 2))).
 std::vector<BrdfLobe> DefaultLobes(double shininess, double roughness);
 
+/// How the lobes' radius is drawn. Lobes differ by orders of magnitude
+/// (a microfacet lobe peaks near 0.3/sr where Phong's n = 32 peaks at 3.3),
+/// so the default draws each to its own peak, which the legend gives.
+enum class BrdfScale
+{
+  PerLobe,  ///< each lobe / its peak: every shape shows, the legend gives the peak
+  Absolute, ///< f_r itself (1/sr), one linear axis
+  Log       ///< log10 f_r over four decades below the largest peak
+};
+
 class BrdfPlot : public QWidget
 {
   Q_OBJECT
@@ -43,6 +53,12 @@ public:
   void SetLobes(const std::vector<BrdfLobe>& lobes, double thetaL);
   /// Only the specular term (kd = 0), which is what differs between models.
   void SetSpecularOnly(bool on);
+  void SetScale(BrdfScale scale);
+  BrdfScale GetScale() const { return this->Scale; }
+  /// Each lobe's largest radius as drawn (1 for every lobe per lobe), and
+  /// the radial axis's end: what a reader sees of each lobe.
+  const std::vector<double>& DrawnPeaks() const { return this->Peaks; }
+  double RadialMax() const { return this->RadialEnd; }
 
 private:
   void Redraw();
@@ -50,6 +66,9 @@ private:
   std::vector<BrdfLobe> Lobes;
   double ThetaL = 45.0;
   bool SpecularOnly = true;
+  BrdfScale Scale = BrdfScale::PerLobe;
+  std::vector<double> Peaks;
+  double RadialEnd = 1.0;
 };
 
 } // namespace shadinglab::widgets

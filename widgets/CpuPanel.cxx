@@ -177,6 +177,7 @@ CpuPanel::~CpuPanel() = default;
 void CpuPanel::OnSpecChanged()
 {
   this->Cache.Source = nullptr; // re-convert: the mesh may have been edited in place
+  this->ReferenceCache.Source = nullptr;
 }
 
 void CpuPanel::OnProfileLineChanged()
@@ -214,7 +215,7 @@ bool CpuPanel::RenderView()
   }
   if (this->SpecValue.errorReference >= 0 && this->Reference)
   {
-    this->ViewWidget->Picture = this->HeatMap(this->Reference->Snapshot());
+    this->ViewWidget->Picture = this->HeatMap(this->ReferenceOnCpu(width, height));
   }
   else if (this->SpecValue.dolpImage)
   {
@@ -273,20 +274,33 @@ void DrawColourBar(QImage& image, const std::function<QColor(double)>& colour,
 
 } // namespace
 
+render::Image CpuPanel::ReferenceOnCpu(int width, int height)
+{
+  PanelSpec spec = this->Reference->Spec();
+  spec.backend = render::Backend::CPU;
+  spec.errorReference = -1;
+  render::Image image = RenderOnCpu(*this->Renderer, this->ReferenceCache, spec, *this->View, width, height);
+  return DisplayValues(std::move(image), this->View->display);
+}
+
 render::Image CpuPanel::Snapshot()
 {
-  render::Image image = this->Last;
+  return DisplayValues(this->Last, this->View->display);
+}
+
+render::Image DisplayValues(render::Image image, render::DisplayTransform display)
+{
   const size_t n = image.rgb.size() / 3;
   for (size_t i = 0; i < n; ++i)
   {
-    const Vec3<float> c = render::ApplyDisplay(this->View->display,
+    const Vec3<float> c = render::ApplyDisplay(display,
       Vec3<float>(image.rgb[3 * i], image.rgb[3 * i + 1], image.rgb[3 * i + 2]));
     image.rgb[3 * i] = c.x;
     image.rgb[3 * i + 1] = c.y;
     image.rgb[3 * i + 2] = c.z;
   }
   image.displayApplied = true;
-  image.appliedDisplay = this->View->display;
+  image.appliedDisplay = display;
   return image;
 }
 

@@ -47,6 +47,9 @@ struct CpuMeshCache
 /// under `view`'s camera and light, in the mesh's local frame.
 render::Scene PanelScene(CpuMeshCache& cache, const PanelSpec& spec, const ViewState& view);
 
+/// `image` (linear) with `display` applied in float, as a panel shows it.
+render::Image DisplayValues(render::Image image, render::DisplayTransform display);
+
 const render::Image& RenderOnCpu(cpu::SoftwareRenderer& renderer, CpuMeshCache& cache,
   const PanelSpec& spec, const ViewState& view, int width, int height,
   render::RenderStats* stats = nullptr);
@@ -71,8 +74,13 @@ protected:
   void OnProfileLineChanged() override;
 
 private:
-  /// |I - I_ref| as a heat map (and the colour bar).
+  /// |I - I_ref| as a heat map (and the colour bar), both images in
+  /// display values from float frames.
   QImage HeatMap(const render::Image& reference);
+  /// The reference panel's picture drawn here by the CPU renderer in float
+  /// (the panel itself may be a GPU one, whose 8-bit framebuffer would
+  /// quantize the difference into speckle and rings), in display values.
+  render::Image ReferenceOnCpu(int width, int height);
   /// The degree of linear polarization in viridis (and the colour bar).
   QImage DolpMap() const;
 
@@ -80,6 +88,7 @@ private:
   ImageView* ViewWidget;
   ProfileOverlay* Overlay;
   CpuMeshCache Cache;
+  CpuMeshCache ReferenceCache; ///< the reference panel's mesh, converted here
   render::Image Last;
   render::StokesImage Stokes;
 };

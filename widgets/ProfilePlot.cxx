@@ -109,13 +109,22 @@ void AddCurve(QChart* chart, QAbstractAxis* x, QAbstractAxis* y, const QString& 
 
 } // namespace
 
+namespace
+{
+/// The bands' axis is sized for the second-largest curve when the largest
+/// exceeds it this many times: a flat step's bands (~0.4) would otherwise
+/// flatten Gouraud's (~0.03) to a line, the scene's very point.
+constexpr double kBandClipRatio = 3.0;
+} // namespace
+
 void ProfilePlot::Redraw()
 {
   auto* intensity = new QChart;
   StyleChart(intensity, this->ShowPerceived ? "Intensity (dashed: perceived)"
                                             : "Intensity along the line");
   auto* derivative = new QChart;
-  StyleChart(derivative, "Its derivative");
+  const bool bands = this->ShowPerceived;
+  StyleChart(derivative, bands ? "Mach bands: perceived - actual" : "Its derivative");
   double maxDistance = 1.0;
   for (const ProfileCurve& curve : this->Curves)
   {
@@ -127,13 +136,14 @@ void ProfilePlot::Redraw()
   QValueAxis* x1 = MakeAxis("distance along the line (px)", "%.0f");
   QValueAxis* y1 = MakeAxis("luminance (linear)");
   QValueAxis* x2 = MakeAxis("distance along the line (px)", "%.0f");
-  QValueAxis* y2 = MakeAxis("dI/dx (1/px)", "%.3f");
+  QValueAxis* y2 = MakeAxis(bands ? "perceived - I (linear)" : "dI/dx (1/px)", "%.3f");
   intensity->addAxis(x1, Qt::AlignBottom);
   intensity->addAxis(y1, Qt::AlignLeft);
   derivative->addAxis(x2, Qt::AlignBottom);
   derivative->addAxis(y2, Qt::AlignLeft);
   double lo1 = 0.0, hi1 = 0.05, lo2 = -0.001, hi2 = 0.001;
   std::vector<double> slopes;
+  std::vector<std::pair<double, QString>> bandPeaks; // per curve, with the perceived profile
   for (const ProfileCurve& curve : this->Curves)
   {
     const QString name = QString::fromStdString(curve.name);
@@ -145,7 +155,20 @@ void ProfilePlot::Redraw()
       AddCurve(intensity, x1, y1, name + " (perceived)", curve.profile,
         PerceivedProfile(curve.profile), dashed, lo1, hi1);
     }
-    const std::vector<double> d = Derivative(curve.profile);
+    std::vector<double> d = Derivative(curve.profile);
+    if (bands)
+    {
+      // What the eye adds (eq. 3.3): zero where the profile is straight,
+      // a band either side of each slope change (Gouraud) or step (flat).
+      d = PerceivedProfile(curve.profile);
+      double peak = 0.0;
+      for (size_t i = 0; i < d.size(); ++i)
+      {
+        d[i] -= curve.profile.intensity[i];
+        peak = curve.profile.covered[i] ? std::max(peak, std::abs(d[i])) : peak;
+      }
+      bandPeaks.push_back({ peak, name });
+    }
     AddCurve(derivative, x2, y2, name, curve.profile, d, pen, lo2, hi2);
     for (size_t i = 0; i < d.size(); ++i)
     {
@@ -159,7 +182,7 @@ void ProfilePlot::Redraw()
   // changes of smooth curves stay readable, a flat step's spike is clipped
   // (and the title says so).
   bool clipped = false;
-  if (slopes.size() > 20)
+  if (slopes.size() > 20 && !bands)
   {
     std::nth_element(slopes.begin(), slopes.begin() + slopes.size() * 95 / 100, slopes.end());
     const double limit = 3.0 * slopes[slopes.size() * 95 / 100];
@@ -178,8 +201,20 @@ void ProfilePlot::Redraw()
   x1->setRange(0, maxDistance);
   x2->setRange(0, maxDistance);
   y1->setRange(std::min(0.0, lo1), hi1 * 1.05);
-  const double span = std::max(std::abs(lo2), std::abs(hi2)) * 1.1;
+  double span = std::max(std::abs(lo2), std::abs(hi2)) * 1.1;
+  std::sort(bandPeaks.rbegin(), bandPeaks.rend());
+  if (bands && bandPeaks.size() > 1 && bandPeaks[1].first > 0 &&
+    bandPeaks[0].first > kBandClipRatio * bandPeaks[1].first)
+  {
+    // A step's bands (flat) dwarf a slope change's (Gouraud): the axis is
+    // sized for the second, the first clipped, and the title says so.
+    span = 1.3 * bandPeaks[1].first;
+    derivative->setTitle(QString("Mach bands (%1 clipped at \u00b1%2)")
+                           .arg(bandPeaks[0].second)
+                           .arg(bandPeaks[0].first, 0, 'f', 2));
+  }
   y2->setRange(-span, span);
+  this->SecondSpan = span;
   for (QValueAxis* axis : { x1, x2, y1, y2 })
   {
     axis->applyNiceNumbers(); // ticks at round values
@@ -254,6 +289,12 @@ std::string ProfilePlot::ToCsv() const
     csv << "\n";
   }
   return csv.str();
+}
+
+QString ProfilePlot::SecondTitle() const
+{
+  QChart* chart = this->DerivativeView->chart();
+  return chart ? chart->title() : QString();
 }
 
 } // namespace shadinglab::widgets

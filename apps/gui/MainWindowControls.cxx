@@ -256,6 +256,15 @@ QGroupBox* MainWindow::BuildPlotBox()
   plotForm->addRow("brdf: shininess n", this->Shininess);
   this->Roughness = MakeSlider(5, 100, 30);
   plotForm->addRow("brdf: roughness m x 100", this->Roughness);
+  auto* brdfScale = new QComboBox;
+  brdfScale->setObjectName("brdfScale");
+  brdfScale->addItem("each lobe to its peak", static_cast<int>(widgets::BrdfScale::PerLobe));
+  brdfScale->addItem("f_r, linear", static_cast<int>(widgets::BrdfScale::Absolute));
+  brdfScale->addItem("f_r, log", static_cast<int>(widgets::BrdfScale::Log));
+  plotForm->addRow("brdf: scale", brdfScale);
+  connect(brdfScale, QOverload<int>::of(&QComboBox::activated), this, [this, brdfScale] {
+    this->BrdfChart->SetScale(static_cast<widgets::BrdfScale>(brdfScale->currentData().toInt()));
+  });
   connect(this->ProfileTool, &QCheckBox::toggled, this,
     [this](bool on) { this->View->SetProfileTool(on); });
   connect(this->Perceived, &QCheckBox::toggled, this->ProfileChart,

@@ -4,6 +4,7 @@
 // inspector) against the lecture's formulas.
 #include "ExplorerGLTest.h"
 #include "ExplorerTestUtil.h"
+#include "ProfilePlot.h"
 
 void ExplorerGLTest::MachBandsProfiles()
 {
@@ -108,6 +109,15 @@ void ExplorerGLTest::MachBandsProfiles()
     }
   }
   QVERIFY2(bump > 2 * kOne255, "no Mach band in the perceived Gouraud profile");
+  // ...and the plot shows them at a glance: the second chart plots
+  // perceived - actual on an axis where Gouraud's bands take a fifth or
+  // more of its half-height (flat's steps clipped, the title says so).
+  window->RefreshNow();
+  const widgets::ProfilePlot* plot = window->Profile();
+  QVERIFY2(plot->SecondTitle().contains("Mach bands"), qPrintable(plot->SecondTitle()));
+  QVERIFY2(plot->SecondTitle().contains("Flat"), qPrintable(plot->SecondTitle()));
+  QVERIFY2(bump > 0.2 * plot->SecondAxisSpan(),
+    qPrintable(QString("Gouraud's bands %1 on an axis of +-%2").arg(bump).arg(plot->SecondAxisSpan())));
 }
 
 void ExplorerGLTest::PerspectiveProfiles()

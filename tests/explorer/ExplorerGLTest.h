@@ -33,4 +33,6 @@ private slots:
   void ScanlineInspectorShowsTheRenderersNumbers();
   void WheelChangesAControlOnlyWithItsFocus();
   void ControlsKeepEachOtherAndFold();
+  void BrdfPlotShowsEveryLobe();
+  void SpectralErrorMapIsFromFloatFrames();
 };

@@ -4,6 +4,7 @@
 #include "ExplorerGLTest.h"
 #include "ExplorerTestUtil.h"
 #include "MeshIO.h"
+#include "BrdfPlot.h"
 
 #include <QApplication>
 #include <QAction>
@@ -293,4 +294,64 @@ void ExplorerGLTest::ControlsKeepEachOtherAndFold()
   Settle();
   QVERIFY(!controls->isVisible());
   QVERIFY(window->Comparison()->width() > panels + 200);
+}
+
+// The brdf scene shows every lobe at a glance: by default each lobe is
+// drawn to its own peak (the legend gives it); on one linear axis the
+// microfacet lobes shrink to a fraction of Phong's, which the log scale
+// brings back within the axis' decades.
+void ExplorerGLTest::BrdfPlotShowsEveryLobe()
+{
+  auto window = Open("brdf", render::Backend::CPU);
+  auto* plot = window->findChild<widgets::BrdfPlot*>();
+  QVERIFY(plot);
+  QCOMPARE(plot->GetScale(), widgets::BrdfScale::PerLobe);
+  QVERIFY(plot->DrawnPeaks().size() >= 4);
+  for (double peak : plot->DrawnPeaks())
+  {
+    QVERIFY2(std::abs(peak - 1.0) < 1e-9, qPrintable(QString::number(peak)));
+  }
+  plot->SetScale(widgets::BrdfScale::Absolute);
+  const auto absolute = plot->DrawnPeaks();
+  const double smallest = *std::min_element(absolute.begin(), absolute.end());
+  QVERIFY2(smallest < 0.1 * plot->RadialMax(),
+    qPrintable(QString("%1 of %2: the problem the default solves").arg(smallest).arg(plot->RadialMax())));
+  plot->SetScale(widgets::BrdfScale::Log);
+  for (double peak : plot->DrawnPeaks())
+  {
+    QVERIFY2(peak > 0.5 * plot->RadialMax(), qPrintable(QString("%1 of %2").arg(peak).arg(plot->RadialMax())));
+  }
+}
+
+// The spectral scene's CIEDE2000 map is computed from float frames: the
+// same picture whether the panel it compares with is drawn by OpenGL (an
+// 8-bit framebuffer, whose steps made speckle and rings) or by the CPU.
+void ExplorerGLTest::SpectralErrorMapIsFromFloatFrames()
+{
+  auto heat = [](render::Backend backend, QImage& picture, bool& ok) {
+    auto window = Open("spectral", backend);
+    window->resize(1280, 720);
+    Settle();
+    window->RefreshNow();
+    widgets::ShadingPanel* panel = window->Comparison()->Panel(2);
+    ok = panel->Spec().errorReference >= 0 && window->Comparison()->Panel(0)->Backend() == backend;
+    picture = panel->grab().toImage();
+  };
+  QImage fromGpu, fromCpu;
+  bool gpuOk = false, cpuOk = false;
+  heat(render::Backend::GPU, fromGpu, gpuOk);
+  heat(render::Backend::CPU, fromCpu, cpuOk);
+  QVERIFY2(gpuOk && cpuOk, "panel 3 is the error map of panel 1, drawn on each backend");
+  QVERIFY(!fromGpu.isNull() && fromGpu.size() == fromCpu.size());
+  int differing = 0, lit = 0;
+  for (int y = 0; y < fromGpu.height(); ++y)
+  {
+    for (int x = 0; x < fromGpu.width(); ++x)
+    {
+      differing += fromGpu.pixel(x, y) != fromCpu.pixel(x, y);
+      lit += qRed(fromCpu.pixel(x, y)) > 120;
+    }
+  }
+  QVERIFY2(lit > 500, qPrintable(QString("%1 bright pixels in the map").arg(lit)));
+  QCOMPARE(differing, 0);
 }

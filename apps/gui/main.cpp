@@ -20,6 +20,7 @@
 #include <X11/Xlib.h>
 
 #include <cstdio>
+#include <cmath>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
@@ -34,7 +35,7 @@ const char* kUsage =
   "                      [--variant corrugated|isosurface] [--rotation DEG] [--distance R]\n"
   "                      [--polarizer DEG] [--light-polarizer DEG]\n"
   "                      [--screenshot FILE.png] [--profile FILE.csv] [--color-by ARRAY]\n"
-  "                      [--nonlinear-subdivision N]\n"
+  "                      [--nonlinear-subdivision N] [--time T | --time-step N]\n"
   "       shadinglab-gui --list-scenes | --version\n"
   "\n"
   "The ShadingLab explorer: the lecture's interpolation artifacts side by side.\n"
@@ -135,6 +136,28 @@ int ParseArguments(int argc, char** argv, Request& request)
           return Fail(problem);
         }
         options.reading.nonlinearSubdivisionLevel = settings.input.nonlinearSubdivisionLevel;
+      }
+      else if (a == "--time" || a == "--time-step")
+      {
+        // The step of a time series, as the CLI reads it (ReadOptions);
+        // the reader refuses a step the file does not have.
+        const std::string v = value(a.c_str());
+        char* end = nullptr;
+        const double number = std::strtod(v.c_str(), &end);
+        if (v.empty() || *end || !std::isfinite(number) ||
+          (a == "--time-step" && (number < 0 || number != std::floor(number) || number > 1e9)))
+        {
+          return Fail(a + " must be " + (a == "--time" ? "a finite time" : "a step 0, 1, ...") +
+            " (got '" + v + "')");
+        }
+        if (a == "--time")
+        {
+          options.reading.time = number;
+        }
+        else
+        {
+          options.reading.timeStep = static_cast<int>(number);
+        }
       }
       else if (a == "--variant")
         options.variant = value("--variant");

@@ -54,6 +54,18 @@ ReadOptions ReadOptionsFromArguments(const Arguments& args)
   ApplySettingArguments(args, render::SettingGroup::Mesh, settings);
   ReadOptions options;
   options.nonlinearSubdivisionLevel = settings.input.nonlinearSubdivisionLevel;
+  if (args.Has("time"))
+  {
+    options.time = ParseDouble(args.Get("time"), "--time");
+  }
+  if (args.Has("time-step"))
+  {
+    options.timeStep = args.GetInt("time-step", 0);
+    if (options.timeStep < 0)
+    {
+      throw UsageError("--time-step must be 0 or more (got " + args.Get("time-step") + ")");
+    }
+  }
   return options;
 }
 

@@ -23,7 +23,7 @@ const char* kNormalsHelp =
   "usage: shadinglab normals INPUT --out OUT.vtp [--weights uniform|area|angle|max]\n"
   "                          [--feature-angle DEG] [--weld [TOL]] [--fix-t-junctions]\n"
   "                          [--subdivide N [--scheme loop|catmull-clark]] [--json]\n"
-  "                          [--nonlinear-subdivision N]\n"
+  "                          [--nonlinear-subdivision N] [--time T | --time-step N]\n"
   "\n"
   "Repairs INPUT (degenerate faces removed, orientation made consistent and outward,\n"
   "non-manifold faces kept on copied vertices), optionally welds coincident points\n"
@@ -31,13 +31,16 @@ const char* kNormalsHelp =
   "subdivides N levels with OpenSubdiv (normals then come from the limit surface),\n"
   "and computes vertex normals (default: area weights, creases split at 30 degrees).\n"
   "OUT: .vtp .vtk .ply .obj .stl .off by extension. --json prints one JSON object.\n"
-  "--nonlinear-subdivision N: times each quadratic face of INPUT is split (default 1).\n";
+  "--nonlinear-subdivision N: times each quadratic face of INPUT is split (default 1).\n"
+  "--time T / --time-step N: the step of a time series (.pvd, Exodus II) to read: the\n"
+  "last at or before T, or step N from 0 (default: the first).\n";
 } // namespace
 
 int RunNormals(int argc, char** argv)
 {
   const Stopwatch total;
-  std::vector<std::string> valued = { "out", "weights", "feature-angle", "subdivide", "scheme" };
+  std::vector<std::string> valued = { "out", "weights", "feature-angle", "subdivide", "scheme",
+    "time", "time-step" };
   std::vector<std::string> flags = { "help", "json", "fix-t-junctions" };
   AddSettingFlags(valued, flags, render::SettingGroup::Mesh);
   const Arguments args(argc, argv, valued, flags, {}, { "weld" });

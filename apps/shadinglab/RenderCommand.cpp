@@ -22,6 +22,8 @@ const char* kRenderOptionsHelp =
   "  --size WxH          image size (default 1024x768)\n"
   "  --out FILE.png      output image (default out.png)\n"
   "  --stats             print one JSON line of timings and counts\n"
+  "  --time T            a time series (.pvd, Exodus II): the last step at or before T\n"
+  "  --time-step N       ... or step N (from 0); the first step without either\n"
   "  --output KIND       intensity (default: the picture), or what a polarization camera\n"
   "                      measures through analysers at 0/45/90/135 degrees (docs/model.md\n"
   "                      eq. 8.5; CPU renderer): dolp or aop (false colour PNG with a legend),\n"

@@ -416,7 +416,7 @@ std::unique_ptr<SceneArguments> SceneFromArguments(int argc, char** argv, const 
 {
   std::vector<std::string> valued = { "backend", "size", "out", "azimuth", "elevation", "zoom",
     "camera-position", "focal-point", "view-up", "view-angle", "normals", "feature-angle",
-    "subdivide", "scheme" };
+    "subdivide", "scheme", "time", "time-step" };
   std::vector<std::string> flags = { "help", "stats", "parallel", "fix-t-junctions" };
   for (auto group : { render::SettingGroup::Render, render::SettingGroup::Lights,
          render::SettingGroup::Material, render::SettingGroup::Mesh })

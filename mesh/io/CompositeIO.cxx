@@ -1,5 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "CompositeIO.h"
+#include <algorithm>
+#include <vtkStreamingDemandDrivenPipeline.h>
+#include <vtkInformation.h>
 
 #include "MeshIO.h"
 #include "MeshPrecheck.h"
@@ -120,16 +123,20 @@ vtkSmartPointer<vtkPolyData> ReadListing(
   Collect(root, listed, path);
   if (collection && !listed.empty())
   {
-    // A .pvd's first time step: every part listed with the smallest timestep.
-    double first = std::numeric_limits<double>::infinity();
+    // A .pvd's time step (the first, unless --time or --time-step asks
+    // another): every part listed with that timestep.
+    std::vector<double> times;
     for (const Listed& l : listed)
     {
-      first = std::min(first, l.timestep);
+      times.push_back(l.timestep);
     }
+    std::sort(times.begin(), times.end());
+    times.erase(std::unique(times.begin(), times.end()), times.end());
+    const double chosen = times[ChooseTimeStep(times, depth == 0 ? options : ReadOptions{}, path)];
     std::vector<Listed> kept;
     for (const Listed& l : listed)
     {
-      if (l.timestep == first)
+      if (l.timestep == chosen)
       {
         kept.push_back(l);
       }
@@ -225,6 +232,21 @@ vtkSmartPointer<vtkPolyData> ReadExodus(const std::string& path, const ReadOptio
   reader->SetAllArrayStatus(vtkExodusIIReader::ELEM_BLOCK, 1);
   reader->SetAllArrayStatus(vtkExodusIIReader::NODAL, 1);
   reader->SetAllArrayStatus(vtkExodusIIReader::ELEM_BLOCK_ELEM_CONN, 1);
+  // The step asked for (--time, --time-step), or the first. A file without
+  // time steps has one state, step 0.
+  std::vector<double> times;
+  vtkInformation* info = reader->GetOutputInformation(0);
+  if (info && info->Has(vtkStreamingDemandDrivenPipeline::TIME_STEPS()))
+  {
+    const int n = info->Length(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+    const double* values = info->Get(vtkStreamingDemandDrivenPipeline::TIME_STEPS());
+    times.assign(values, values + n);
+  }
+  if (times.empty())
+  {
+    times.push_back(0.0);
+  }
+  reader->SetTimeStep(static_cast<int>(ChooseTimeStep(times, options, path)));
   reader->Update();
   auto* blocks = vtkCompositeDataSet::SafeDownCast(reader->GetOutputDataObject(0));
   if (reader->GetErrorCode() != 0 || !blocks)

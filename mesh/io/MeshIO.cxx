@@ -45,6 +45,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -654,8 +655,66 @@ std::string ReadableExtensionsText()
   return text;
 }
 
+size_t ChooseTimeStep(
+  const std::vector<double>& times, const ReadOptions& options, const std::string& what)
+{
+  if (times.empty())
+  {
+    throw MeshError("'" + what + "' has no time steps");
+  }
+  auto span = [&] {
+    char text[160];
+    std::snprintf(text, sizeof text, "%zu step(s), times %g .. %g", times.size(), times.front(),
+      times.back());
+    return std::string(text);
+  };
+  if (options.timeStep >= 0)
+  {
+    if (static_cast<size_t>(options.timeStep) >= times.size())
+    {
+      throw MeshError("--time-step " + std::to_string(options.timeStep) + ": '" + what + "' has " +
+        span() + " (steps 0.." + std::to_string(times.size() - 1) + ")");
+    }
+    return static_cast<size_t>(options.timeStep);
+  }
+  if (std::isnan(options.time))
+  {
+    return 0;
+  }
+  // The last step at or before the time (ParaView snaps so); a rounding
+  // hair below the first step still reads it.
+  const double slack = 1e-9 * std::max(1.0, std::abs(times.back() - times.front()));
+  if (!(options.time >= times.front() - slack && options.time <= times.back() + slack))
+  {
+    char t[32];
+    std::snprintf(t, sizeof t, "%g", options.time);
+    throw MeshError(std::string("--time ") + t + ": outside '" + what + "': " + span());
+  }
+  size_t step = 0;
+  while (step + 1 < times.size() && times[step + 1] <= options.time + slack)
+  {
+    ++step;
+  }
+  return step;
+}
+
 vtkPolyData* ReadMesh(const std::string& path, const ReadOptions& options)
 {
+  if (!std::isnan(options.time) && options.timeStep >= 0)
+  {
+    throw MeshError("--time and --time-step: give one");
+  }
+  if (std::isinf(options.time) || options.timeStep < -1)
+  {
+    throw MeshError("--time must be finite, --time-step 0 or more");
+  }
+  const std::string ext = Extension(path);
+  const bool series = ext == "pvd" || ext == "e" || ext == "exo" || ext == "ex2" || ext == "exii";
+  if ((!std::isnan(options.time) || options.timeStep >= 0) && !series)
+  {
+    throw MeshError(std::string(options.timeStep >= 0 ? "--time-step" : "--time") + ": '" + path +
+      "' has no time steps (.pvd and Exodus II series do)");
+  }
   if (options.nonlinearSubdivisionLevel < 0 ||
     options.nonlinearSubdivisionLevel > kMaxNonlinearSubdivisionLevel)
   {

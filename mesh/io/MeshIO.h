@@ -3,6 +3,7 @@
 #pragma once
 
 #include <stdexcept>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -29,7 +30,19 @@ struct ReadOptions
   /// ParaView's Surface does with its Nonlinear Subdivision Level (default
   /// 1 there too); 0 draws the corner nodes' linear face.
   int nonlinearSubdivisionLevel = 1;
+  /// A time series (.pvd, Exodus II): the step to read, by its time value
+  /// (the last step at or before it, as ParaView snaps a requested time;
+  /// NaN: not asked) or by its index from 0 (-1: not asked). At most one;
+  /// neither reads the first step. A time outside the file's span, an index
+  /// past its last step, or either on a file without time steps is refused.
+  double time = std::numeric_limits<double>::quiet_NaN();
+  int timeStep = -1;
 };
+
+/// The step `options` asks of a series with `times` (sorted ascending):
+/// its index, or a MeshError naming the span for `what`.
+size_t ChooseTimeStep(const std::vector<double>& times, const ReadOptions& options,
+  const std::string& what);
 
 /**
  * Reads INPUT by extension: .vtp, .vtk (any legacy data set), .vtu, .vts,

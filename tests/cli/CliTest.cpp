@@ -600,3 +600,43 @@ TEST(CliTest, HelpAndErrorsNameEveryReadableFormat)
     EXPECT_NE(bad.err.find(" ." + ext), std::string::npos) << ext << ": " << bad.err;
   }
 }
+
+// A .pvd series: the first step by default, another by --time-step or
+// --time; a step the file lacks is one line and exit 2 (render and normals).
+TEST(CliTest, TimeSeriesStepsAreChosenByTimeOrIndex)
+{
+  const std::string dir = ::testing::TempDir() + "/";
+  const std::string pvd = shadinglab::testing::PerTestTempPath("shadinglab_series", ".pvd");
+  // Step 0: a 16x8 sphere (224 polygons), step 1 at t = 2: a 32x16 one (960).
+  std::ofstream(pvd) << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n"
+                        "<Collection>\n"
+                        "<DataSet timestep=\"0\" file=\"" << kData << "uv_sphere_16x8.vtp\"/>\n"
+                        "<DataSet timestep=\"2\" file=\"" << kData << "uv_sphere_32x16.vtp\"/>\n"
+                        "</Collection>\n</VTKFile>\n";
+  const std::string out = " --backend cpu --size 64x48 --stats --out " + dir + "shadinglab_series.png";
+  auto polygons = [](const std::string& stats) {
+    const auto at = stats.find("\"polygons\":");
+    return at == std::string::npos ? -1 : std::stol(stats.substr(at + 11));
+  };
+  const auto first = RunCli("render " + pvd + out);
+  ASSERT_EQ(first.status, 0) << first.err;
+  EXPECT_EQ(polygons(first.out), 224);
+  for (const std::string pick : { " --time-step 1", " --time 2", " --time 7e-1 --mode flat" })
+  {
+    const auto r = RunCli("render " + pvd + pick + out);
+    ASSERT_EQ(r.status, 0) << pick << ": " << r.err;
+    EXPECT_EQ(polygons(r.out), pick == " --time 7e-1 --mode flat" ? 224 : 960) << pick;
+  }
+  for (const std::string bad : { " --time-step 2", " --time 9", " --time -1", " --time 1 --time-step 0",
+         " --time-step -3", " --time abc" })
+  {
+    const auto r = RunCli("render " + pvd + bad + out);
+    EXPECT_EQ(r.status, 2) << bad;
+    EXPECT_EQ(CountLines(r.err), 1) << bad << ": " << r.err;
+  }
+  const auto plain = RunCli("render " + kData + "uv_sphere_16x8.vtp --time-step 0" + out);
+  EXPECT_EQ(plain.status, 2);
+  EXPECT_NE(plain.err.find("has no time steps"), std::string::npos) << plain.err;
+  const auto normals = RunCli("normals " + pvd + " --time-step 1 --json --out " + dir + "shadinglab_series.vtp");
+  EXPECT_EQ(normals.status, 0) << normals.err;
+}

@@ -103,6 +103,29 @@ TEST(ScientificFormatsTest, CollectionReadsItsFirstTimeStep)
                          "<DataSet timestep=\"0.5\" part=\"0\" file=\"shadinglab_formats_t0.vtp\"/>\n"
                          "</Collection>\n</VTKFile>\n";
   EXPECT_EQ(Read(path)->GetNumberOfPolys(), torus->GetNumberOfPolys());
+
+  // --time-step N and --time T (the last step at or before T, as ParaView
+  // snaps), and what is refused, in one line each.
+  shadinglab::ReadOptions step;
+  step.timeStep = 1;
+  EXPECT_EQ(Read(path, step)->GetNumberOfPolys(), sphere->GetNumberOfPolys());
+  shadinglab::ReadOptions at;
+  for (const auto& [time, polys] : { std::pair{ 2.5, sphere->GetNumberOfPolys() },
+         std::pair{ 1.0, torus->GetNumberOfPolys() }, std::pair{ 0.5, torus->GetNumberOfPolys() } })
+  {
+    at.time = time;
+    EXPECT_EQ(Read(path, at)->GetNumberOfPolys(), polys) << "--time " << time;
+  }
+  at.time = 3.0;
+  EXPECT_NE(ErrorOf(path, at).find("outside"), std::string::npos) << ErrorOf(path, at);
+  EXPECT_NE(ErrorOf(path, at).find("2 step(s), times 0.5 .. 2.5"), std::string::npos);
+  step.timeStep = 2;
+  EXPECT_NE(ErrorOf(path, step).find("steps 0..1"), std::string::npos) << ErrorOf(path, step);
+  step.time = 1.0;
+  EXPECT_NE(ErrorOf(path, step).find("give one"), std::string::npos) << ErrorOf(path, step);
+  shadinglab::ReadOptions plain;
+  plain.time = 0.5;
+  EXPECT_NE(ErrorOf(Temp("t0.vtp"), plain).find("has no time steps"), std::string::npos);
 }
 
 TEST(ScientificFormatsTest, StructuredGridsAndImagesGiveTheirOuterSurface)
@@ -281,6 +304,12 @@ TEST(ScientificFormatsTest, ExodusReadsEveryElementBlockWithItsVariables)
   const auto mesh = Read(path);
   EXPECT_EQ(mesh->GetNumberOfPolys(), sphere->GetNumberOfPolys());
   EXPECT_NE(mesh->GetPointData()->GetArray("Temperature"), nullptr) << "nodal variables come along";
+  // One state: step 0 reads it, step 1 is refused naming the count.
+  shadinglab::ReadOptions step;
+  step.timeStep = 0;
+  EXPECT_EQ(Read(path, step)->GetNumberOfPolys(), sphere->GetNumberOfPolys());
+  step.timeStep = 1;
+  EXPECT_NE(ErrorOf(path, step).find("1 step(s)"), std::string::npos) << ErrorOf(path, step);
   // Not netCDF, or netCDF cut short: one line, no library report.
   std::ofstream(Temp("text.exo")) << "not exodus\n";
   EXPECT_NE(ErrorOf(Temp("text.exo")).find("no netCDF signature"), std::string::npos);

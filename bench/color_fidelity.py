@@ -12,6 +12,11 @@
 #
 #   bench/color_fidelity.py BUILD_DIR OUT_DIR
 #
+# The meshes: the README's engine head scan coloured by Elevation (when
+# scripts/real-mesh-picture has written out/head_elevation.vtp), the
+# shipped terrain, the metaballs isosurface coloured by its normal's z, and
+# ParaView's Wavelet contoured at 157 coloured by Elevation (written here).
+#
 # Prints a Markdown table; writes the PNGs to OUT_DIR.
 import json
 import math
@@ -131,7 +136,11 @@ def main():
     here = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
     wavelet = os.path.join(out, 'wavelet_isosurface.vtp')
     wavelet_isosurface(wavelet)
-    meshes = [('terrain.vtp', os.path.join(here, 'datasets', 'terrain.vtp'), 'Elevation', -1),
+    meshes = []
+    head = os.path.join(here, 'out', 'head_elevation.vtp')  # scripts/real-mesh-picture writes it
+    if os.path.exists(head):
+        meshes.append(('engine head scan (OCCT head.stl, 117,694 triangles)', head, 'Elevation', -1))
+    meshes += [('terrain.vtp', os.path.join(here, 'datasets', 'terrain.vtp'), 'Elevation', -1),
               ('metaballs_isosurface.vtp', os.path.join(here, 'datasets', 'metaballs_isosurface.vtp'),
                'ExactNormal', 2),
               ('Wavelet isosurface', wavelet, 'Elevation', -1)]

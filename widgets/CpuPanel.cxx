@@ -138,7 +138,7 @@ render::Scene PanelScene(CpuMeshCache& cache, const PanelSpec& spec, const ViewS
   const bool scalars = !scene.mesh->scalars.empty() || !scene.mesh->cellScalars.empty();
   scene.colorMap = scalars ? &view.colorMap : nullptr;
   // Colour by data drops the highlights, as on every front end.
-  scene.material = render::MaterialForData(spec.material, render::Highlights::Auto, scalars);
+  scene.material = render::MaterialForData(spec.material, view.highlights, scalars);
   scene.camera = render::CameraFromVtk(view.camera);
   scene.lighting = ViewLighting(view, scene.camera);
   render::ToLocal(cache.Frame, scene.camera);

@@ -71,7 +71,7 @@ void GpuPanel::Configure()
   // Colour by data drops the highlights (render::MaterialForData): the
   // mapper applies it, knowing whether VTK mapped colours this frame.
   render::Settings settings = this->Mapper->GetSettings();
-  settings.highlights = render::Highlights::Auto;
+  settings.highlights = this->View->highlights;
   this->Mapper->SetSettings(settings);
 }
 
@@ -127,10 +127,12 @@ void GpuPanel::OnRenderEnd(vtkObject*, unsigned long event, void*)
     const render::Camera camera = render::CameraFromVtk(this->View->camera);
     gl::ApplyLighting(ViewLighting(*this->View, camera), this->Renderer);
     // The view's display transform may have changed since Configure.
-    if (this->Mapper->GetSettings().render.display != this->View->display)
+    if (this->Mapper->GetSettings().render.display != this->View->display ||
+      this->Mapper->GetSettings().highlights != this->View->highlights)
     {
       render::Settings settings = this->Mapper->GetSettings();
       settings.render.display = this->View->display;
+      settings.highlights = this->View->highlights;
       this->Mapper->SetSettings(settings);
     }
     this->ConfigureColors();

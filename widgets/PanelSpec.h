@@ -88,6 +88,9 @@ struct ViewState
   /// the material's colour) and the map over the array's range.
   std::string colorBy;
   render::ColorMap colorMap;
+  /// Highlights on a surface coloured by data (render::MaterialForData):
+  /// Auto leaves them off, as on every front end.
+  render::Highlights highlights = render::Highlights::Auto;
   /// Left-drag draws the profile line instead of rotating.
   bool profileTool = false;
 };

@@ -81,6 +81,12 @@ QGroupBox* MainWindow::BuildColorBox()
   colorForm->addRow("Array", this->ColorBy);
   this->ColorMapChoice = widgets::MakeSettingComboBox("colormap");
   colorForm->addRow("Colour map", this->ColorMapChoice);
+  auto* highlights = widgets::MakeSettingComboBox("highlights");
+  colorForm->addRow("Highlights", highlights);
+  connect(highlights, QOverload<int>::of(&QComboBox::activated), this, [this](int index) {
+    this->View->View().highlights = render::kHighlightModes[index].value;
+    this->View->RenderAll();
+  });
   this->Legend = new widgets::ColorLegend;
   colorForm->addRow(this->Legend);
   for (QComboBox* box : { this->ColorBy, this->ColorMapChoice })

@@ -35,4 +35,5 @@ private slots:
   void ControlsKeepEachOtherAndFold();
   void BrdfPlotShowsEveryLobe();
   void SpectralErrorMapIsFromFloatFrames();
+  void HighlightsOnDataFollowTheirControl();
 };

@@ -5,6 +5,11 @@
 #include "ExplorerTestUtil.h"
 #include "MeshIO.h"
 #include "BrdfPlot.h"
+#include "AnalyticMeshes.h"
+#include <vtkFloatArray.h>
+#include <vtkPointData.h>
+#include <vtkPolyData.h>
+#include <QComboBox>
 
 #include <QApplication>
 #include <QAction>
@@ -354,4 +359,47 @@ void ExplorerGLTest::SpectralErrorMapIsFromFloatFrames()
   }
   QVERIFY2(lit > 500, qPrintable(QString("%1 bright pixels in the map").arg(lit)));
   QCOMPARE(differing, 0);
+}
+
+// The Colour by data box's Highlights: Auto (the default) keeps a surface
+// coloured by data true to its map; On adds the highlights back, on both
+// backends alike.
+void ExplorerGLTest::HighlightsOnDataFollowTheirControl()
+{
+  vtkSmartPointer<vtkPolyData> torus;
+  torus.TakeReference(datasets::MakeTorus(1.0, 0.45, 48, 24));
+  vtkNew<vtkFloatArray> height;
+  height->SetName("Height");
+  for (vtkIdType i = 0; i < torus->GetNumberOfPoints(); ++i)
+  {
+    height->InsertNextValue(static_cast<float>(torus->GetPoint(i)[1]));
+  }
+  torus->GetPointData()->AddArray(height);
+  for (const render::Backend backend : { render::Backend::CPU, render::Backend::GPU })
+  {
+    auto window = Open("modes", backend, torus);
+    QVERIFY(window->ApplyColorBy("POINTS:Height").empty());
+    window->RefreshNow();
+    const render::Image plain = window->Comparison()->Panel(2)->Snapshot(); // Phong
+    auto* box = window->findChild<QComboBox*>("highlights");
+    QVERIFY(box);
+    QCOMPARE(box->currentText(), QString("Auto"));
+    box->setCurrentIndex(box->findText("On"));
+    emit box->activated(box->currentIndex());
+    window->RefreshNow();
+    const render::Image shiny = window->Comparison()->Panel(2)->Snapshot();
+    int whiter = 0;
+    for (size_t p = 0; p < plain.covered.size(); ++p)
+    {
+      if (plain.covered[p] && shiny.covered[p])
+      {
+        const float gain = (shiny.rgb[3 * p] + shiny.rgb[3 * p + 1] + shiny.rgb[3 * p + 2]) -
+          (plain.rgb[3 * p] + plain.rgb[3 * p + 1] + plain.rgb[3 * p + 2]);
+        whiter += gain > 0.15f;
+      }
+    }
+    QVERIFY2(whiter > 50, qPrintable(QString("%1 pixels brighter with highlights on (%2)")
+                                       .arg(whiter)
+                                       .arg(backend == render::Backend::GPU ? "GPU" : "CPU")));
+  }
 }

@@ -452,7 +452,7 @@ void MaterialRows(std::vector<SettingRow>& t)
     r.choices = ChoicesOf(kHighlightModes);
     r.doc = "draw the specular lobe: auto leaves it off a surface coloured by data (white "
             "added to a colour map reads as data), on draws it always, off never";
-    r.frontEnds = kCli | kParaView | kMapper;
+    r.frontEnds = kCli | kParaView | kMapper | kExplorer;
     r.metavar = "H";
     r.set = [](Settings& s, const SettingValue& v) {
       s.highlights = kHighlightModes[static_cast<int>(v.numbers[0])].value;

@@ -74,6 +74,29 @@ struct Request
 
 /// Parses the command line into `request`: -1 to go on, else the exit
 /// status (0 after --help, --version or --list-scenes; 2 after an error).
+/// --time T or --time-step N into `reading` (the CLI's ReadOptions; the
+/// reader refuses a step the file does not have). "" or a one-line error.
+std::string SetTimeStep(const std::string& flag, const std::string& v, shadinglab::ReadOptions& reading)
+{
+  char* end = nullptr;
+  const double number = std::strtod(v.c_str(), &end);
+  if (v.empty() || *end || !std::isfinite(number) ||
+    (flag == "--time-step" && (number < 0 || number != std::floor(number) || number > 1e9)))
+  {
+    return flag + " must be " + (flag == "--time" ? "a finite time" : "a step 0, 1, ...") +
+      " (got '" + v + "')";
+  }
+  if (flag == "--time")
+  {
+    reading.time = number;
+  }
+  else
+  {
+    reading.timeStep = static_cast<int>(number);
+  }
+  return "";
+}
+
 int ParseArguments(int argc, char** argv, Request& request)
 {
   using namespace shadinglab;
@@ -139,24 +162,10 @@ int ParseArguments(int argc, char** argv, Request& request)
       }
       else if (a == "--time" || a == "--time-step")
       {
-        // The step of a time series, as the CLI reads it (ReadOptions);
-        // the reader refuses a step the file does not have.
-        const std::string v = value(a.c_str());
-        char* end = nullptr;
-        const double number = std::strtod(v.c_str(), &end);
-        if (v.empty() || *end || !std::isfinite(number) ||
-          (a == "--time-step" && (number < 0 || number != std::floor(number) || number > 1e9)))
+        const std::string problem = SetTimeStep(a, value(a.c_str()), options.reading);
+        if (!problem.empty())
         {
-          return Fail(a + " must be " + (a == "--time" ? "a finite time" : "a step 0, 1, ...") +
-            " (got '" + v + "')");
-        }
-        if (a == "--time")
-        {
-          options.reading.time = number;
-        }
-        else
-        {
-          options.reading.timeStep = static_cast<int>(number);
+          return Fail(problem);
         }
       }
       else if (a == "--variant")

@@ -343,15 +343,7 @@ void ExplorerGLTest::ColourByDataOnBothBackends()
   // A user's torus with a point array (its height): coloured through
   // Cool to Warm on every panel, the GPU panel as the CPU panel, the legend
   // shown; an array the mesh lacks is one line and changes nothing.
-  vtkSmartPointer<vtkPolyData> torus;
-  torus.TakeReference(datasets::MakeTorus(1.0, 0.45, 48, 24));
-  vtkNew<vtkFloatArray> height;
-  height->SetName("Height");
-  for (vtkIdType i = 0; i < torus->GetNumberOfPoints(); ++i)
-  {
-    height->InsertNextValue(static_cast<float>(torus->GetPoint(i)[1]));
-  }
-  torus->GetPointData()->AddArray(height);
+  const vtkSmartPointer<vtkPolyData> torus = TorusWithHeight();
   render::Image phong[2];
   for (const render::Backend backend : { render::Backend::CPU, render::Backend::GPU })
   {

@@ -366,15 +366,7 @@ void ExplorerGLTest::SpectralErrorMapIsFromFloatFrames()
 // backends alike.
 void ExplorerGLTest::HighlightsOnDataFollowTheirControl()
 {
-  vtkSmartPointer<vtkPolyData> torus;
-  torus.TakeReference(datasets::MakeTorus(1.0, 0.45, 48, 24));
-  vtkNew<vtkFloatArray> height;
-  height->SetName("Height");
-  for (vtkIdType i = 0; i < torus->GetNumberOfPoints(); ++i)
-  {
-    height->InsertNextValue(static_cast<float>(torus->GetPoint(i)[1]));
-  }
-  torus->GetPointData()->AddArray(height);
+  const vtkSmartPointer<vtkPolyData> torus = TorusWithHeight();
   for (const render::Backend backend : { render::Backend::CPU, render::Backend::GPU })
   {
     auto window = Open("modes", backend, torus);

@@ -14,6 +14,7 @@
 #include "shadinglab/model/Spectrum.h"
 #include "ScanlineInspector.h"
 #include "ShadingPanel.h"
+#include <vtkNew.h>
 
 #include "VtkCamera.h"
 
@@ -51,6 +52,21 @@ namespace shadinglab::explorertest
 
 /// One step of 8-bit display: the tolerance the issue states for profiles.
 inline constexpr double kOne255 = 1.0 / 255.0;
+
+/// A user's torus (R 1, r 0.45, 48 x 24) with a point array "Height" (y).
+inline vtkSmartPointer<vtkPolyData> TorusWithHeight()
+{
+  vtkSmartPointer<vtkPolyData> torus;
+  torus.TakeReference(datasets::MakeTorus(1.0, 0.45, 48, 24));
+  vtkNew<vtkFloatArray> height;
+  height->SetName("Height");
+  for (vtkIdType i = 0; i < torus->GetNumberOfPoints(); ++i)
+  {
+    height->InsertNextValue(static_cast<float>(torus->GetPoint(i)[1]));
+  }
+  torus->GetPointData()->AddArray(height);
+  return torus;
+}
 
 /// Lets Qt show new widgets and deliver queued events.
 inline void Settle(int passes = 5)

@@ -141,12 +141,20 @@ void SettingsFromArguments(const Arguments& args, SceneArguments& scene)
   }
 }
 
+/// Concave polygons kept whole for --polygons direct's even-odd scan,
+/// split by ear clipping otherwise (render::ScansPolygonsWhole).
+render::PolygonHandling ConvertedPolygons(const SceneArguments& scene)
+{
+  return render::ScansPolygonsWhole(scene.settings.render) ? render::PolygonHandling::Direct
+                                                          : render::PolygonHandling::Triangulate;
+}
+
 /// --color-by, --colormap, --range: the mesh with the array's values and
 /// the colour map over the range asked for (or the data's).
 void ColorByFromArguments(vtkPolyData* polydata, SceneArguments& scene)
 {
   const std::string problem = render::MeshColoredBy(polydata, scene.frame, scene.settings.color,
-    "--", scene.mesh, scene.colorMap, scene.colorTitle);
+    "--", scene.mesh, scene.colorMap, scene.colorTitle, ConvertedPolygons(scene));
   if (!problem.empty())
   {
     throw UsageError(problem);
@@ -236,7 +244,7 @@ void ReadAndPrepare(const Arguments& args, const std::string& input, SceneArgume
   // it below, so far-off or tiny meshes render like unit ones.
   if (scene.settings.color.array.empty())
   {
-    scene.mesh = render::MeshFromPolyData(polydata, scene.frame);
+    scene.mesh = render::MeshFromPolyData(polydata, scene.frame, ConvertedPolygons(scene));
   }
   else
   {

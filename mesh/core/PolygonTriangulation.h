@@ -31,8 +31,10 @@ template <typename PointAt>
 bool TriangulatePolygon(int64_t n, PointAt&& point, std::vector<int64_t>& triangles);
 
 /// True when every corner of polygon 0..n-1 turns the way its Newell
-/// normal says (collinear corners allowed): a fan or one span per scanline
-/// covers it exactly.
+/// normal says (collinear corners allowed): a fan covers it exactly. (A
+/// star polygon such as the pentagram also turns one way at every corner,
+/// twice round; its edges cross and no triangles cover it alone: it is
+/// fanned, as VTK fans it. --polygons direct scans it by the even-odd rule.)
 template <typename PointAt>
 bool IsConvexPolygon(int64_t n, PointAt&& point)
 {

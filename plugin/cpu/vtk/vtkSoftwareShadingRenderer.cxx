@@ -301,6 +301,10 @@ int vtkSoftwareShadingRenderer::RequestData(
   // it or converted from the vtkCamera, and the lights: as the command line.
   sl::render::WorldFrame frame;
   const sl::render::Image* image = nullptr;
+  // Concave polygons whole for the direct scan (even-odd), else split.
+  const auto polygons = sl::render::ScansPolygonsWhole(options)
+    ? sl::render::PolygonHandling::Direct
+    : sl::render::PolygonHandling::Triangulate;
   try
   {
     // Colour by data (the settings' color-by, colormap and range).
@@ -311,7 +315,7 @@ int vtkSoftwareShadingRenderer::RequestData(
     {
       std::string title;
       const std::string problem =
-        sl::render::MeshColoredBy(drawn, frame, settings.color, "", mesh, map, title);
+        sl::render::MeshColoredBy(drawn, frame, settings.color, "", mesh, map, title, polygons);
       if (!problem.empty())
       {
         throw std::invalid_argument(problem);
@@ -319,7 +323,7 @@ int vtkSoftwareShadingRenderer::RequestData(
     }
     else
     {
-      mesh = sl::render::MeshFromPolyData(drawn, frame);
+      mesh = sl::render::MeshFromPolyData(drawn, frame, polygons);
     }
     double bounds[6];
     mesh.Bounds(bounds);

@@ -35,7 +35,8 @@ namespace
 {
 
 Mesh Convert(vtkPolyData* input, WorldFrame& frame, bool normalize,
-  const ScalarField* field = nullptr, double* range = nullptr);
+  const ScalarField* field = nullptr, double* range = nullptr,
+  PolygonHandling polygons = PolygonHandling::Triangulate);
 
 /// Largest polygon handed to the renderers whole: the CPU renderer clips a
 /// polygon at the near plane into at most one more vertex than it has, in a
@@ -52,28 +53,6 @@ constexpr vtkIdType kMaxWholePolygon = 63;
 /// field of so few float steps cannot be told from its own rounding.
 constexpr double kConstantFieldUlps = 16.0;
 
-/// True when the polygon turns the same way at every corner (collinear
-/// corners allowed), measured against its Newell normal.
-bool IsConvex(vtkPoints* points, vtkIdList* ids)
-{
-  const vtkIdType n = ids->GetNumberOfIds();
-  auto at = [&](vtkIdType k) {
-    double p[3];
-    points->GetPoint(ids->GetId(k % n), p);
-    return Vec3<double>(p[0], p[1], p[2]);
-  };
-  const Vec3<double> normal = mesh::NewellAreaVector<double>(n, at);
-  for (vtkIdType k = 0; k < n; ++k)
-  {
-    const Vec3<double> a = at(k), b = at(k + 1), c = at(k + 2);
-    if (Dot(Cross(b - a, c - b), normal) < 0)
-    {
-      return false;
-    }
-  }
-  return true;
-}
-
 } // namespace
 
 Mesh MeshFromPolyData(vtkPolyData* input)
@@ -82,15 +61,15 @@ Mesh MeshFromPolyData(vtkPolyData* input)
   return Convert(input, identity, false);
 }
 
-Mesh MeshFromPolyData(vtkPolyData* input, WorldFrame& frame)
+Mesh MeshFromPolyData(vtkPolyData* input, WorldFrame& frame, PolygonHandling polygons)
 {
-  return Convert(input, frame, true);
+  return Convert(input, frame, true, nullptr, nullptr, polygons);
 }
 
 Mesh MeshFromPolyData(vtkPolyData* input, WorldFrame& frame, const ScalarField& field,
-  double range[2])
+  double range[2], PolygonHandling polygons)
 {
-  return Convert(input, frame, true, &field, range);
+  return Convert(input, frame, true, &field, range, polygons);
 }
 
 std::string ParseScalarField(const std::string& spec, ScalarField& field)
@@ -317,12 +296,14 @@ void CopyField(vtkPolyData* pd, const ScalarField& field, const std::vector<vtkI
   }
 }
 
-/// Polygons the renderers cannot take whole (concave ones, which a fan or
-/// a scanline pairing of one span would fill wrongly, and ones with more
-/// than kMaxWholePolygon vertices) are triangulated by ear clipping
+/// Polygons the renderers cannot take whole (concave ones, which a fan
+/// would fill over their notches, unless `polygons` is Direct: the CPU
+/// renderer's even-odd scan draws them exactly; and ones with more than
+/// kMaxWholePolygon vertices) are triangulated by ear clipping
 /// (mesh::TriangulatePolygon: keyholes, stars, combs, collinear runs); the
 /// triangles keep their polygon's cell normal. `polygonOf` maps back.
-void ConvertPolygons(vtkPolyData* pd, Mesh& mesh, std::vector<vtkIdType>& polygonOf)
+void ConvertPolygons(
+  vtkPolyData* pd, PolygonHandling polygons, Mesh& mesh, std::vector<vtkIdType>& polygonOf)
 {
   vtkCellArray* polys = pd->GetPolys();
   mesh.offsets.reserve(static_cast<size_t>(polys->GetNumberOfCells() + 1));
@@ -336,17 +317,17 @@ void ConvertPolygons(vtkPolyData* pd, Mesh& mesh, std::vector<vtkIdType>& polygo
   {
     polys->GetCellAtId(c, ids);
     const vtkIdType n = ids->GetNumberOfIds();
-    if (n > 3 && (n > kMaxWholePolygon || !IsConvex(points, ids)))
+    auto pointAt = [&](int64_t k) {
+      double p[3];
+      points->GetPoint(ids->GetId(k), p);
+      return Vec3<double>(p[0], p[1], p[2]);
+    };
+    if (n > 3 &&
+      (n > kMaxWholePolygon ||
+        !(polygons == PolygonHandling::Direct || mesh::IsConvexPolygon(n, pointAt))))
     {
       triangles.clear();
-      const bool split = mesh::TriangulatePolygon(
-        n,
-        [&](int64_t k) {
-          double p[3];
-          points->GetPoint(ids->GetId(k), p);
-          return Vec3<double>(p[0], p[1], p[2]);
-        },
-        triangles);
+      const bool split = mesh::TriangulatePolygon(n, pointAt, triangles);
       if (split)
       {
         for (size_t t = 0; t + 2 < triangles.size(); t += 3)
@@ -371,7 +352,7 @@ void ConvertPolygons(vtkPolyData* pd, Mesh& mesh, std::vector<vtkIdType>& polygo
 }
 
 Mesh Convert(vtkPolyData* input, WorldFrame& frame, bool normalize, const ScalarField* field,
-  double* range)
+  double* range, PolygonHandling polygons)
 {
   vtkSmartPointer<vtkPolyData> pd = input;
   if (input->GetNumberOfStrips() > 0)
@@ -448,7 +429,7 @@ Mesh Convert(vtkPolyData* input, WorldFrame& frame, bool normalize, const Scalar
   std::vector<vtkIdType> polygonOf; // empty: polygon i is input polygon i
   if (!TrianglesInPlace(polys, mesh))
   {
-    ConvertPolygons(pd, mesh, polygonOf);
+    ConvertPolygons(pd, polygons, mesh, polygonOf);
   }
   if (field)
   {
@@ -513,7 +494,8 @@ std::string CheckColorArray(
 }
 
 std::string MeshColoredBy(vtkPolyData* polydata, WorldFrame& frame, const ColorBySettings& color,
-  const std::string& prefix, Mesh& mesh, ColorMap& map, std::string& title)
+  const std::string& prefix, Mesh& mesh, ColorMap& map, std::string& title,
+  PolygonHandling polygons)
 {
   ScalarField field;
   std::string problem = ParseScalarField(color.array, field);
@@ -524,7 +506,7 @@ std::string MeshColoredBy(vtkPolyData* polydata, WorldFrame& frame, const ColorB
   double range[2] = { 0, 1 };
   try
   {
-    mesh = MeshFromPolyData(polydata, frame, field, range);
+    mesh = MeshFromPolyData(polydata, frame, field, range, polygons);
   }
   catch (const std::invalid_argument& e)
   {

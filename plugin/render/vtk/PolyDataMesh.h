@@ -25,8 +25,14 @@ Mesh MeshFromPolyData(vtkPolyData* polydata);
  * The same in a local frame (see WorldFrame): points centred on their
  * bounds and scaled to a unit bounding sphere in double before the
  * conversion to float; `frame` says how to map world coordinates.
+ * Concave polygons, and polygons of more than 63 corners, are split by
+ * ear clipping, unless `polygons` is Direct: then polygons of up to 63
+ * corners stay whole, concave or not, for the CPU renderer's even-odd scan
+ * (pass Direct only where ScansPolygonsWhole: a fan of a concave polygon
+ * fills its notches).
  */
-Mesh MeshFromPolyData(vtkPolyData* polydata, WorldFrame& frame);
+Mesh MeshFromPolyData(vtkPolyData* polydata, WorldFrame& frame,
+  PolygonHandling polygons = PolygonHandling::Triangulate);
 
 /// The data array to colour by, as `--color-by` spells it:
 /// "[POINTS:|CELLS:]NAME[:COMPONENT|Magnitude]".
@@ -57,7 +63,7 @@ std::string ParseScalarField(const std::string& spec, ScalarField& field);
  * drawn as a constant one).
  */
 Mesh MeshFromPolyData(vtkPolyData* polydata, WorldFrame& frame, const ScalarField& field,
-  double range[2]);
+  double range[2], PolygonHandling polygons = PolygonHandling::Triangulate);
 
 /**
  * Colour by data as every front end spells it (render::ColorBySettings:
@@ -65,10 +71,11 @@ Mesh MeshFromPolyData(vtkPolyData* polydata, WorldFrame& frame, const ScalarFiel
  * the array's values, `map` through the named colour map over the range
  * (the data's for "auto"), and the legend's `title` ("Velocity 0").
  * Returns "" or a one-line error naming the setting with `prefix` ("--"
- * on the command line).
+ * on the command line). `polygons` as for MeshFromPolyData.
  */
 std::string MeshColoredBy(vtkPolyData* polydata, WorldFrame& frame, const ColorBySettings& color,
-  const std::string& prefix, Mesh& mesh, ColorMap& map, std::string& title);
+  const std::string& prefix, Mesh& mesh, ColorMap& map, std::string& title,
+  PolygonHandling polygons = PolygonHandling::Triangulate);
 
 /**
  * MeshColoredBy's check of the array alone: "" when `polydata` has it (and

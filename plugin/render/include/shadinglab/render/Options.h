@@ -213,6 +213,15 @@ struct RenderOptions
   bool displayBytes = false;
 };
 
+/// True when the CPU renderer scans polygons of more than three corners
+/// whole (--polygons direct, even-odd: docs/model.md section 3), so a mesh
+/// for it keeps concave polygons whole too. Fast Phong's Taylor form is per
+/// triangle (it fans every polygon), so its concave polygons are split.
+inline bool ScansPolygonsWhole(const RenderOptions& options)
+{
+  return options.polygons == PolygonHandling::Direct && options.mode != ShadingMode::FastPhong;
+}
+
 /// One span of a traced row: its ends (the edge crossings x_4, x_5 of
 /// docs/model.md eq. 2.3) and the attributes there.
 struct TracedSpan

@@ -7,6 +7,7 @@
 #include "MeshArrays.h"
 #include "MeshPipeline.h"
 #include "PolyDataMesh.h"
+#include "VertexNormals.h"
 #include "shadinglab/cpu/SoftwareRenderer.h"
 #include "shadinglab/model/Materials.h"
 
@@ -20,6 +21,7 @@
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
+#include <utility>
 
 namespace shadinglab::cli
 {
@@ -233,6 +235,7 @@ void ReadAndPrepare(const Arguments& args, const std::string& input, SceneArgume
     {
       polydata = mesh::PrepareMesh(polydata, preparation, report);
       scene.normalsMade = preparation.computeNormals;
+      mesh::ReleaseNormalScratch(); // before the mesh is copied for the renderer
     }
     catch (const std::invalid_argument& e)
     {
@@ -244,7 +247,9 @@ void ReadAndPrepare(const Arguments& args, const std::string& input, SceneArgume
   // it below, so far-off or tiny meshes render like unit ones.
   if (scene.settings.color.array.empty())
   {
-    scene.mesh = render::MeshFromPolyData(polydata, scene.frame, ConvertedPolygons(scene));
+    // Not needed after: its cells go as soon as they are copied.
+    scene.mesh =
+      render::MeshFromPolyDataReleasing(std::move(polydata), scene.frame, ConvertedPolygons(scene));
   }
   else
   {

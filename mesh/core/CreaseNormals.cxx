@@ -237,6 +237,13 @@ namespace
 
 /// Vertices below which the pass runs on the calling thread alone: a
 /// thread's start (~50 us) costs more than ~20k vertices' work.
+/// Scratch arrays persist per thread across calls: a filter re-run on a
+/// large mesh then reuses their pages instead of faulting in ~100 MB anew
+/// (measured: a third of the time was the kernel zeroing fresh pages).
+/// ReleaseNormalScratch frees them (a one-shot command, before the next
+/// large allocation: 256 MB on 16M triangles).
+thread_local CornerTable tableOfThisThread;
+
 constexpr int64_t kParallelVertices = 100000;
 
 /// What one range of vertices makes: the split points it adds (numbered
@@ -337,13 +344,9 @@ NormalResult ComputeVertexNormals(const MeshView& m, const NormalOptions& opt)
   NormalResult r;
   const int64_t nv = m.numberOfPoints, np = m.numberOfPolygons;
   const int64_t nc = np > 0 ? m.offsets[np] : 0;
-  // Scratch arrays persist per thread across calls: a filter re-run on a
-  // large mesh then reuses their pages instead of faulting in ~100 MB anew
-  // (measured: a third of the time was the kernel zeroing fresh pages).
   // No per-polygon table of area vectors is kept (160 MB on 5M triangles):
   // the vertex pass computes the area vectors of the polygons around each
   // vertex as it reaches it, the same arithmetic, so the same bits.
-  static thread_local CornerTable tableOfThisThread;
   CornerTable& table = tableOfThisThread; // the workers read the caller's table
   BuildCornerTable(m, table);
   const FeatureEdges features(opt.featureEdges);
@@ -409,6 +412,11 @@ NormalResult ComputeVertexNormals(const MeshView& m, const NormalOptions& opt)
     }
   }
   return r;
+}
+
+void ReleaseNormalScratch()
+{
+  tableOfThisThread = CornerTable();
 }
 
 } // namespace shadinglab::mesh

@@ -24,6 +24,7 @@
 #include <map>
 #include <random>
 #include <string>
+#include <utility>
 
 namespace sl = shadinglab;
 namespace render = shadinglab::render;
@@ -1093,4 +1094,49 @@ TEST(CpuRendererTest, DepthOutputIsTheNormalizedDeviceDepth)
   opt.ssaa = 1;
   opt.keepDepth = false;
   EXPECT_TRUE(test::RenderCpu(mesh, cam, lighting, material, opt).depth.empty());
+}
+
+TEST(CpuRendererTest, ReleasingConversionGivesTheSameMeshAndDropsTheCells)
+{
+  // MeshFromPolyDataReleasing (the CLI's, for big meshes): the mesh
+  // MeshFromPolyData gives, bit for bit, for triangles (copied in place)
+  // and for polygons with concave ones among them (converted one by one);
+  // the polydata is left without polygons, its points kept.
+  vtkSmartPointer<vtkPolyData> torus;
+  torus.TakeReference(sl::datasets::MakeTorus(1.0, 0.4, 48, 24));
+  torus->GetPointData()->SetNormals(
+    torus->GetPointData()->GetArray(sl::datasets::kExactNormalArray));
+  auto mixed = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  for (const auto& [x, y] : { std::pair{ 0.0, 0.0 }, { 2.0, 0.0 }, { 2.0, 2.0 }, { 1.0, 0.5 },
+         { 0.0, 2.0 }, { 3.0, 0.0 }, { 3.0, 1.0 } })
+  {
+    points->InsertNextPoint(x, y, 0.1 * x);
+  }
+  vtkNew<vtkCellArray> polys;
+  const vtkIdType dart[5] = { 0, 1, 2, 3, 4 }, tri[3] = { 1, 5, 6 }, quad[4] = { 1, 5, 6, 2 };
+  polys->InsertNextCell(5, dart);
+  polys->InsertNextCell(3, tri);
+  polys->InsertNextCell(4, quad);
+  mixed->SetPoints(points);
+  mixed->SetPolys(polys);
+  for (vtkPolyData* pd : { torus.Get(), mixed.Get() })
+  {
+    render::WorldFrame a, b;
+    const render::Mesh expected = render::MeshFromPolyData(pd, a);
+    auto copy = vtkSmartPointer<vtkPolyData>::New();
+    copy->DeepCopy(pd);
+    const vtkSmartPointer<vtkPolyData> kept = copy; // to look at it after
+    const render::Mesh released = render::MeshFromPolyDataReleasing(std::move(copy), b);
+    EXPECT_EQ(released.points, expected.points);
+    EXPECT_EQ(released.normals, expected.normals);
+    EXPECT_EQ(released.offsets, expected.offsets);
+    EXPECT_EQ(released.connectivity, expected.connectivity);
+    EXPECT_EQ(a.center.x, b.center.x);
+    EXPECT_EQ(a.scale, b.scale);
+    EXPECT_EQ(kept->GetNumberOfPolys(), 0);
+    EXPECT_EQ(kept->GetNumberOfPoints(), pd->GetNumberOfPoints());
+    EXPECT_EQ(pd->GetNumberOfPolys(), pd == torus.Get() ? 2 * 48 * 24 : 3) << "MeshFromPolyData's untouched";
+  }
+  EXPECT_GT(render::MeshFromPolyData(mixed).NumberOfPolygons(), 3) << "the dart is split";
 }

@@ -36,7 +36,7 @@ namespace
 
 Mesh Convert(vtkPolyData* input, WorldFrame& frame, bool normalize,
   const ScalarField* field = nullptr, double* range = nullptr,
-  PolygonHandling polygons = PolygonHandling::Triangulate);
+  PolygonHandling polygons = PolygonHandling::Triangulate, bool release = false);
 
 /// Largest polygon handed to the renderers whole: the CPU renderer clips a
 /// polygon at the near plane into at most one more vertex than it has, in a
@@ -70,6 +70,12 @@ Mesh MeshFromPolyData(vtkPolyData* input, WorldFrame& frame, const ScalarField& 
   double range[2], PolygonHandling polygons)
 {
   return Convert(input, frame, true, &field, range, polygons);
+}
+
+Mesh MeshFromPolyDataReleasing(
+  vtkSmartPointer<vtkPolyData> input, WorldFrame& frame, PolygonHandling polygons)
+{
+  return Convert(input, frame, true, nullptr, nullptr, polygons, true);
 }
 
 std::string ParseScalarField(const std::string& spec, ScalarField& field)
@@ -352,7 +358,7 @@ void ConvertPolygons(
 }
 
 Mesh Convert(vtkPolyData* input, WorldFrame& frame, bool normalize, const ScalarField* field,
-  double* range, PolygonHandling polygons)
+  double* range, PolygonHandling polygons, bool release)
 {
   vtkSmartPointer<vtkPolyData> pd = input;
   if (input->GetNumberOfStrips() > 0)
@@ -379,6 +385,21 @@ Mesh Convert(vtkPolyData* input, WorldFrame& frame, bool normalize, const Scalar
     frame.center = (lo + hi) * 0.5;
     // A mesh of one point has no extent: keep its scale.
     frame.scale = radius > 0 && std::isfinite(radius) ? radius : 1.0;
+  }
+  // The polygons first: releasing, their arrays (the largest) go before
+  // the points and normals are copied.
+  vtkCellArray* polys = pd->GetPolys();
+  const vtkIdType numberOfPolys = polys->GetNumberOfCells();
+  std::vector<vtkIdType> polygonOf; // empty: polygon i is input polygon i
+  if (!TrianglesInPlace(polys, mesh))
+  {
+    ConvertPolygons(pd, polygons, mesh, polygonOf);
+  }
+  if (release)
+  {
+    vtkNew<vtkCellArray> none;
+    pd->SetPolys(none);
+    polys = nullptr;
   }
   mesh.points.resize(static_cast<size_t>(3 * np));
   for (vtkIdType i = np > 0 && LocalPointsInPlace(pd->GetPoints(), frame, mesh.points) ? np : 0; i < np; ++i)
@@ -425,12 +446,6 @@ Mesh Convert(vtkPolyData* input, WorldFrame& frame, bool normalize, const Scalar
       }
     }
   }
-  vtkCellArray* polys = pd->GetPolys();
-  std::vector<vtkIdType> polygonOf; // empty: polygon i is input polygon i
-  if (!TrianglesInPlace(polys, mesh))
-  {
-    ConvertPolygons(pd, polygons, mesh, polygonOf);
-  }
   if (field)
   {
     CopyField(pd, *field, polygonOf, mesh, range);
@@ -439,7 +454,7 @@ Mesh Convert(vtkPolyData* input, WorldFrame& frame, bool normalize, const Scalar
   // lines before them in cell order.
   vtkDataArray* cn = pd->GetCellData()->GetNormals();
   if (cn && cn->GetNumberOfComponents() == 3 && pd->GetNumberOfVerts() == 0 &&
-    pd->GetNumberOfLines() == 0 && cn->GetNumberOfTuples() == polys->GetNumberOfCells())
+    pd->GetNumberOfLines() == 0 && cn->GetNumberOfTuples() == numberOfPolys)
   {
     const size_t n = static_cast<size_t>(mesh.NumberOfPolygons());
     mesh.faceNormals.resize(3 * n);

@@ -119,10 +119,8 @@ int vtkWeightedPolyDataNormals::RequestData(
       outPD->CopyData(inPD, src, i);
     }
   }
-  vtkNew<vtkIdTypeArray> originalIds;
-  originalIds->SetName("OriginalPointIds");
-  originalIds->SetNumberOfTuples(nOut);
-  std::copy(result.originalPointIds.begin(), result.originalPointIds.end(), originalIds->GetPointer(0));
+  // Each result array freed as soon as it is copied: on a big mesh the
+  // double normals and the ids are 0.25 GB (16M triangles).
   vtkNew<vtkFloatArray> normals;
   normals->SetName("Normals");
   normals->SetNumberOfComponents(3);
@@ -132,6 +130,12 @@ int vtkWeightedPolyDataNormals::RequestData(
   {
     nf[i] = static_cast<float>(result.normals[i]);
   }
+  std::vector<double>().swap(result.normals);
+  vtkNew<vtkIdTypeArray> originalIds;
+  originalIds->SetName("OriginalPointIds");
+  originalIds->SetNumberOfTuples(nOut);
+  std::copy(result.originalPointIds.begin(), result.originalPointIds.end(), originalIds->GetPointer(0));
+  std::vector<int64_t>().swap(result.originalPointIds);
   outPD->SetNormals(normals);
   outPD->AddArray(originalIds);
 

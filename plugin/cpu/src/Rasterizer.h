@@ -23,6 +23,8 @@
 #include <limits>
 #include <memory>
 #include <type_traits>
+#include <utility>
+#include <vector>
 
 namespace shadinglab::cpu
 {
@@ -40,16 +42,49 @@ using raster::ScreenVertex;
 using raster::ThreadState;
 using raster::TwiceSignedArea;
 
+/// An allocator whose resize leaves new elements uninitialised (for
+/// trivial records): the pages of a vertex array the frame never writes
+/// (vertices of faces turned away or never drawn) are never touched, so
+/// never resident (16M triangles: ~0.2 GB). Unwritten records are never
+/// read (at a steady size a resize keeps the last frame's records anyway).
+template<typename T>
+struct UninitializedAllocator : std::allocator<T>
+{
+  static_assert(std::is_trivially_default_constructible_v<T>);
+  template<typename U>
+  struct rebind
+  {
+    using other = UninitializedAllocator<U>;
+  };
+  UninitializedAllocator() = default;
+  template<typename U>
+  UninitializedAllocator(const UninitializedAllocator<U>&) noexcept
+  {
+  }
+  template<typename U>
+  void construct(U* p) noexcept
+  {
+    ::new (static_cast<void*>(p)) U; // default-initialised: left as it is
+  }
+  template<typename U, typename... Args>
+  void construct(U* p, Args&&... args)
+  {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+  }
+};
+template<typename T>
+using UninitializedVector = std::vector<T, UninitializedAllocator<T>>;
+
 /// Buffers the rasterizer keeps across frames (no reallocation at a steady size).
 struct RasterBuffers
 {
   /// Every vertex's projection, 16 bytes: binning reads these for every
   /// polygon, and reading whole ScreenVertex records (52 bytes, 26 MB for
   /// ParaView's 1M sphere) made it wait on memory.
-  std::vector<ProjectedVertex> Projected;
+  UninitializedVector<ProjectedVertex> Projected;
   /// The vertices drawn (binning marked them Needed): projection and
   /// attributes, filled by ShadeVertices.
-  std::vector<ScreenVertex> Screen;
+  UninitializedVector<ScreenVertex> Screen;
   std::vector<uint8_t> Behind;            ///< vertex outside the near plane
   /// [piece * bands + band]: polygon ids, as BinEntry encodes them.
   std::vector<std::vector<int64_t>> Bins;
@@ -348,8 +383,8 @@ private:
 
   const Frame& F;
   const StageT& Stage;
-  std::vector<ProjectedVertex>& Projected;
-  std::vector<ScreenVertex>& Screen;
+  UninitializedVector<ProjectedVertex>& Projected;
+  UninitializedVector<ScreenVertex>& Screen;
   std::vector<uint8_t>& Behind;
   std::vector<std::vector<int64_t>>& Bins;
   RasterBuffers& Buffers;

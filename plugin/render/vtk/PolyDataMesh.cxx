@@ -12,6 +12,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <limits>
+#include <memory>
 #include <stdexcept>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
@@ -232,10 +233,18 @@ bool LocalPointsInPlace(vtkPoints* points, const WorldFrame& frame, std::vector<
   return false;
 }
 
+/// Keeps a VTK object alive as long as the pointer is (IdArray::Shared's owner).
+std::shared_ptr<const void> Keep(vtkObjectBase* object)
+{
+  object->Register(nullptr);
+  return std::shared_ptr<const void>(object, [](vtkObjectBase* o) { o->UnRegister(nullptr); });
+}
+
 /// When every polygon is a triangle held in 64-bit storage (every reader's
-/// default): its offsets and connectivity copied as they are, true;
+/// default): its offsets and connectivity copied as they are, or with
+/// `share` shared (IdArray::Shared, the arrays kept alive by the mesh), true;
 /// otherwise false and nothing done.
-bool TrianglesInPlace(vtkCellArray* polys, Mesh& mesh)
+bool TrianglesInPlace(vtkCellArray* polys, bool share, Mesh& mesh)
 {
   using Int64Array = vtkAOSDataArrayTemplate<vtkTypeInt64>;
   auto* offsets = Int64Array::SafeDownCast(polys->GetOffsetsArray());
@@ -255,12 +264,22 @@ bool TrianglesInPlace(vtkCellArray* polys, Mesh& mesh)
   {
     return false;
   }
+  const vtkTypeInt64* ids = connectivity->GetPointer(0);
+  if (share)
+  {
+    // vtkTypeInt64 is long long, int64_t long on LP64: the same bits.
+    static_assert(sizeof(vtkTypeInt64) == sizeof(int64_t));
+    mesh.offsets = IdArray::Shared(
+      reinterpret_cast<const int64_t*>(o), static_cast<size_t>(n + 1), Keep(offsets));
+    mesh.connectivity = IdArray::Shared(
+      reinterpret_cast<const int64_t*>(ids), static_cast<size_t>(3 * n), Keep(connectivity));
+    return true;
+  }
   mesh.offsets.resize(static_cast<size_t>(n + 1));
   for (vtkIdType c = 0; c <= n; ++c)
   {
     mesh.offsets[static_cast<size_t>(c)] = 3 * c;
   }
-  const vtkTypeInt64* ids = connectivity->GetPointer(0);
   mesh.connectivity.assign(ids, ids + 3 * n);
   return true;
 }
@@ -386,12 +405,13 @@ Mesh Convert(vtkPolyData* input, WorldFrame& frame, bool normalize, const Scalar
     // A mesh of one point has no extent: keep its scale.
     frame.scale = radius > 0 && std::isfinite(radius) ? radius : 1.0;
   }
-  // The polygons first: releasing, their arrays (the largest) go before
-  // the points and normals are copied.
+  // The polygons first: releasing, triangles are shared (no copy) and
+  // other polygons' arrays (the largest) go before the points and normals
+  // are copied.
   vtkCellArray* polys = pd->GetPolys();
   const vtkIdType numberOfPolys = polys->GetNumberOfCells();
   std::vector<vtkIdType> polygonOf; // empty: polygon i is input polygon i
-  if (!TrianglesInPlace(polys, mesh))
+  if (!TrianglesInPlace(polys, release, mesh))
   {
     ConvertPolygons(pd, polygons, mesh, polygonOf);
   }

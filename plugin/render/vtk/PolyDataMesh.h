@@ -38,10 +38,12 @@ Mesh MeshFromPolyData(vtkPolyData* polydata, WorldFrame& frame,
 
 /**
  * MeshFromPolyData(polydata, frame, polygons) for a caller that is done
- * with `polydata` (pass it with std::move): its polygons are released as
- * soon as they are copied, before the points and normals, so the two
- * copies of a big mesh never coexist whole (16M triangles: 0.5 GB less at
- * the peak). The polydata is left without polygons.
+ * with `polydata` (pass it with std::move): triangles in 64-bit storage
+ * are not copied, the mesh shares their arrays (IdArray::Shared); other
+ * polygons are released as soon as they are copied, before the points and
+ * normals. Either way the two copies of a big mesh never coexist whole
+ * (16M triangles: 0.5 GB less at the peak). The polydata is left without
+ * polygons.
  */
 Mesh MeshFromPolyDataReleasing(vtkSmartPointer<vtkPolyData> polydata, WorldFrame& frame,
   PolygonHandling polygons = PolygonHandling::Triangulate);

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "shadinglab/render/ColorMap.h"
+#include "shadinglab/render/IdArray.h"
 
 #include "shadinglab/model/Shading.h"
 
@@ -28,8 +29,8 @@ struct Mesh
   std::vector<float> points;      ///< 3 per vertex
   std::vector<float> normals;     ///< 3 per vertex, or empty (then computed, area-weighted)
   std::vector<float> colors;      ///< 3 per vertex in [0,1] linear, or empty
-  std::vector<int64_t> offsets;   ///< polygon p uses connectivity[offsets[p] .. offsets[p+1])
-  std::vector<int64_t> connectivity;
+  IdArray offsets;                ///< polygon p uses connectivity[offsets[p] .. offsets[p+1])
+  IdArray connectivity;           ///< (owned, or shared with a VTK array: IdArray.h)
   std::vector<float> faceNormals; ///< 3 per polygon, or empty (then Newell normals)
   /// Colour by data (with Scene::colorMap): one value per vertex, mapped
   /// per pixel after interpolation (ParaView's Interpolate Scalars Before

@@ -256,6 +256,9 @@ void ReadAndPrepare(const Arguments& args, const std::string& input, SceneArgume
     ColorByFromArguments(polydata, scene);
   }
   scene.scene.mesh = &scene.mesh;
+  // Made once and never changed: the renderer's caches keyed without
+  // hashing the mesh.
+  scene.scene.meshHash = render::UniqueMeshKey();
   scene.prepareMs = preparing.Milliseconds();
 
 }

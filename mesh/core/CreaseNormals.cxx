@@ -4,6 +4,7 @@
 // either side of each compared with the feature angle, the corners joined
 // into groups by union-find, one output point per group.
 #include "VertexNormals.h"
+#include "VertexBuckets.h"
 
 #include "Geometry.h"
 #include "NormalKernels.h"
@@ -49,15 +50,8 @@ struct CornerTable
 
 void BuildCornerTable(const MeshView& m, CornerTable& t)
 {
-  const int64_t nv = m.numberOfPoints, np = m.numberOfPolygons;
+  const int64_t np = m.numberOfPolygons;
   const int64_t nc = np > 0 ? m.offsets[np] : 0;
-  std::vector<int64_t>& start = t.start;
-  start.assign(static_cast<size_t>(nv + 1), 0);
-  for (int64_t c = 0; c < nc; ++c)
-  {
-    ++start[m.connectivity[c] + 1];
-  }
-  std::partial_sum(start.begin(), start.end(), start.begin());
   t.narrow = nc <= static_cast<int64_t>(std::numeric_limits<uint32_t>::max());
   t.corners32.resize(t.narrow ? static_cast<size_t>(nc) : 0);
   t.corners64.resize(t.narrow ? 0 : static_cast<size_t>(nc));
@@ -70,32 +64,20 @@ void BuildCornerTable(const MeshView& m, CornerTable& t)
     t.trianglesOnly = m.offsets[p] == 3 * p;
   }
   t.cornerPolygon.resize(t.trianglesOnly ? 0 : static_cast<size_t>(nc));
-  // start[v] serves as v's fill cursor, ending at the next vertex's start;
-  // shifted back after (no second table of nv entries).
-  for (int64_t p = 0; p < np; ++p)
-  {
-    for (int64_t c = m.offsets[p]; c < m.offsets[p + 1]; ++c)
+  BucketCornersByVertex(m, t.start, [&](int64_t p, int64_t, int64_t, int64_t c, int64_t slot) {
+    if (t.narrow)
     {
-      const int64_t slot = start[m.connectivity[c]]++;
-      if (t.narrow)
-      {
-        t.corners32[slot] = static_cast<uint32_t>(c);
-      }
-      else
-      {
-        t.corners64[slot] = c;
-      }
-      if (!t.trianglesOnly)
-      {
-        t.cornerPolygon[c] = p;
-      }
+      t.corners32[static_cast<size_t>(slot)] = static_cast<uint32_t>(c);
     }
-  }
-  for (int64_t v = nv; v > 0; --v)
-  {
-    start[v] = start[v - 1];
-  }
-  start[0] = 0;
+    else
+    {
+      t.corners64[static_cast<size_t>(slot)] = c;
+    }
+    if (!t.trianglesOnly)
+    {
+      t.cornerPolygon[static_cast<size_t>(c)] = p;
+    }
+  });
 }
 
 /// Explicit feature edges, as sorted (min, max) pairs.

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "Orientation.h"
 
+#include "VertexBuckets.h"
+
 #include <algorithm>
 #include <array>
 #include <cstring>
@@ -229,26 +231,11 @@ bool HasDuplicateDirectedEdge(const MeshView& mesh)
 {
   const int64_t faces = mesh.numberOfPolygons, points = mesh.numberOfPoints;
   const int64_t corners = mesh.offsets[faces];
-  std::vector<Id> start(static_cast<size_t>(points) + 1, 0);
-  for (int64_t k = 0; k < corners; ++k)
-  {
-    ++start[static_cast<size_t>(mesh.connectivity[k]) + 1];
-  }
-  std::partial_sum(start.begin(), start.end(), start.begin());
-  // Filled with start[u] as u's cursor: afterwards start[u] is where u + 1
-  // begins, and one shift restores it.
+  std::vector<Id> start;
   std::vector<Id> target(static_cast<size_t>(corners));
-  for (int64_t f = 0; f < faces; ++f)
-  {
-    const int64_t b = mesh.offsets[f], e = mesh.offsets[f + 1];
-    for (int64_t k = b; k < e; ++k)
-    {
-      target[static_cast<size_t>(start[static_cast<size_t>(mesh.connectivity[k])]++)] =
-        static_cast<Id>(mesh.connectivity[k + 1 < e ? k + 1 : b]);
-    }
-  }
-  std::copy_backward(start.begin(), start.end() - 1, start.end());
-  start[0] = 0;
+  BucketCornersByVertex(mesh, start, [&](int64_t, int64_t b, int64_t e, int64_t k, int64_t slot) {
+    target[static_cast<size_t>(slot)] = static_cast<Id>(mesh.connectivity[k + 1 < e ? k + 1 : b]);
+  });
   const int64_t half = points / 2;
   bool second = false;
   std::thread other([&] { second = DuplicateEdgeAmong(start, target, half, points); });

@@ -6,6 +6,7 @@
 #include "AnalyticMeshes.h"
 #include "MeshArrays.h"
 #include "Orientation.h"
+#include "VertexBuckets.h"
 #include "vtkWeightedPolyDataNormals.h"
 
 #include <vtkCellArray.h>
@@ -20,6 +21,7 @@
 
 #include <cmath>
 #include <limits>
+#include <random>
 #include <vector>
 
 namespace slm = shadinglab::mesh;
@@ -180,4 +182,55 @@ TEST(OrientationTest, NormalsFilterTurnsInconsistentFacesAndKeepsTheInput)
     smallest = std::min(smallest, dot);
   }
   EXPECT_LT(smallest, 0.5);
+}
+
+TEST(OrientationTest, VertexBucketsListCornersInFaceOrderOnAnyThreads)
+{
+  // BucketCornersByVertex (the orientation check's and the normals' table),
+  // built by two threads above kParallelBucketCorners: every corner once,
+  // in the slots of its vertex, in the order one serial pass gives, on
+  // meshes of mixed polygon sizes on both sides of the threshold.
+  std::mt19937 rng(5);
+  for (const int64_t faces : { int64_t(1000), int64_t(40000) })
+  {
+    const int64_t points = faces / 3 + 7;
+    std::uniform_int_distribution<int64_t> vertex(0, points - 1);
+    std::uniform_int_distribution<int> corners(3, 6);
+    std::vector<int64_t> offsets{ 0 }, connectivity;
+    for (int64_t f = 0; f < faces; ++f)
+    {
+      for (int k = corners(rng); k > 0; --k)
+      {
+        connectivity.push_back(vertex(rng));
+      }
+      offsets.push_back(static_cast<int64_t>(connectivity.size()));
+    }
+    slm::MeshView mesh;
+    mesh.numberOfPoints = points;
+    mesh.numberOfPolygons = faces;
+    mesh.offsets = offsets.data();
+    mesh.connectivity = connectivity.data();
+    const int64_t nc = offsets.back();
+    EXPECT_EQ(nc >= slm::kParallelBucketCorners, faces == 40000);
+    std::vector<int64_t> start, slotCorner(static_cast<size_t>(nc), -1);
+    slm::BucketCornersByVertex(mesh, start,
+      [&](int64_t f, int64_t b, int64_t e, int64_t c, int64_t slot) {
+        EXPECT_TRUE(b <= c && c < e && offsets[f] == b && offsets[f + 1] == e);
+        slotCorner[static_cast<size_t>(slot)] = c;
+      });
+    // The serial reference: for each vertex, its corners in increasing order.
+    std::vector<std::vector<int64_t>> expected(static_cast<size_t>(points));
+    for (int64_t c = 0; c < nc; ++c)
+    {
+      expected[static_cast<size_t>(connectivity[c])].push_back(c);
+    }
+    ASSERT_EQ(start.size(), static_cast<size_t>(points + 1));
+    EXPECT_EQ(start.front(), 0);
+    EXPECT_EQ(start.back(), nc);
+    for (int64_t v = 0; v < points; ++v)
+    {
+      const std::vector<int64_t> got(slotCorner.begin() + start[v], slotCorner.begin() + start[v + 1]);
+      ASSERT_EQ(got, expected[static_cast<size_t>(v)]) << "vertex " << v;
+    }
+  }
 }

@@ -4,6 +4,7 @@
 #include <iterator>
 #include <algorithm>
 #include <array>
+#include <atomic>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -91,6 +92,12 @@ void RunOrInline(int n, bool spread, const Mesh::TaskRunner& run,
 }
 
 } // namespace
+
+uint64_t UniqueMeshKey()
+{
+  static std::atomic<uint64_t> next{ 0 };
+  return (uint64_t(1) << 63) | next.fetch_add(1, std::memory_order_relaxed);
+}
 
 uint64_t Mesh::ContentHash(const TaskRunner& run) const
 {

@@ -19,6 +19,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <random>
@@ -233,4 +234,46 @@ TEST(OrientationTest, VertexBucketsListCornersInFaceOrderOnAnyThreads)
       ASSERT_EQ(got, expected[static_cast<size_t>(v)]) << "vertex " << v;
     }
   }
+}
+
+TEST(OrientationTest, PointBoxIsTheSerialPassOnAnyThreads)
+{
+  // mesh::PointBox (the readers' check and the conversion's frame): above
+  // kParallelBoxPoints two threads, joined first half first, give the one
+  // pass's box bit for bit, NaN skipped and of -0 and 0 the first kept.
+  const int64_t n = slm::kParallelBoxPoints + 12345;
+  std::vector<float> xyz(static_cast<size_t>(3 * n));
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<float> value(1.0f, 2.0f);
+  for (float& v : xyz)
+  {
+    v = value(rng);
+  }
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  xyz[0] = nan;                                  // x: skipped
+  xyz[3 * (n / 2) + 1] = -0.0f;                  // y's minimum in the second half...
+  xyz[3 * (n / 2 - 5) + 1] = 0.0f;               // ... after an equal one in the first
+  xyz[3 * (n - 1) + 2] = 7.0f;                   // z's maximum, the last point
+  double box[6];
+  slm::PointBox(xyz.data(), n, box);
+  float lo[3] = { INFINITY, INFINITY, INFINITY }, hi[3] = { -INFINITY, -INFINITY, -INFINITY };
+  for (int64_t i = 0; i < n; ++i)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const float v = xyz[static_cast<size_t>(3 * i + c)];
+      lo[c] = v < lo[c] ? v : lo[c];
+      hi[c] = v > hi[c] ? v : hi[c];
+    }
+  }
+  for (int c = 0; c < 3; ++c)
+  {
+    EXPECT_EQ(box[2 * c], lo[c]);
+    EXPECT_EQ(box[2 * c + 1], hi[c]);
+    EXPECT_EQ(std::signbit(box[2 * c]), std::signbit(lo[c])) << "axis " << c;
+  }
+  EXPECT_EQ(box[2], 0.0);
+  EXPECT_FALSE(std::signbit(box[2])) << "the first of the equal minima";
+  EXPECT_EQ(box[5], 7.0);
+  EXPECT_FALSE(std::isnan(box[0]));
 }

@@ -155,8 +155,8 @@ struct RenderOptions
   /// CPU only: a fragment shader cannot see its triangle's centroid.
   ExpansionPoint expansion = ExpansionPoint::Vertex;
   /// Linear intensity to display value. PBR Neutral by default: the default
-  /// material's highlight peaks near 2.6 and would clip whole faces to
-  /// white under Clamp.
+  /// material's highlight peaks at 2.2 (kd + ks (n + 8) / 8) and would clip
+  /// whole faces to white under Clamp.
   DisplayTransform display = DisplayTransform::Neutral;
   int width = 1024;
   int height = 768;

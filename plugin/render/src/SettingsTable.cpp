@@ -131,8 +131,8 @@ void RenderRows(std::vector<SettingRow>& t)
   {
     SettingRow r = Row("polygons", "PolygonHandling", "Polygons", G::Render, K::Choice);
     r.choices = { { "triangulate", "Triangulate" }, { "direct", "Direct" } };
-    r.doc = "polygons of more than three vertices fan-triangulated, or scan-converted as such "
-            "(shows orientation dependence, eq. 3.2; CPU)";
+    r.doc = "polygons of more than three vertices triangulated (a fan, concave ones ear-clipped), "
+            "or scan-converted whole by the even-odd rule (shows orientation dependence, eq. 3.2; CPU)";
     r.frontEnds = kCli;
     r.metavar = "P";
     r.set = [](Settings& s, const SettingValue& v) {

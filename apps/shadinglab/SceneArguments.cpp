@@ -7,7 +7,6 @@
 #include "MeshArrays.h"
 #include "MeshPipeline.h"
 #include "PolyDataMesh.h"
-#include "VertexNormals.h"
 #include "shadinglab/cpu/SoftwareRenderer.h"
 #include "shadinglab/model/Materials.h"
 
@@ -235,7 +234,6 @@ void ReadAndPrepare(const Arguments& args, const std::string& input, SceneArgume
     {
       polydata = mesh::PrepareMesh(polydata, preparation, report);
       scene.normalsMade = preparation.computeNormals;
-      mesh::ReleaseNormalScratch(); // before the mesh is copied for the renderer
     }
     catch (const std::invalid_argument& e)
     {

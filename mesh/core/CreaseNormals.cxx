@@ -217,13 +217,10 @@ void JoinAcrossSmoothEdges(const MeshView& m, const CornerTable& t, const Corner
 namespace
 {
 
-/// Vertices below which the pass runs on the calling thread alone: a
-/// thread's start (~50 us) costs more than ~20k vertices' work.
 /// Scratch arrays persist per thread across calls: a filter re-run on a
 /// large mesh then reuses their pages instead of faulting in ~100 MB anew
 /// (measured: a third of the time was the kernel zeroing fresh pages).
-/// ReleaseNormalScratch frees them (a one-shot command, before the next
-/// large allocation: 256 MB on 16M triangles).
+/// Above kKeptScratchCorners they are freed after the pass instead.
 thread_local CornerTable tableOfThisThread;
 
 /// Corners above which the table is freed as soon as the vertex pass is
@@ -233,6 +230,8 @@ thread_local CornerTable tableOfThisThread;
 /// (16M triangles: 256 MB of a 1.5 GB peak, against ~0.1 s).
 constexpr int64_t kKeptScratchCorners = int64_t(1) << 24;
 
+/// Vertices below which the pass runs on the calling thread alone: a
+/// thread's start (~50 us) costs more than ~20k vertices' work.
 constexpr int64_t kParallelVertices = 100000;
 
 /// What one range of vertices makes: the split points it adds (numbered
@@ -405,11 +404,6 @@ NormalResult ComputeVertexNormals(const MeshView& m, const NormalOptions& opt)
     }
   }
   return r;
-}
-
-void ReleaseNormalScratch()
-{
-  tableOfThisThread = CornerTable();
 }
 
 } // namespace shadinglab::mesh

@@ -5,11 +5,11 @@
 // project's one vector type.
 #pragma once
 
+#include "TwoThreads.h"
 #include "shadinglab/model/Vec3.h"
 
 #include <cstdint>
 #include <limits>
-#include <thread>
 #include <vector>
 
 namespace shadinglab::mesh
@@ -96,22 +96,13 @@ void PointBox(const T* xyz, int64_t n, double box[6])
       }
     }
   };
-  T lo[3], hi[3];
-  if (n < kParallelBoxPoints)
+  T lo[3], hi[3], lo2[3], hi2[3];
+  const int64_t half = n < kParallelBoxPoints ? n : n / 2;
+  RunBoth(half < n, [&] { pass(0, half, lo, hi); }, [&] { pass(half, n, lo2, hi2); });
+  for (int c = 0; c < 3; ++c)
   {
-    pass(0, n, lo, hi);
-  }
-  else
-  {
-    T lo2[3], hi2[3];
-    std::thread second([&] { pass(n / 2, n, lo2, hi2); });
-    pass(0, n / 2, lo, hi);
-    second.join();
-    for (int c = 0; c < 3; ++c)
-    {
-      lo[c] = lo2[c] < lo[c] ? lo2[c] : lo[c];
-      hi[c] = hi2[c] > hi[c] ? hi2[c] : hi[c];
-    }
+    lo[c] = lo2[c] < lo[c] ? lo2[c] : lo[c];
+    hi[c] = hi2[c] > hi[c] ? hi2[c] : hi[c];
   }
   for (int c = 0; c < 3; ++c)
   {

@@ -1,13 +1,13 @@
 // SPDX-License-Identifier: BSD-3-Clause
 #include "Orientation.h"
 
+#include "TwoThreads.h"
 #include "VertexBuckets.h"
 
 #include <algorithm>
 #include <array>
 #include <cstring>
 #include <numeric>
-#include <thread>
 
 namespace shadinglab::mesh
 {
@@ -237,10 +237,9 @@ bool HasDuplicateDirectedEdge(const MeshView& mesh)
     target[static_cast<size_t>(slot)] = static_cast<Id>(mesh.connectivity[k + 1 < e ? k + 1 : b]);
   });
   const int64_t half = points / 2;
-  bool second = false;
-  std::thread other([&] { second = DuplicateEdgeAmong(start, target, half, points); });
-  const bool first = DuplicateEdgeAmong(start, target, 0, half);
-  other.join();
+  bool first = false, second = false;
+  RunBoth(true, [&] { first = DuplicateEdgeAmong(start, target, 0, half); },
+    [&] { second = DuplicateEdgeAmong(start, target, half, points); });
   return first || second;
 }
 

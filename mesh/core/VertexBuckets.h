@@ -5,9 +5,9 @@
 #pragma once
 
 #include "Geometry.h"
+#include "TwoThreads.h"
 
 #include <cstdint>
-#include <thread>
 #include <vector>
 
 namespace shadinglab::mesh
@@ -45,18 +45,7 @@ void BucketCornersByVertex(const MeshView& m, std::vector<Id>& start, Fill&& fil
     }
   };
   const int64_t middle = m.offsets[split];
-  {
-    std::thread other;
-    if (split < np)
-    {
-      other = std::thread([&] { count(second, middle, nc); });
-    }
-    count(start, 0, middle);
-    if (other.joinable())
-    {
-      other.join();
-    }
-  }
+  RunBoth(split < np, [&] { count(start, 0, middle); }, [&] { count(second, middle, nc); });
   // Cursors: the first half's corners of v from the bucket's start, the
   // second half's after them.
   Id running = 0;
@@ -77,18 +66,7 @@ void BucketCornersByVertex(const MeshView& m, std::vector<Id>& start, Fill&& fil
       }
     }
   };
-  {
-    std::thread other;
-    if (split < np)
-    {
-      other = std::thread([&] { place(second, split, np); });
-    }
-    place(start, 0, split);
-    if (other.joinable())
-    {
-      other.join();
-    }
-  }
+  RunBoth(split < np, [&] { place(start, 0, split); }, [&] { place(second, split, np); });
   // The second cursors ended at their buckets' ends: start[v + 1].
   for (int64_t v = nv; v > 0; --v)
   {

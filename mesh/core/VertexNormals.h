@@ -81,11 +81,6 @@ inline double AcosAbramowitzStegun(double x)
 /// no usable face gets (0, 0, 1) rather than NaN.
 NormalResult ComputeVertexNormals(const MeshView& mesh, const NormalOptions& options);
 
-/// Frees the calling thread's scratch tables, which ComputeVertexNormals
-/// keeps for its next call (a filter re-run reuses their pages): a one-shot
-/// command calls it before its next large allocation.
-void ReleaseNormalScratch();
-
 /**
  * The angle-weight loop runs 4 doubles wide (AVX2) when the CPU has AVX2,
  * else 2 wide (SSE2, every x86-64). SetWideSimd(false) forces the 2-wide

@@ -134,7 +134,7 @@ int RunRender(int argc, char** argv)
   {
     std::printf("{\"backend\":\"%s\",\"mode\":\"%s\",\"model\":\"%s\",\"width\":%d,\"height\":%d,\"ssaa\":%d,"
                 "\"milliseconds\":%.3f,\"polygons\":%lld,\"triangles\":%lld,\"rasterized\":%lld,"
-                "\"clipped\":%lld,\"binned\":%lld,\"degenerate\":%lld,\"skipped\":%lld,\"culled\":%lld,"
+                "\"clipped\":%lld,\"binned\":%lld,\"degenerate\":%lld,\"vertices_drawn\":%lld,\"skipped\":%lld,\"culled\":%lld,"
                 "\"hidden_back_faces_culled\":%s,\"pixels_covered\":%lld,"
                 "\"pixels_at_255\":%lld,\"pixels_shaded\":%lld,\"overdraw\":%.3f,\"fast_phong_exact\":%lld,"
                 "\"fast_phong_as_phong\":%s,\"threads\":%d,"
@@ -146,7 +146,7 @@ int RunRender(int argc, char** argv)
       stats.milliseconds, static_cast<long long>(stats.polygons),
       static_cast<long long>(stats.triangles), static_cast<long long>(stats.rasterized),
       static_cast<long long>(stats.clipped), static_cast<long long>(stats.binned),
-      static_cast<long long>(stats.degenerate),
+      static_cast<long long>(stats.degenerate), static_cast<long long>(stats.verticesDrawn),
       static_cast<long long>(stats.skipped), static_cast<long long>(stats.culled),
       stats.hiddenBackFacesCulled ? "true" : "false", static_cast<long long>(stats.pixelsCovered),
       clipped,

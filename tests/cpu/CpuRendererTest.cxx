@@ -1140,3 +1140,76 @@ TEST(CpuRendererTest, ReleasingConversionGivesTheSameMeshAndDropsTheCells)
   }
   EXPECT_GT(render::MeshFromPolyData(mixed).NumberOfPolygons(), 3) << "the dart is split";
 }
+
+// Screen vertices are kept one per drawn vertex when few are drawn (a big
+// mesh at screen size), by vertex id otherwise (Rasterizer.h,
+// kCompactNeededShare). Either layout draws the same bits, in every mode,
+// on any thread count, for polygons in front of the near plane and
+// clipped ones; Auto picks compact records only when at most half the
+// vertices are drawn.
+TEST(CpuRendererTest, ScreenRecordLayoutsDrawTheSameImage)
+{
+  struct LayoutGuard
+  {
+    ~LayoutGuard() { sl::cpu::SetScreenRecords(sl::cpu::ScreenRecords::Auto); }
+  } guard;
+  // 172,800 triangles: at 64x48 px few reach a pixel centre.
+  const render::Mesh torus = MeshOf(sl::datasets::MakeTorus(1.0, 0.4, 480, 180), true);
+  const auto far = CameraLookingAt(Vec3d(0.5, 2.0, 3.0), Vec3d(0, 0, 0), 40);
+  // Just outside the tube's outer wall (x = 1.4), looking along it: the
+  // near plane cuts the wall in view, so clipped polygons mix with drawn
+  // screen vertices.
+  auto near = CameraLookingAt(Vec3d(1.45, -0.2, 0.0), Vec3d(1.2, 1.0, 0.0), 60);
+  near.nearClip = 0.3;
+  // A height field seen from above, filling the view: nearly every vertex
+  // is drawn.
+  const render::Mesh terrain = MeshOf(sl::datasets::MakeTerrain(120), true);
+  double box[6];
+  terrain.Bounds(box);
+  const render::Camera above = render::FitCamera(box, 0, 60, 1.6, 4.0 / 3.0, false);
+  struct Case
+  {
+    const render::Mesh* mesh;
+    render::Camera camera;
+    int width, height;
+    bool compactByDefault;
+  };
+  const Case cases[] = { { &torus, far, 64, 48, true }, { &torus, near, 96, 72, true },
+    { &terrain, above, 480, 360, false } };
+  for (const Case& c : cases)
+  for (const auto mode : { render::ShadingMode::Flat, render::ShadingMode::Gouraud,
+         render::ShadingMode::Phong, render::ShadingMode::FastPhong })
+  {
+    render::RenderOptions opt;
+    opt.width = c.width;
+    opt.height = c.height;
+    opt.mode = mode;
+    opt.fastPhongFallback = false;
+    const auto light = OneLight(Vec3f(0.3f, 0.6f, 0.7f));
+    sl::cpu::SetScreenRecords(sl::cpu::ScreenRecords::Auto);
+    render::RenderStats stats;
+    const render::Mesh& mesh = *c.mesh;
+    const auto ref = test::RenderCpu(mesh, c.camera, light, BlinnPhong(), opt, &stats);
+    const std::string what = std::string(render::ShadingModeName(mode)) + " " +
+      std::to_string(c.width) + "x" + std::to_string(c.height);
+    EXPECT_EQ(stats.compactScreenRecords, c.compactByDefault) << what;
+    EXPECT_GT(stats.verticesDrawn, 0) << what;
+    EXPECT_EQ(stats.compactScreenRecords, 2 * stats.verticesDrawn <= mesh.NumberOfPoints())
+      << what << ": " << stats.verticesDrawn << " of " << mesh.NumberOfPoints();
+    ASSERT_GT(stats.pixelsCovered, 0) << what;
+    EXPECT_EQ(stats.clipped > 0, &c == &cases[1]) << what << ": " << stats.clipped << " clipped";
+    for (const auto layout : { sl::cpu::ScreenRecords::ByVertex, sl::cpu::ScreenRecords::Compact })
+    for (int threads : { 1, 2, 3 })
+    {
+      sl::cpu::SetScreenRecords(layout);
+      opt.threads = threads;
+      render::RenderStats forced;
+      const auto img = test::RenderCpu(mesh, c.camera, light, BlinnPhong(), opt, &forced);
+      EXPECT_EQ(forced.compactScreenRecords, layout == sl::cpu::ScreenRecords::Compact) << what;
+      EXPECT_EQ(forced.verticesDrawn, stats.verticesDrawn) << what;
+      EXPECT_EQ(forced.clipped, stats.clipped) << what;
+      EXPECT_EQ(img.rgb, ref.rgb) << what << " layout " << static_cast<int>(layout)
+                                  << " threads " << threads;
+    }
+  }
+}

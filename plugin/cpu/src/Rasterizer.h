@@ -16,6 +16,7 @@
 
 #include "BinFour.h"
 #include "Frame.h"
+#include "shadinglab/cpu/SoftwareRenderer.h"
 #include "shadinglab/render/Display.h"
 #include "WorkerPool.h"
 
@@ -83,8 +84,17 @@ struct RasterBuffers
   /// ParaView's 1M sphere) made it wait on memory.
   UninitializedVector<ProjectedVertex> Projected;
   /// The vertices drawn (binning marked them Needed): projection and
-  /// attributes, filled by ShadeVertices.
+  /// attributes, filled by ShadeVertices. Indexed by vertex id, or, when
+  /// few vertices are drawn (Rasterizer::kCompactNeededShare), one record
+  /// per drawn vertex in id order, found through ScreenSlot.
   UninitializedVector<ScreenVertex> Screen;
+  /// With compact records: vertex id -> its record in Screen (drawn
+  /// vertices only; the others' entries are never written or read).
+  UninitializedVector<uint32_t> ScreenSlot;
+  bool CompactScreen = false;
+  int64_t ScreenRecordsMade = 0; ///< this frame's drawn vertices (RenderStats)
+  /// ShadeVertices' drawn vertices per piece, then each piece's first record.
+  std::vector<int64_t> PieceRecords;
   std::vector<uint8_t> Behind;            ///< vertex outside the near plane
   /// [piece * bands + band]: polygon ids, as BinEntry encodes them.
   std::vector<std::vector<int64_t>> Bins;
@@ -200,8 +210,17 @@ private:
 
   /// The vertex stage, second half: the screen vertices binning marked,
   /// their projection and the stage's attributes scaled by its 1/w
-  /// (ToScreen, as for clipped vertices).
+  /// (ToScreen, as for clipped vertices). Counts them first, and keeps
+  /// compact records when few are (kCompactNeededShare).
   void ShadeVertices();
+
+  /// Vertex v's screen record (v marked Needed and not Behind).
+  const ScreenVertex* ScreenOf(int64_t v) const
+  {
+    return this->Buffers.CompactScreen
+      ? &this->Screen[this->Buffers.ScreenSlot[static_cast<size_t>(v)]]
+      : &this->Screen[static_cast<size_t>(v)];
+  }
 
   /// Whether the stage lights vertices in batches (VertexBatch).
   template<typename S, typename = void>
@@ -352,6 +371,16 @@ private:
   /// Gouraud lighting: 1.03 ms on one thread, 0.87 on two). 2,048 vertices
   /// are ~25-100 us of lighting, far above a piece's fetch from the counter.
   static constexpr int64_t kVertexChunk = 2048;
+  /// Screen records are kept for the drawn vertices only (with a 4-byte
+  /// slot per vertex) when at most this share of the vertices is drawn.
+  /// A big mesh at screen size draws few: of the 16M-triangle torus at
+  /// 1080p, 4 % of the triangles reach a pixel centre, so compact records
+  /// are ~60 MB instead of 416 (a frame has ~2M pixels, whatever the
+  /// mesh). Records cost 52 bytes and a slot 4, so compact saves memory
+  /// below ~90 %; the slot is one more dependent load per vertex in the
+  /// draw, so a mostly drawn mesh (a model filling the view) keeps direct
+  /// records: half is where both the memory saved and the loads are few.
+  static constexpr double kCompactNeededShare = 0.5;
   /// Vertices per block of TestRuns' marks: a run of ParaView's 1M sphere
   /// spans ~530 vertices, so blocks of 256 waste at most two partial
   /// blocks a run, and the marks of 500k vertices are 2k bytes.
@@ -364,6 +393,9 @@ private:
   static constexpr size_t kAheadOffsets = 12;
   static constexpr size_t kAheadConnectivity = 8;
   static constexpr size_t kAheadVertices = 4;
+  /// (Compact screen records) the slots of the entry this far ahead, read
+  /// between its connectivity and its vertices.
+  static constexpr size_t kAheadSlots = 6;
   /// Vertices prefetched per entry: a triangle's (a larger polygon's
   /// others are read on demand).
   static constexpr int64_t kPrefetchedVertices = 3;

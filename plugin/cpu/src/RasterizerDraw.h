@@ -72,6 +72,17 @@ inline void Rasterizer<StageT>::DrawList(const std::vector<int64_t>& list, int b
     {
       Prefetch(&conn[offsets[id(e + kAheadConnectivity)]]);
     }
+    if (this->Buffers.CompactScreen && e + kAheadSlots < m &&
+      !(list[e + kAheadSlots] & kEntryMayClip))
+    {
+      const int64_t p = id(e + kAheadSlots);
+      const int64_t first = offsets[p];
+      const int64_t n = std::min<int64_t>(offsets[p + 1] - first, kPrefetchedVertices);
+      for (int64_t k = 0; k < n; ++k)
+      {
+        Prefetch(&this->Buffers.ScreenSlot[static_cast<size_t>(conn[first + k])]);
+      }
+    }
     if (e + kAheadVertices < m && !(list[e + kAheadVertices] & kEntryMayClip))
     {
       const int64_t p = id(e + kAheadVertices);
@@ -80,7 +91,7 @@ inline void Rasterizer<StageT>::DrawList(const std::vector<int64_t>& list, int b
       for (int64_t k = 0; k < n; ++k)
       {
         // A ScreenVertex (52 bytes) can straddle two cache lines.
-        const char* v = reinterpret_cast<const char*>(&this->Screen[conn[first + k]]);
+        const char* v = reinterpret_cast<const char*>(this->ScreenOf(conn[first + k]));
         Prefetch(v);
         Prefetch(v + sizeof(ScreenVertex) - 1);
       }
@@ -117,7 +128,7 @@ inline void Rasterizer<StageT>::DrawSourcePolygon(int64_t entry, int band, Threa
     // with the same floats.
     for (int k = 0; k < n; ++k)
     {
-      verts[k] = &this->Screen[ids[k]];
+      verts[k] = this->ScreenOf(ids[k]);
     }
     this->DrawInBand(p, (entry & kEntryBack) != 0, (entry & kEntryOwner) != 0, false, verts,
       ids, n, band, state, EntryPixel(entry));
@@ -134,7 +145,7 @@ inline void Rasterizer<StageT>::DrawSourcePolygon(int64_t entry, int band, Threa
   {
     for (int k = 0; k < n; ++k)
     {
-      verts[count++] = &this->Screen[ids[k]];
+      verts[count++] = this->ScreenOf(ids[k]);
     }
   }
   else

@@ -47,7 +47,6 @@ inline void Rasterizer<StageT>::ProjectPositions()
   const auto& mesh = *F.MeshData;
   const int64_t nv = mesh.NumberOfPoints();
   this->Projected.resize(static_cast<size_t>(nv));
-  this->Screen.resize(static_cast<size_t>(nv));
   this->Behind.resize(static_cast<size_t>(nv));
   if (this->Buffers.NeededCapacity < nv)
   {
@@ -86,13 +85,56 @@ template<typename StageT>
 inline void Rasterizer<StageT>::ShadeVertices()
 {
   const std::atomic<uint8_t>* needed = this->Buffers.Needed.get();
-  auto store = [&](int64_t v, const float* raw)
-  {
-    this->ToScreen(this->Projected[v], raw, this->Screen[v]);
-  };
-  ParallelChunks(this->Buffers.Pool, F.MeshData->NumberOfPoints(), F.Threads, kVertexChunk,
-    [&](int64_t, int64_t b, int64_t e, int)
+  const int64_t nv = F.MeshData->NumberOfPoints();
+  const int64_t pieces = (nv + kVertexChunk - 1) / kVertexChunk;
+  auto drawn = [&](int64_t v)
+  { return !this->Behind[v] && needed[v].load(std::memory_order_relaxed) != 0; };
+  // Count the drawn vertices of each piece, then give each piece its first
+  // record: records in vertex order, whatever thread shades a piece.
+  auto& first = this->Buffers.PieceRecords;
+  first.assign(static_cast<size_t>(pieces) + 1, 0);
+  ParallelChunks(this->Buffers.Pool, nv, F.Threads, kVertexChunk,
+    [&](int64_t k, int64_t b, int64_t e, int)
     {
+      int64_t count = 0;
+      for (int64_t v = b; v < e; ++v)
+      {
+        count += drawn(v);
+      }
+      first[static_cast<size_t>(k) + 1] = count;
+    });
+  for (size_t k = 1; k < first.size(); ++k)
+  {
+    first[k] += first[k - 1];
+  }
+  const int64_t records = first.back();
+  const ScreenRecords forced = ForcedScreenRecords();
+  const bool compact = records <= static_cast<int64_t>(std::numeric_limits<uint32_t>::max()) &&
+    (forced == ScreenRecords::Compact ||
+      (forced == ScreenRecords::Auto &&
+        static_cast<double>(records) <= kCompactNeededShare * static_cast<double>(nv)));
+  this->Buffers.ScreenRecordsMade = records;
+  this->Buffers.CompactScreen = compact;
+  this->Screen.resize(static_cast<size_t>(compact ? records : nv));
+  if (compact)
+  {
+    this->Buffers.ScreenSlot.resize(static_cast<size_t>(nv));
+  }
+  uint32_t* slots = this->Buffers.ScreenSlot.data();
+  ParallelChunks(this->Buffers.Pool, nv, F.Threads, kVertexChunk,
+    [&](int64_t k, int64_t b, int64_t e, int)
+    {
+      int64_t next = first[static_cast<size_t>(k)];
+      auto store = [&](int64_t v, const float* raw)
+      {
+        int64_t at = v;
+        if (compact)
+        {
+          at = next++;
+          slots[v] = static_cast<uint32_t>(at);
+        }
+        this->ToScreen(this->Projected[v], raw, this->Screen[static_cast<size_t>(at)]);
+      };
       if constexpr (HasVertexBatch<StageT>::value)
       {
         // The stage lights its vertices in batches (Gouraud).
@@ -103,15 +145,15 @@ inline void Rasterizer<StageT>::ShadeVertices()
         auto flush = [&]
         {
           this->Stage.VertexBatch(ids, count, raw);
-          for (int k = 0; k < count; ++k)
+          for (int i = 0; i < count; ++i)
           {
-            store(ids[k], raw[k]);
+            store(ids[i], raw[i]);
           }
           count = 0;
         };
         for (int64_t v = b; v < e; ++v)
         {
-          if (!this->Behind[v] && needed[v].load(std::memory_order_relaxed))
+          if (drawn(v))
           {
             ids[count++] = v;
             if (count == kBatch)
@@ -127,12 +169,11 @@ inline void Rasterizer<StageT>::ShadeVertices()
         float raw[kMaxAttributes] = {};
         for (int64_t v = b; v < e; ++v)
         {
-          if (this->Behind[v] || !needed[v].load(std::memory_order_relaxed))
+          if (drawn(v))
           {
-            continue;
+            this->Stage.Vertex(v, raw);
+            store(v, raw);
           }
-          this->Stage.Vertex(v, raw);
-          store(v, raw);
         }
       }
     });

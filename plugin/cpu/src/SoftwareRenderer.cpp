@@ -561,6 +561,8 @@ void SoftwareRenderer::Internals::FillStats(
     stats.culled += st.culled;
     stats.culledInClusters += st.culledInClusters;
   }
+  stats.verticesDrawn = this->Buffers.ScreenRecordsMade;
+  stats.compactScreenRecords = this->Buffers.CompactScreen;
   stats.hiddenBackFacesCulled = facts.hiddenBackFaces;
   stats.fastPhongAsPhong = facts.fastPhongAsPhong;
   stats.pixelsPerTriangle = facts.pixelsPerTriangle;

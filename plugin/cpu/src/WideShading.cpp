@@ -55,6 +55,21 @@ void SetPixelLanes(int lanes)
   gForcedLanes.store(available ? lanes : 0, std::memory_order_relaxed);
 }
 
+namespace
+{
+std::atomic<ScreenRecords> gScreenRecords{ ScreenRecords::Auto };
+}
+
+void SetScreenRecords(ScreenRecords layout)
+{
+  gScreenRecords.store(layout, std::memory_order_relaxed);
+}
+
+ScreenRecords ForcedScreenRecords()
+{
+  return gScreenRecords.load(std::memory_order_relaxed);
+}
+
 void ShadeQueue(const PixelUniforms& uniforms, PixelQueue& queue)
 {
   switch (PixelLanes())

@@ -52,4 +52,18 @@ int PixelLanes();
 /// tests and benchmarks; 0 or any other value restores the best.
 void SetPixelLanes(int lanes);
 
+/// How the rasterizer keeps its screen records (projection and attributes
+/// of the vertices it draws): by vertex id, or one per drawn vertex found
+/// through a slot per vertex (a big mesh at screen size draws few of its
+/// vertices). Auto chooses by the share drawn; the image is the same bits.
+enum class ScreenRecords
+{
+  Auto,
+  ByVertex,
+  Compact,
+};
+/// Forces a layout, for tests and benchmarks; Auto restores the choice.
+void SetScreenRecords(ScreenRecords layout);
+ScreenRecords ForcedScreenRecords();
+
 } // namespace shadinglab::cpu

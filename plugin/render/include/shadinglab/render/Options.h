@@ -261,6 +261,12 @@ struct RenderStats
   /// the bands its rows (after near-plane clipping) reach (CPU).
   int64_t binned = 0;
   int64_t degenerate = 0;     ///< zero-area polygons skipped (CPU)
+  /// Vertices of the polygons that reach a pixel: the vertex stage's
+  /// screen records (CPU).
+  int64_t verticesDrawn = 0;
+  /// ... kept one per drawn vertex, not by vertex id: few of the mesh's
+  /// vertices were drawn (CPU; cpu::ScreenRecords).
+  bool compactScreenRecords = false;
   /// Polygons skipped before scan conversion: outside the view, beyond the
   /// far plane, culled back faces, or between pixel centres (CPU).
   int64_t skipped = 0;

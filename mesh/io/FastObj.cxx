@@ -7,7 +7,7 @@
 // before the face less one, or that number when the first face comes
 // before any `g` (VTK's reader raises its group from -1 to 0 there). Any
 // other line (texture coordinates, normals, materials, lines, points,
-// relative or slashed indices) goes to the checked path.
+// relative, slashed or zero-led indices) goes to the checked path.
 #include "FastReadCommon.h"
 #include "MeshIO.h"
 
@@ -71,6 +71,15 @@ vtkSmartPointer<vtkPolyData> ReadFastObj(fastread::MappedFile& file)
       int64_t count = 0;
       while (!text.AtLineEnd())
       {
+        // An index with a leading zero ("032") is decimal 32 to the OBJ
+        // format and to VTK 9.2's reader, but VTK 9.4 on reads "0" as the
+        // start of a 0x/0o/0b prefix, finds index 0 and refuses the file:
+        // the checked path reads it as the VTK in use does.
+        text.SkipBlanks();
+        if (text.at < text.end && *text.at == '0')
+        {
+          return nullptr;
+        }
         long long index = 0;
         if (!text.Integer(index) || index < 1 || index > points)
         {

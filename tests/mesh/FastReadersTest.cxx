@@ -257,6 +257,15 @@ TEST(FastReadersTest, LeavesWhatItDoesNotReadToTheCheckedPath)
   const std::string slashed = Scratch("slashed.obj");
   WriteText(slashed, "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2/1 3/1\n");
   EXPECT_EQ(shadinglab::ReadFast(slashed, "obj"), nullptr);
+  // An index with a leading zero: VTK 9.2 reads 032 as 32, VTK 9.4 on as
+  // a prefixed number it refuses (found by the OBJ fuzzer on Debian 13).
+  // Whatever the VTK, the fast path leaves it to VTK, so both paths agree.
+  const std::string zeroLed = Scratch("zero_led.obj");
+  WriteText(zeroLed, "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nf 1 2 3\nf 2 04 3\n");
+  EXPECT_EQ(shadinglab::ReadFast(zeroLed, "obj"), nullptr);
+  const std::string zeroLedAtEnd = Scratch("zero_led_end.obj");
+  WriteText(zeroLedAtEnd, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 03");
+  EXPECT_EQ(shadinglab::ReadFast(zeroLedAtEnd, "obj"), nullptr);
   // Bad files too: the checked path names their problem.
   const std::string bad = Scratch("bad_index.ply");
   WriteText(bad, "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"

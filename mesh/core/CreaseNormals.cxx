@@ -41,14 +41,17 @@ struct CornerTable
   int64_t PolygonOf(int64_t c) const { return trianglesOnly ? c / 3 : cornerPolygon[c]; }
   /// A polygon's first corner and corner count, without reading the
   /// offsets of a mesh of triangles only.
-  int64_t FirstCorner(const MeshView& m, int64_t p) const { return trianglesOnly ? 3 * p : m.offsets[p]; }
-  int64_t CornerCount(const MeshView& m, int64_t p) const
+  template <typename View>
+  int64_t FirstCorner(const View& m, int64_t p) const { return trianglesOnly ? 3 * p : m.offsets[p]; }
+  template <typename View>
+  int64_t CornerCount(const View& m, int64_t p) const
   {
     return trianglesOnly ? int64_t(3) : m.offsets[p + 1] - m.offsets[p];
   }
 };
 
-void BuildCornerTable(const MeshView& m, CornerTable& t)
+template <typename Real>
+void BuildCornerTable(const MeshViewOf<Real>& m, CornerTable& t)
 {
   const int64_t np = m.numberOfPolygons;
   const int64_t nc = np > 0 ? m.offsets[np] : 0;
@@ -137,8 +140,8 @@ struct VertexScratch
 /// the edges where their faces meet at less than the feature angle
 /// (cos: `cosFeature`) and that are no feature edge; counts the boundary,
 /// non-manifold and crease edges at their lower vertex.
-template<typename CornerT>
-void JoinAcrossSmoothEdges(const MeshView& m, const CornerTable& t, const CornerT* corners,
+template<typename Real, typename CornerT>
+void JoinAcrossSmoothEdges(const MeshViewOf<Real>& m, const CornerTable& t, const CornerT* corners,
   int64_t v, int32_t count, const NormalOptions& opt, const FeatureEdges& features,
   double cosFeature, VertexScratch& s, NormalResult& r)
 {
@@ -248,8 +251,8 @@ struct RangeResult
 };
 
 /// The vertex pass over [v0, v1) (see ComputeVertexNormals).
-template <typename CornerT>
-void VertexPass(const MeshView& m, const CornerTable& table, const CornerT* cornerTable,
+template <typename Real, typename CornerT>
+void VertexPass(const MeshViewOf<Real>& m, const CornerTable& table, const CornerT* cornerTable,
   const NormalOptions& opt, const FeatureEdges& features, double cosFeature, int64_t v0,
   int64_t v1, double* normals, RangeResult& out)
 {
@@ -327,7 +330,11 @@ void VertexPass(const MeshView& m, const CornerTable& table, const CornerT* corn
 
 } // namespace
 
-NormalResult ComputeVertexNormals(const MeshView& m, const NormalOptions& opt)
+namespace
+{
+
+template <typename Real>
+NormalResult CreaseNormals(const MeshViewOf<Real>& m, const NormalOptions& opt)
 {
   NormalResult r;
   const int64_t nv = m.numberOfPoints, np = m.numberOfPolygons;
@@ -404,6 +411,18 @@ NormalResult ComputeVertexNormals(const MeshView& m, const NormalOptions& opt)
     }
   }
   return r;
+}
+
+} // namespace
+
+NormalResult ComputeVertexNormals(const MeshView& mesh, const NormalOptions& options)
+{
+  return CreaseNormals(mesh, options);
+}
+
+NormalResult ComputeVertexNormals(const FloatMeshView& mesh, const NormalOptions& options)
+{
+  return CreaseNormals(mesh, options);
 }
 
 } // namespace shadinglab::mesh

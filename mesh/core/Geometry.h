@@ -17,14 +17,20 @@ namespace shadinglab::mesh
 
 /// The one view of a polygon mesh the algorithms in mesh/ take: borrowed
 /// flat arrays, polygon p using connectivity[offsets[p] .. offsets[p+1]).
-struct MeshView
+/// Points in double (MeshView), or in float where a kernel reads a file's
+/// float points in place (FloatMeshView: the vertex normals, which widen
+/// each coordinate as they load it, so the same bits as from a double copy).
+template <typename Real>
+struct MeshViewOf
 {
-  const double* points = nullptr; ///< 3 per point
+  const Real* points = nullptr; ///< 3 per point
   int64_t numberOfPoints = 0;
   const int64_t* offsets = nullptr; ///< numberOfPolygons + 1 entries
   const int64_t* connectivity = nullptr;
   int64_t numberOfPolygons = 0;
 };
+using MeshView = MeshViewOf<double>;
+using FloatMeshView = MeshViewOf<float>;
 
 /// Faces whose Newell area is below this fraction of the squared bounding
 /// diagonal are degenerate. 1e-20 is ~100x double's epsilon squared (the

@@ -24,34 +24,47 @@ constexpr double kTinyWeight = 1e-300;
 /// The project's one vector type (the model's Vec3, in double).
 using V3 = Vec3<double>;
 
-inline V3 Sub(const double* a, const double* b)
+/// b - a, each coordinate widened to double as it is loaded (float
+/// points give the bits a double copy of them gives).
+template <typename Real>
+V3 Sub(const Real* a, const Real* b)
 {
-  return { a[0] - b[0], a[1] - b[1], a[2] - b[2] };
+  return { double(a[0]) - double(b[0]), double(a[1]) - double(b[1]), double(a[2]) - double(b[2]) };
+}
+
+/// Point i in double.
+template <typename Real>
+V3 PointAt(const Real* points, int64_t i)
+{
+  return { double(points[3 * i]), double(points[3 * i + 1]), double(points[3 * i + 2]) };
 }
 
 /// Area vector of the polygon of n corners from corner b: twice its area
 /// times the unit normal (Geometry.h).
-inline V3 AreaVectorAt(const MeshView& m, int64_t b, int64_t n)
+template <typename Real>
+V3 AreaVectorAt(const MeshViewOf<Real>& m, int64_t b, int64_t n)
 {
   if (n == 3)
   {
-    const double* p0 = m.points + 3 * m.connectivity[b];
-    const double* p1 = m.points + 3 * m.connectivity[b + 1];
-    const double* p2 = m.points + 3 * m.connectivity[b + 2];
+    const Real* p0 = m.points + 3 * m.connectivity[b];
+    const Real* p1 = m.points + 3 * m.connectivity[b + 1];
+    const Real* p2 = m.points + 3 * m.connectivity[b + 2];
     return Cross(Sub(p1, p0), Sub(p2, p0));
   }
   return NewellAreaVector<double>(
-    n, [&](int64_t k) { return PointOf(m.points, m.connectivity[b + k]); });
+    n, [&](int64_t k) { return PointAt(m.points, m.connectivity[b + k]); });
 }
 
 /// Area vector of polygon p.
-inline V3 AreaVector(const MeshView& m, int64_t p)
+template <typename Real>
+V3 AreaVector(const MeshViewOf<Real>& m, int64_t p)
 {
   return AreaVectorAt(m, m.offsets[p], m.offsets[p + 1] - m.offsets[p]);
 }
 
 /// The contribution of polygon p's corner k (vertex connectivity[b + k]).
-inline V3 CornerContribution(const MeshView& m,
+template <typename Real>
+V3 CornerContribution(const MeshViewOf<Real>& m,
   int64_t b,
   int64_t n,
   int64_t k,
@@ -75,9 +88,9 @@ inline V3 CornerContribution(const MeshView& m,
     case NormalWeighting::Angle:
     case NormalWeighting::Max:
     {
-      const double* v = m.points + 3 * m.connectivity[b + k];
-      const double* prev = m.points + 3 * m.connectivity[b + (k + n - 1) % n];
-      const double* next = m.points + 3 * m.connectivity[b + (k + 1) % n];
+      const Real* v = m.points + 3 * m.connectivity[b + k];
+      const Real* prev = m.points + 3 * m.connectivity[b + (k + n - 1) % n];
+      const Real* next = m.points + 3 * m.connectivity[b + (k + 1) % n];
       const V3 e1 = Sub(next, v), e2 = Sub(prev, v);
       const double l1 = Dot(e1, e1), l2 = Dot(e2, e2);
       if (l1 < kTinyWeight || l2 < kTinyWeight || areaLength < kTinyWeight)

@@ -29,8 +29,8 @@ constexpr int64_t kParallelBucketCorners = int64_t(1) << 16;
  * numberOfPoints + 1 entries). fill must be safe to call from two threads
  * for different corners.
  */
-template <typename Id, typename Fill>
-void BucketCornersByVertex(const MeshView& m, std::vector<Id>& start, Fill&& fill)
+template <typename Real, typename Id, typename Fill>
+void BucketCornersByVertex(const MeshViewOf<Real>& m, std::vector<Id>& start, Fill&& fill)
 {
   const int64_t nv = m.numberOfPoints, np = m.numberOfPolygons;
   const int64_t nc = np > 0 ? m.offsets[np] : 0;

@@ -23,7 +23,8 @@ namespace
 
 /// Polygon p's contribution to its vertices' normals (the per-polygon loop
 /// body of ComputeVertexNormalsNoSplit).
-void AddPolygon(const MeshView& m, int64_t p, NormalWeighting weighting, double* out)
+template <typename Real>
+void AddPolygon(const MeshViewOf<Real>& m, int64_t p, NormalWeighting weighting, double* out)
 {
   const int64_t b = m.offsets[p], n = m.offsets[p + 1] - b;
   if (n < 3)
@@ -49,9 +50,9 @@ void AddPolygon(const MeshView& m, int64_t p, NormalWeighting weighting, double*
     // three corners share the edge lengths computed once. (Angle-weighted
     // triangles go through AddAngleWeightedTriangles.)
     const int64_t i0 = m.connectivity[b], i1 = m.connectivity[b + 1], i2 = m.connectivity[b + 2];
-    const double* p0 = m.points + 3 * i0;
-    const double* p1 = m.points + 3 * i1;
-    const double* p2 = m.points + 3 * i2;
+    const Real* p0 = m.points + 3 * i0;
+    const Real* p1 = m.points + 3 * i1;
+    const Real* p2 = m.points + 3 * i2;
     const V3 e01 = Sub(p1, p0), e12 = Sub(p2, p1), e20 = Sub(p0, p2);
     const double l01 = Dot(e01, e01), l12 = Dot(e12, e12), l20 = Dot(e20, e20);
     if (l01 < kTinyWeight || l12 < kTinyWeight || l20 < kTinyWeight)
@@ -176,7 +177,8 @@ __attribute__((always_inline)) inline void AngleWeights(AngleBatch& b, int64_t c
 /// Angle weights (Thurmer & Wuthrich 1998) of the triangles [first, last),
 /// all triangles, accumulated into `out`: gathered into arrays, the
 /// weights computed in one branch-free loop (vectorized), then scattered.
-__attribute__((always_inline)) inline void AngleWeightedTrianglesBody(const MeshView& m,
+template <typename Real>
+__attribute__((always_inline)) inline void AngleWeightedTrianglesBody(const MeshViewOf<Real>& m,
   int64_t first,
   int64_t last,
   double* out)
@@ -191,15 +193,14 @@ __attribute__((always_inline)) inline void AngleWeightedTrianglesBody(const Mesh
     for (int64_t i = 0; i < count; ++i)
     {
       const int64_t* c = corners + 3 * i;
-      const double* p0 = m.points + 3 * c[0];
-      const double* p1 = m.points + 3 * c[1];
-      const double* p2 = m.points + 3 * c[2];
-      b.e1x[i] = p1[0] - p0[0];
-      b.e1y[i] = p1[1] - p0[1];
-      b.e1z[i] = p1[2] - p0[2];
-      b.e2x[i] = p2[0] - p0[0];
-      b.e2y[i] = p2[1] - p0[1];
-      b.e2z[i] = p2[2] - p0[2];
+      const V3 e1 = Sub(m.points + 3 * c[1], m.points + 3 * c[0]);
+      const V3 e2 = Sub(m.points + 3 * c[2], m.points + 3 * c[0]);
+      b.e1x[i] = e1.x;
+      b.e1y[i] = e1.y;
+      b.e1z[i] = e1.z;
+      b.e2x[i] = e2.x;
+      b.e2y[i] = e2.y;
+      b.e2z[i] = e2.z;
     }
     AngleWeights(b, count);
     for (int64_t i = 0; i < count; ++i)
@@ -219,7 +220,8 @@ __attribute__((always_inline)) inline void AngleWeightedTrianglesBody(const Mesh
 
 /// The same loop compiled for AVX2 (4 doubles a lane group instead of
 /// SSE2's 2): chosen at run time, so the binary still runs without AVX2.
-__attribute__((target("avx2"))) void AngleWeightedTrianglesAvx2(const MeshView& m,
+template <typename Real>
+__attribute__((target("avx2"))) void AngleWeightedTrianglesAvx2(const MeshViewOf<Real>& m,
   int64_t first,
   int64_t last,
   double* out)
@@ -227,14 +229,16 @@ __attribute__((target("avx2"))) void AngleWeightedTrianglesAvx2(const MeshView& 
   AngleWeightedTrianglesBody(m, first, last, out);
 }
 
-void AngleWeightedTrianglesBaseline(const MeshView& m, int64_t first, int64_t last, double* out)
+template <typename Real>
+void AngleWeightedTrianglesBaseline(const MeshViewOf<Real>& m, int64_t first, int64_t last, double* out)
 {
   AngleWeightedTrianglesBody(m, first, last, out);
 }
 
 std::atomic<bool> gWideSimd{ true };
 
-void AddAngleWeightedTriangles(const MeshView& m, int64_t first, int64_t last, double* out)
+template <typename Real>
+void AddAngleWeightedTriangles(const MeshViewOf<Real>& m, int64_t first, int64_t last, double* out)
 {
   static const bool avx2 = __builtin_cpu_supports("avx2");
   if (avx2 && gWideSimd.load(std::memory_order_relaxed))
@@ -259,9 +263,11 @@ bool WideSimdInUse()
   return __builtin_cpu_supports("avx2") && gWideSimd.load(std::memory_order_relaxed);
 }
 
-void ComputeVertexNormalsNoSplit(const MeshView& m,
-  NormalWeighting weighting,
-  std::vector<double>& normals)
+namespace
+{
+
+template <typename Real>
+void NoSplitNormals(const MeshViewOf<Real>& m, NormalWeighting weighting, std::vector<double>& normals)
 {
   normals.assign(static_cast<size_t>(3 * m.numberOfPoints), 0.0);
   double* out = normals.data();
@@ -288,6 +294,20 @@ void ComputeVertexNormalsNoSplit(const MeshView& m,
   {
     Normalize(out + 3 * v);
   }
+}
+
+} // namespace
+
+void ComputeVertexNormalsNoSplit(
+  const MeshView& mesh, NormalWeighting weighting, std::vector<double>& normals)
+{
+  NoSplitNormals(mesh, weighting, normals);
+}
+
+void ComputeVertexNormalsNoSplit(
+  const FloatMeshView& mesh, NormalWeighting weighting, std::vector<double>& normals)
+{
+  NoSplitNormals(mesh, weighting, normals);
 }
 
 /// Polygons of more corners than this are skipped by ComputeVertexNormalsAt

@@ -38,8 +38,12 @@ int vtkWeightedPolyDataNormals::RequestData(
   }
   vtkSmartPointer<vtkPolyData> source = shadinglab::mesh::WithoutStrips(input, true);
   namespace slm = shadinglab::mesh;
+  // Float points (every reader's) are read in place by the normals, not
+  // copied to double (192 MB on 16M triangles): the orientation test reads
+  // the connectivity alone, and only turning faces needs double points.
+  auto* floats = vtkFloatArray::SafeDownCast(source->GetPoints()->GetData());
   slm::FlatPolygons flat;
-  slm::FlatPolygonsFromPolyData(source, flat);
+  slm::FlatPolygonsFromPolyData(source, flat, floats == nullptr);
   slm::MeshView mesh;
   mesh.points = flat.points;
   mesh.numberOfPoints = flat.numberOfPoints;
@@ -47,12 +51,20 @@ int vtkWeightedPolyDataNormals::RequestData(
   mesh.connectivity = flat.connectivity;
   mesh.numberOfPolygons = flat.numberOfPolygons;
   std::vector<int64_t> turned; // the connectivity with inconsistent faces reversed
+  slm::FlatPolygons withPoints;
   if (this->Consistency && slm::HasInconsistentOrientation(mesh))
   {
+    if (!mesh.points)
+    {
+      slm::FlatPolygonsFromPolyData(source, withPoints);
+      mesh.points = withPoints.points;
+    }
     this->NumberOfFlippedPolygons =
       slm::FlipFaces(mesh, slm::ConsistentOrientationFlips(mesh), turned);
     mesh.connectivity = turned.data();
   }
+  const slm::FloatMeshView floatMesh{ floats ? floats->GetPointer(0) : nullptr,
+    mesh.numberOfPoints, mesh.offsets, mesh.connectivity, mesh.numberOfPolygons };
   slm::NormalOptions options;
   options.weighting = static_cast<slm::NormalWeighting>(this->Weighting);
   options.splitting = this->Splitting;
@@ -65,12 +77,20 @@ int vtkWeightedPolyDataNormals::RequestData(
   slm::NormalResult result;
   if (this->Splitting)
   {
-    result = slm::ComputeVertexNormals(mesh, options);
+    result = floats ? slm::ComputeVertexNormals(floatMesh, options)
+                    : slm::ComputeVertexNormals(mesh, options);
   }
   else
   {
     // Crease-free: one pass over the arrays, no adjacency (edge counts stay 0).
-    slm::ComputeVertexNormalsNoSplit(mesh, options.weighting, result.normals);
+    if (floats)
+    {
+      slm::ComputeVertexNormalsNoSplit(floatMesh, options.weighting, result.normals);
+    }
+    else
+    {
+      slm::ComputeVertexNormalsNoSplit(mesh, options.weighting, result.normals);
+    }
     result.originalPointIds.resize(static_cast<size_t>(mesh.numberOfPoints));
     for (int64_t i = 0; i < mesh.numberOfPoints; ++i)
     {

@@ -429,3 +429,73 @@ TEST(NormalsTest, InputKeepsItsModificationTime)
     }
   }
 }
+
+// Float points read in place (FloatMeshView: a file's points, no double
+// copy) give the normals of their double copy bit for bit: the split
+// points, their numbering and the moved corners too, in every weighting,
+// with and without creases, on the batched angle path and the general one,
+// quads and pentagons among the triangles.
+TEST(NormalsTest, FloatPointsInPlaceGiveTheDoubleCopysBits)
+{
+  namespace slm = shadinglab::mesh;
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+  const int64_t n = 30; // a noisy 30 x 30 height field, 3 polygon sizes
+  std::vector<float> floats;
+  for (int64_t j = 0; j < n; ++j)
+  {
+    for (int64_t i = 0; i < n; ++i)
+    {
+      // Centred, jittered: coordinates change sign between neighbours, so
+      // their differences round in float (not in double).
+      floats.insert(floats.end(), { (float(i - n / 2) + 0.4f * u(rng)) / 7.0f,
+                                    (float(j - n / 2) + 0.4f * u(rng)) / 7.0f, 0.3f * u(rng) });
+    }
+  }
+  std::vector<int64_t> offsets{ 0 }, conn;
+  for (int64_t j = 0; j + 1 < n; ++j)
+  {
+    for (int64_t i = 0; i + 1 < n; ++i)
+    {
+      const int64_t a = j * n + i, b = a + 1, c = a + n + 1, d = a + n;
+      if ((i + j) % 11 == 0)
+      {
+        conn.insert(conn.end(), { a, b, c, d });
+        offsets.push_back(static_cast<int64_t>(conn.size()));
+        continue;
+      }
+      conn.insert(conn.end(), { a, b, c });
+      offsets.push_back(static_cast<int64_t>(conn.size()));
+      conn.insert(conn.end(), { a, c, d });
+      offsets.push_back(static_cast<int64_t>(conn.size()));
+    }
+  }
+  const std::vector<double> doubles(floats.begin(), floats.end());
+  const int64_t polygons = static_cast<int64_t>(offsets.size()) - 1;
+  const slm::MeshView wide{ doubles.data(), n * n, offsets.data(), conn.data(), polygons };
+  const slm::FloatMeshView inPlace{ floats.data(), n * n, offsets.data(), conn.data(), polygons };
+  for (const auto w : { slm::NormalWeighting::Uniform, slm::NormalWeighting::Area,
+         slm::NormalWeighting::Angle, slm::NormalWeighting::Max })
+  {
+    for (const double angle : { 20.0, 180.0 })
+    {
+      slm::NormalOptions opt;
+      opt.weighting = w;
+      opt.featureAngle = angle;
+      const slm::NormalResult a = slm::ComputeVertexNormals(wide, opt);
+      const slm::NormalResult b = slm::ComputeVertexNormals(inPlace, opt);
+      if (angle < 90)
+      {
+        EXPECT_GT(a.splitPoints, 0); // creases were split
+      }
+      EXPECT_EQ(a.normals, b.normals) << static_cast<int>(w) << " " << angle;
+      EXPECT_EQ(a.originalPointIds, b.originalPointIds);
+      EXPECT_EQ(a.connectivity, b.connectivity);
+      EXPECT_EQ(a.creaseEdges, b.creaseEdges);
+    }
+    std::vector<double> a, b;
+    slm::ComputeVertexNormalsNoSplit(wide, w, a);
+    slm::ComputeVertexNormalsNoSplit(inPlace, w, b);
+    EXPECT_EQ(a, b) << static_cast<int>(w);
+  }
+}

@@ -41,6 +41,10 @@ public:
   /// process's memory (they stay in the page cache): a call per byte
   /// walked is cheap, it acts every kReleaseStep bytes.
   void Release(size_t walked);
+  /// Drops the whole pages inside bytes [begin, end): for a walk split
+  /// between threads, each releasing what it walked (safe at once for
+  /// disjoint ranges; the page two ranges share stays).
+  void ReleaseRange(size_t begin, size_t end) const;
 
 private:
   const char* data_ = nullptr;

@@ -77,6 +77,16 @@ void MappedFile::Release(size_t walked)
   this->released_ = upTo;
 }
 
+void MappedFile::ReleaseRange(size_t begin, size_t end) const
+{
+  const size_t page = static_cast<size_t>(::sysconf(_SC_PAGESIZE));
+  const size_t first = (begin + page - 1) / page * page, last = std::min(end, this->size_) / page * page;
+  if (last > first)
+  {
+    ::madvise(const_cast<char*>(this->data_) + first, last - first, MADV_DONTNEED);
+  }
+}
+
 Polygons::Polygons(int64_t numberOfPoints, int64_t numberOfPolygons, int64_t idsEstimate)
 {
   this->points = vtkSmartPointer<vtkFloatArray>::New();

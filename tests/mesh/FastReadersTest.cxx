@@ -11,6 +11,7 @@
 
 #include <vtkCellArray.h>
 #include <vtkFloatArray.h>
+#include <vtkIdList.h>
 #include <vtkNew.h>
 #include <vtkOBJWriter.h>
 #include <vtkPLYWriter.h>
@@ -25,6 +26,7 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <unistd.h>
 
@@ -144,6 +146,64 @@ TEST(FastReadersTest, PlyOfEveryEncodingEqualsVtks)
     const std::string quads = Scratch(std::string("quads_") + names[type] + ".ply");
     WritePly(Quads(), quads, type, false);
     ExpectSameAsVtk(quads, "ply");
+  }
+}
+
+// A scan's body of triangle records, 2^16 faces or more, is parsed by two
+// threads (FastPly.cxx, ReadTriangleRecords): the same mesh as VTK's
+// reader; a quad in the second half, or an index beyond the vertices,
+// sends it to the serial loop, which reads the quad and refuses the index.
+TEST(FastReadersTest, BigTriangleBodiesReadOnTwoThreadsAsVtkDoes)
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetThetaResolution(300);
+  sphere->SetPhiResolution(150); // 89,400 triangles
+  sphere->Update();
+  auto mesh = vtkSmartPointer<vtkPolyData>::New();
+  mesh->DeepCopy(sphere->GetOutput());
+  mesh->GetPointData()->Initialize();
+  ASSERT_GT(mesh->GetNumberOfPolys(), 1 << 16);
+  const std::string triangles = Scratch("big_triangles.ply");
+  WritePly(mesh, triangles, 1, false);
+  ExpectSameAsVtk(triangles, "ply");
+
+  // The last triangle replaced by a quad over its three vertices and one more.
+  vtkNew<vtkCellArray> polys;
+  vtkNew<vtkIdList> ids;
+  const vtkIdType n = mesh->GetNumberOfPolys();
+  for (vtkIdType c = 0; c < n; ++c)
+  {
+    mesh->GetPolys()->GetCellAtId(c, ids);
+    if (c == n - 1)
+    {
+      ids->InsertNextId(0);
+    }
+    polys->InsertNextCell(ids);
+  }
+  auto withQuad = vtkSmartPointer<vtkPolyData>::New();
+  withQuad->SetPoints(mesh->GetPoints());
+  withQuad->SetPolys(polys);
+  const std::string quad = Scratch("big_with_quad.ply");
+  WritePly(withQuad, quad, 1, false);
+  ExpectSameAsVtk(quad, "ply");
+
+  // An index beyond the vertices in the second half: refused with its line.
+  std::ifstream in(triangles, std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const int32_t beyond = static_cast<int32_t>(mesh->GetNumberOfPoints());
+  std::memcpy(&bytes[bytes.size() - 13 * 10 + 1], &beyond, 4); // 10th face from the end
+  const std::string bad = Scratch("big_bad_index.ply");
+  WriteText(bad, bytes);
+  EXPECT_EQ(shadinglab::ReadFast(bad, "ply"), nullptr);
+  try
+  {
+    vtkSmartPointer<vtkPolyData> read;
+    read.TakeReference(shadinglab::ReadMesh(bad));
+    ADD_FAILURE() << "read a face with an index outside the vertices";
+  }
+  catch (const MeshError& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("outside"), std::string::npos) << e.what();
   }
 }
 

@@ -7,6 +7,7 @@
 #include "MeshArrays.h"
 #include "MeshPipeline.h"
 #include "PolyDataMesh.h"
+#include "VertexNormals.h"
 #include "shadinglab/cpu/SoftwareRenderer.h"
 #include "shadinglab/model/Materials.h"
 
@@ -234,6 +235,7 @@ void ReadAndPrepare(const Arguments& args, const std::string& input, SceneArgume
     {
       polydata = mesh::PrepareMesh(polydata, preparation, report);
       scene.normalsMade = preparation.computeNormals;
+      mesh::ReleaseNormalScratch(); // made once: not kept for a next call
     }
     catch (const std::invalid_argument& e)
     {

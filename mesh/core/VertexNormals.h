@@ -85,6 +85,13 @@ NormalResult ComputeVertexNormals(const MeshView& mesh, const NormalOptions& opt
 /// bit, without the copy (192 MB on 16M triangles).
 NormalResult ComputeVertexNormals(const FloatMeshView& mesh, const NormalOptions& options);
 
+/// Frees the calling thread's scratch table, which ComputeVertexNormals
+/// keeps up to kKeptScratchCorners corners for its next call (a filter
+/// re-run reuses its pages): a one-shot command calls it once the normals
+/// are made (4M triangles: 64 MB that would otherwise live through the
+/// render, and set its peak).
+void ReleaseNormalScratch();
+
 /**
  * The angle-weight loop runs 4 doubles wide (AVX2) when the CPU has AVX2,
  * else 2 wide (SSE2, every x86-64). SetWideSimd(false) forces the 2-wide

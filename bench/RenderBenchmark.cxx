@@ -644,7 +644,7 @@ void GlArgs(benchmark::internal::Benchmark* b)
 /// sphere filling the view: most triangles cover less than a pixel), lit
 /// by ParaView's five lights (ParaViewLights), two threads, as the CPU
 /// backend draws it. range(0): {mode, model} of kModeModels.
-void BM_CpuParaViewSphere(benchmark::State& state)
+void ParaViewSphereFrames(benchmark::State& state, int modeModel)
 {
   // The mesh in the local frame MeshFromPolyData gives it (centred, scaled
   // to a unit bounding sphere), with that frame: the CPU backend moves the
@@ -686,7 +686,7 @@ void BM_CpuParaViewSphere(benchmark::State& state)
   // vtkRenderer::ResetCamera, in world coordinates: the bounding sphere
   // (radius sqrt(3)/2 of the unit box) fits the view angle.
   camera.position = sl::Vec3d(0, 0, std::sqrt(3.0) / 2.0 / std::sin(15.0 * sl::kPi<double> / 180.0));
-  const auto [mode, model] = kModeModels[state.range(0)];
+  const auto [mode, model] = kModeModels[modeModel];
   render::RenderOptions opt;
   opt.width = kWidth;
   opt.height = kHeight;
@@ -716,9 +716,28 @@ void BM_CpuParaViewSphere(benchmark::State& state)
   state.counters["culled"] = static_cast<double>(stats.culled);
   state.counters["culled_in_runs"] = static_cast<double>(stats.culledInClusters);
   state.counters["pixels_covered"] = static_cast<double>(stats.pixelsCovered);
+  state.counters["vertices_drawn"] = static_cast<double>(stats.verticesDrawn);
+  state.counters["compact_records"] = stats.compactScreenRecords ? 1 : 0;
   state.SetLabel(std::string(render::ShadingModeName(opt.mode)) + "/" +
     sl::ReflectanceModelName(material.model) + ", ParaView's 1M sphere by Elevation, " +
     std::to_string(s.lighting.lightCount) + " lights");
+}
+
+void BM_CpuParaViewSphere(benchmark::State& state)
+{
+  ParaViewSphereFrames(state, static_cast<int>(state.range(0)));
+}
+
+/// The screen records' two layouts (cpu::ScreenRecords) on the same
+/// frames: range(0) a {mode, model} of kModeModels, range(1) the layout
+/// forced (0 by vertex, 1 compact). The sphere draws under half its
+/// vertices, so Auto keeps compact records: this says what that costs
+/// or saves in time, beside the memory it saves.
+void BM_CpuScreenRecords(benchmark::State& state)
+{
+  cpu::SetScreenRecords(state.range(1) ? cpu::ScreenRecords::Compact : cpu::ScreenRecords::ByVertex);
+  ParaViewSphereFrames(state, static_cast<int>(state.range(0)));
+  cpu::SetScreenRecords(cpu::ScreenRecords::Auto);
 }
 
 /// The work a scene does not need is skipped: the same frame with the mesh
@@ -880,6 +899,10 @@ BENCHMARK(BM_CpuHalfOutside)
   ->Unit(benchmark::kMillisecond)
   ->UseRealTime();
 BENCHMARK(BM_CpuParaViewSphere)->DenseRange(0, 4)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(BM_CpuScreenRecords)
+  ->ArgsProduct({ { 0, 2 }, { 0, 1 } })
+  ->Unit(benchmark::kMillisecond)
+  ->UseRealTime();
 BENCHMARK(BM_Cpu)->Apply(CpuArgs)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(BM_CpuCookTorrance)
   ->ArgsProduct({ { 0, 1 }, { 0, 1, 2 }, { 1, 2 } })

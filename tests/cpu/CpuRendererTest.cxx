@@ -3,6 +3,7 @@
 // degenerate input, and accuracy against an analytic per-pixel reference.
 #include "AnalyticMeshes.h"
 #include "PolyDataMesh.h"
+#include "Rasterizer.h"
 #include "RenderTestUtil.h"
 #include "vtkSoftwareShadingRenderer.h"
 #include "shadinglab/cpu/SoftwareRenderer.h"
@@ -1143,10 +1144,9 @@ TEST(CpuRendererTest, ReleasingConversionGivesTheSameMeshAndDropsTheCells)
 
 // Screen vertices are kept one per drawn vertex when few are drawn (a big
 // mesh at screen size), by vertex id otherwise (Rasterizer.h,
-// kCompactNeededShare). Either layout draws the same bits, in every mode,
+// CompactRecordsPay). Either layout draws the same bits, in every mode,
 // on any thread count, for polygons in front of the near plane and
-// clipped ones; Auto picks compact records only when at most half the
-// vertices are drawn.
+// clipped ones; Auto picks what CompactRecordsPay says.
 TEST(CpuRendererTest, ScreenRecordLayoutsDrawTheSameImage)
 {
   struct LayoutGuard
@@ -1172,7 +1172,7 @@ TEST(CpuRendererTest, ScreenRecordLayoutsDrawTheSameImage)
     const render::Mesh* mesh;
     render::Camera camera;
     int width, height;
-    bool compactByDefault;
+    bool fewDrawn; ///< at most half the vertices
   };
   const Case cases[] = { { &torus, far, 64, 48, true }, { &torus, near, 96, 72, true },
     { &terrain, above, 480, 360, false } };
@@ -1192,10 +1192,14 @@ TEST(CpuRendererTest, ScreenRecordLayoutsDrawTheSameImage)
     const auto ref = test::RenderCpu(mesh, c.camera, light, BlinnPhong(), opt, &stats);
     const std::string what = std::string(render::ShadingModeName(mode)) + " " +
       std::to_string(c.width) + "x" + std::to_string(c.height);
-    EXPECT_EQ(stats.compactScreenRecords, c.compactByDefault) << what;
     EXPECT_GT(stats.verticesDrawn, 0) << what;
-    EXPECT_EQ(stats.compactScreenRecords, 2 * stats.verticesDrawn <= mesh.NumberOfPoints())
+    EXPECT_EQ(2 * stats.verticesDrawn <= mesh.NumberOfPoints(), c.fewDrawn)
       << what << ": " << stats.verticesDrawn << " of " << mesh.NumberOfPoints();
+    // These meshes' records are a few MB: Auto keeps them by vertex.
+    EXPECT_FALSE(stats.compactScreenRecords) << what;
+    EXPECT_EQ(stats.compactScreenRecords,
+      sl::cpu::CompactRecordsPay(stats.verticesDrawn, mesh.NumberOfPoints()))
+      << what;
     ASSERT_GT(stats.pixelsCovered, 0) << what;
     EXPECT_EQ(stats.clipped > 0, &c == &cases[1]) << what << ": " << stats.clipped << " clipped";
     for (const auto layout : { sl::cpu::ScreenRecords::ByVertex, sl::cpu::ScreenRecords::Compact })
@@ -1212,4 +1216,18 @@ TEST(CpuRendererTest, ScreenRecordLayoutsDrawTheSameImage)
                                   << " threads " << threads;
     }
   }
+}
+
+// Auto's rule: compact records when at most half the vertices are drawn
+// and records by vertex would take 64 MB or more (1,290,556 vertices).
+TEST(CpuRendererTest, CompactRecordsPayForFewDrawnVerticesOfBigMeshes)
+{
+  namespace cpu = sl::cpu;
+  const int64_t big = static_cast<int64_t>(cpu::kCompactMinimumBytes / sizeof(cpu::raster::ScreenVertex)) + 1;
+  EXPECT_TRUE(cpu::CompactRecordsPay(1885318, 8000000)); // the 16M torus at 1080p
+  EXPECT_FALSE(cpu::CompactRecordsPay(206145, 501000));  // ParaView's 1M sphere: 26 MB
+  EXPECT_TRUE(cpu::CompactRecordsPay(big / 2, big));
+  EXPECT_FALSE(cpu::CompactRecordsPay(big / 2 + 1, big));
+  EXPECT_FALSE(cpu::CompactRecordsPay(0, big - 2)); // below 64 MB of records
+  EXPECT_TRUE(cpu::CompactRecordsPay(0, big));
 }

@@ -76,6 +76,32 @@ struct UninitializedAllocator : std::allocator<T>
 template<typename T>
 using UninitializedVector = std::vector<T, UninitializedAllocator<T>>;
 
+/// Screen records are kept for the drawn vertices only (with a 4-byte slot
+/// per vertex) when at most this share of the vertices is drawn. A big
+/// mesh at screen size draws few: of the 16M-triangle torus at 1080p, 4 %
+/// of the triangles reach a pixel centre and 1.9M of its 8M vertices are
+/// drawn, so compact records are 130 MB with the slots instead of 416 (a
+/// frame has ~2M pixels, whatever the mesh). Records cost 52 bytes and a
+/// slot 4, so compact saves memory below ~90 %; the slot is one more
+/// dependent load per vertex in the draw, so a mostly drawn mesh (a model
+/// filling the view) keeps records by vertex.
+constexpr double kCompactNeededShare = 0.5;
+/// ... and when records by vertex would take at least this many bytes.
+/// Below it the saving is small and the slot's load is not: ParaView's 1M
+/// sphere at 1080p (500k vertices, 26 MB of records) draws 41 % of its
+/// vertices, and compact records made its frames 2.5-3.4 % slower for 13
+/// MB saved (BM_CpuScreenRecords); at 16M triangles they are smaller and
+/// faster (render 0.46 -> 0.38 s: less memory touched).
+constexpr size_t kCompactMinimumBytes = size_t(64) << 20;
+
+/// Whether a frame drawing `drawn` of `vertices` vertices keeps compact
+/// screen records (without cpu::SetScreenRecords forcing a layout).
+inline bool CompactRecordsPay(int64_t drawn, int64_t vertices)
+{
+  return static_cast<double>(drawn) <= kCompactNeededShare * static_cast<double>(vertices) &&
+    static_cast<size_t>(vertices) * sizeof(ScreenVertex) >= kCompactMinimumBytes;
+}
+
 /// Buffers the rasterizer keeps across frames (no reallocation at a steady size).
 struct RasterBuffers
 {
@@ -85,8 +111,8 @@ struct RasterBuffers
   UninitializedVector<ProjectedVertex> Projected;
   /// The vertices drawn (binning marked them Needed): projection and
   /// attributes, filled by ShadeVertices. Indexed by vertex id, or, when
-  /// few vertices are drawn (Rasterizer::kCompactNeededShare), one record
-  /// per drawn vertex in id order, found through ScreenSlot.
+  /// few vertices are drawn (CompactRecordsPay), one record per drawn
+  /// vertex in id order, found through ScreenSlot.
   UninitializedVector<ScreenVertex> Screen;
   /// With compact records: vertex id -> its record in Screen (drawn
   /// vertices only; the others' entries are never written or read).
@@ -211,7 +237,7 @@ private:
   /// The vertex stage, second half: the screen vertices binning marked,
   /// their projection and the stage's attributes scaled by its 1/w
   /// (ToScreen, as for clipped vertices). Counts them first, and keeps
-  /// compact records when few are (kCompactNeededShare).
+  /// compact records when few are (CompactRecordsPay).
   void ShadeVertices();
 
   /// Vertex v's screen record (v marked Needed and not Behind).
@@ -371,16 +397,6 @@ private:
   /// Gouraud lighting: 1.03 ms on one thread, 0.87 on two). 2,048 vertices
   /// are ~25-100 us of lighting, far above a piece's fetch from the counter.
   static constexpr int64_t kVertexChunk = 2048;
-  /// Screen records are kept for the drawn vertices only (with a 4-byte
-  /// slot per vertex) when at most this share of the vertices is drawn.
-  /// A big mesh at screen size draws few: of the 16M-triangle torus at
-  /// 1080p, 4 % of the triangles reach a pixel centre and 1.9M of its 8M
-  /// vertices are drawn, so compact records are 130 MB with the slots
-  /// instead of 416 (a frame has ~2M pixels, whatever the mesh). Records cost 52 bytes and a slot 4, so compact saves memory
-  /// below ~90 %; the slot is one more dependent load per vertex in the
-  /// draw, so a mostly drawn mesh (a model filling the view) keeps direct
-  /// records: half is where both the memory saved and the loads are few.
-  static constexpr double kCompactNeededShare = 0.5;
   /// Vertices per block of TestRuns' marks: a run of ParaView's 1M sphere
   /// spans ~530 vertices, so blocks of 256 waste at most two partial
   /// blocks a run, and the marks of 500k vertices are 2k bytes.

@@ -111,8 +111,7 @@ inline void Rasterizer<StageT>::ShadeVertices()
   const ScreenRecords forced = ForcedScreenRecords();
   const bool compact = records <= static_cast<int64_t>(std::numeric_limits<uint32_t>::max()) &&
     (forced == ScreenRecords::Compact ||
-      (forced == ScreenRecords::Auto &&
-        static_cast<double>(records) <= kCompactNeededShare * static_cast<double>(nv)));
+      (forced == ScreenRecords::Auto && CompactRecordsPay(records, nv)));
   this->Buffers.ScreenRecordsMade = records;
   this->Buffers.CompactScreen = compact;
   this->Screen.resize(static_cast<size_t>(compact ? records : nv));

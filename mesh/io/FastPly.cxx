@@ -353,6 +353,91 @@ bool FitsTheFile(const std::vector<PlyElement>& elements, const Layout& l, size_
   return need <= bytes;
 }
 
+/// The face element of a binary body at `at` (advanced past it): false
+/// for a face the fast path does not read (the checked path then names it).
+bool ReadBinaryFaces(MappedFile& file, size_t& at, const PlyElement& e, const Layout& l, bool swap,
+  Polygons& out)
+{
+  const char* data = file.Data();
+  const size_t size = file.Size();
+  const int64_t nv = l.vertex->count;
+  const int64_t nf = l.face->count;
+  // before the list, the list, after it: scalars of fixed sizes
+  size_t before = 0, after = 0;
+  for (size_t i = 0; i < e.properties.size(); ++i)
+  {
+    if (static_cast<int>(i) != l.list)
+    {
+      (static_cast<int>(i) < l.list ? before : after) += static_cast<size_t>(e.properties[i].size);
+    }
+  }
+  const PlyProperty& list = e.properties[static_cast<size_t>(l.list)];
+  const Kind countKind = KindOf(list.countSize, true, list.countSigned);
+  const Kind itemKind = KindOf(list.size, true, list.isSigned);
+  const size_t countSize = static_cast<size_t>(list.countSize);
+  const size_t item = static_cast<size_t>(list.size);
+  const bool fastTriangles = !swap && before == 0 && after == 0 && countSize == 1 && item == 4;
+  vtkTypeInt64* offset = out.offset;
+  if (fastTriangles && nf >= kTwoThreadFaces &&
+    static_cast<size_t>(nf) <= (size - at) / kTriangleRecord &&
+    ReadTriangleRecords(file, at, nf, nv, out))
+  {
+    out.used = 3 * nf;
+    at += kTriangleRecord * static_cast<size_t>(nf);
+    file.Release(at);
+    return true;
+  }
+  for (int64_t f = 0; f < nf; ++f)
+  {
+    if (at + before + countSize > size)
+    {
+      return false;
+    }
+    at += before;
+    const long long count = Index(data + at, countKind, swap);
+    at += countSize;
+    if (count < 3 || count > kMaxFaceVertices || at + static_cast<size_t>(count) * item + after > size)
+    {
+      return false;
+    }
+    out.Reserve(count);
+    vtkTypeInt64* ids = out.ids + out.used;
+    if (fastTriangles)
+    {
+      for (long long k = 0; k < count; ++k)
+      {
+        int32_t v;
+        std::memcpy(&v, data + at + 4 * static_cast<size_t>(k), 4);
+        ids[k] = v;
+      }
+    }
+    else
+    {
+      for (long long k = 0; k < count; ++k)
+      {
+        ids[k] = Index(data + at + static_cast<size_t>(k) * item, itemKind, swap);
+      }
+    }
+    bool inRange = true;
+    for (long long k = 0; k < count; ++k)
+    {
+      inRange &= ids[k] >= 0 && ids[k] < nv;
+    }
+    if (!inRange)
+    {
+      return false;
+    }
+    out.used += count;
+    offset[f + 1] = out.used;
+    at += static_cast<size_t>(count) * item + after;
+    if ((f & 0xffff) == 0)
+    {
+      file.Release(at);
+    }
+  }
+  return true;
+}
+
 vtkSmartPointer<vtkPolyData> ReadBinary(MappedFile& file, size_t at,
   const std::vector<PlyElement>& elements, const Layout& l, bool swap)
 {
@@ -423,78 +508,9 @@ vtkSmartPointer<vtkPolyData> ReadBinary(MappedFile& file, size_t at,
     }
     else if (&e == l.face)
     {
-      // before the list, the list, after it: scalars of fixed sizes
-      size_t before = 0, after = 0;
-      for (size_t i = 0; i < e.properties.size(); ++i)
+      if (!ReadBinaryFaces(file, at, e, l, swap, out))
       {
-        if (static_cast<int>(i) != l.list)
-        {
-          (static_cast<int>(i) < l.list ? before : after) += static_cast<size_t>(e.properties[i].size);
-        }
-      }
-      const PlyProperty& list = e.properties[static_cast<size_t>(l.list)];
-      const Kind countKind = KindOf(list.countSize, true, list.countSigned);
-      const Kind itemKind = KindOf(list.size, true, list.isSigned);
-      const size_t countSize = static_cast<size_t>(list.countSize);
-      const size_t item = static_cast<size_t>(list.size);
-      const bool fastTriangles = !swap && before == 0 && after == 0 && countSize == 1 && item == 4;
-      vtkTypeInt64* offset = out.offset;
-      if (fastTriangles && nf >= kTwoThreadFaces &&
-        static_cast<size_t>(nf) <= (size - at) / kTriangleRecord &&
-        ReadTriangleRecords(file, at, nf, nv, out))
-      {
-        out.used = 3 * nf;
-        at += kTriangleRecord * static_cast<size_t>(nf);
-        file.Release(at);
-        continue;
-      }
-      for (int64_t f = 0; f < nf; ++f)
-      {
-        if (at + before + countSize > size)
-        {
-          return nullptr;
-        }
-        at += before;
-        const long long count = Index(data + at, countKind, swap);
-        at += countSize;
-        if (count < 3 || count > kMaxFaceVertices || at + static_cast<size_t>(count) * item + after > size)
-        {
-          return nullptr;
-        }
-        out.Reserve(count);
-        vtkTypeInt64* ids = out.ids + out.used;
-        if (fastTriangles)
-        {
-          for (long long k = 0; k < count; ++k)
-          {
-            int32_t v;
-            std::memcpy(&v, data + at + 4 * static_cast<size_t>(k), 4);
-            ids[k] = v;
-          }
-        }
-        else
-        {
-          for (long long k = 0; k < count; ++k)
-          {
-            ids[k] = Index(data + at + static_cast<size_t>(k) * item, itemKind, swap);
-          }
-        }
-        bool inRange = true;
-        for (long long k = 0; k < count; ++k)
-        {
-          inRange &= ids[k] >= 0 && ids[k] < nv;
-        }
-        if (!inRange)
-        {
-          return nullptr;
-        }
-        out.used += count;
-        offset[f + 1] = out.used;
-        at += static_cast<size_t>(count) * item + after;
-        if ((f & 0xffff) == 0)
-        {
-          file.Release(at);
-        }
+        return nullptr;
       }
     }
     else

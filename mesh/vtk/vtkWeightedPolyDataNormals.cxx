@@ -21,8 +21,31 @@
 #include <vtkTriangleFilter.h>
 
 #include <algorithm>
+#include <numeric>
 
 vtkStandardNewMacro(vtkWeightedPolyDataNormals);
+
+namespace
+{
+
+/// The normals of a mesh of float or double points: split at creases, or
+/// crease-free (one pass over the arrays, no adjacency: edge counts stay
+/// 0, every point its own original).
+template <typename View>
+shadinglab::mesh::NormalResult NormalsOf(const View& mesh, const shadinglab::mesh::NormalOptions& options)
+{
+  if (options.splitting)
+  {
+    return shadinglab::mesh::ComputeVertexNormals(mesh, options);
+  }
+  shadinglab::mesh::NormalResult result;
+  shadinglab::mesh::ComputeVertexNormalsNoSplit(mesh, options.weighting, result.normals);
+  result.originalPointIds.resize(static_cast<size_t>(mesh.numberOfPoints));
+  std::iota(result.originalPointIds.begin(), result.originalPointIds.end(), int64_t(0));
+  return result;
+}
+
+} // namespace
 
 int vtkWeightedPolyDataNormals::RequestData(
   vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
@@ -74,29 +97,7 @@ int vtkWeightedPolyDataNormals::RequestData(
     options.featureEdges = slm::LineSegments(source);
   }
   this->UpdateProgress(0.1);
-  slm::NormalResult result;
-  if (this->Splitting)
-  {
-    result = floats ? slm::ComputeVertexNormals(floatMesh, options)
-                    : slm::ComputeVertexNormals(mesh, options);
-  }
-  else
-  {
-    // Crease-free: one pass over the arrays, no adjacency (edge counts stay 0).
-    if (floats)
-    {
-      slm::ComputeVertexNormalsNoSplit(floatMesh, options.weighting, result.normals);
-    }
-    else
-    {
-      slm::ComputeVertexNormalsNoSplit(mesh, options.weighting, result.normals);
-    }
-    result.originalPointIds.resize(static_cast<size_t>(mesh.numberOfPoints));
-    for (int64_t i = 0; i < mesh.numberOfPoints; ++i)
-    {
-      result.originalPointIds[i] = i;
-    }
-  }
+  slm::NormalResult result = floats ? NormalsOf(floatMesh, options) : NormalsOf(mesh, options);
   this->UpdateProgress(0.8);
   this->NumberOfCreaseEdges = result.creaseEdges;
   this->NumberOfSplitPoints = result.splitPoints;

@@ -24,7 +24,7 @@ constexpr double kTinyWeight = 1e-300;
 /// The project's one vector type (the model's Vec3, in double).
 using V3 = Vec3<double>;
 
-/// b - a, each coordinate widened to double as it is loaded (float
+/// a - b, each coordinate widened to double as it is loaded (float
 /// points give the bits a double copy of them gives).
 template <typename Real>
 V3 Sub(const Real* a, const Real* b)

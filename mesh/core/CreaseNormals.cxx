@@ -50,8 +50,8 @@ struct CornerTable
   }
 };
 
-template <typename Real>
-void BuildCornerTable(const MeshViewOf<Real>& m, CornerTable& t)
+template <typename Real, typename Id>
+void BuildCornerTable(const MeshViewOf<Real, Id>& m, CornerTable& t)
 {
   const int64_t np = m.numberOfPolygons;
   const int64_t nc = np > 0 ? m.offsets[np] : 0;
@@ -140,8 +140,8 @@ struct VertexScratch
 /// the edges where their faces meet at less than the feature angle
 /// (cos: `cosFeature`) and that are no feature edge; counts the boundary,
 /// non-manifold and crease edges at their lower vertex.
-template<typename Real, typename CornerT>
-void JoinAcrossSmoothEdges(const MeshViewOf<Real>& m, const CornerTable& t, const CornerT* corners,
+template <typename Real, typename Id, typename CornerT>
+void JoinAcrossSmoothEdges(const MeshViewOf<Real, Id>& m, const CornerTable& t, const CornerT* corners,
   int64_t v, int32_t count, const NormalOptions& opt, const FeatureEdges& features,
   double cosFeature, VertexScratch& s, NormalResult& r)
 {
@@ -252,8 +252,8 @@ struct RangeResult
 };
 
 /// The vertex pass over [v0, v1) (see ComputeVertexNormals).
-template <typename Real, typename CornerT>
-void VertexPass(const MeshViewOf<Real>& m, const CornerTable& table, const CornerT* cornerTable,
+template <typename Real, typename Id, typename CornerT>
+void VertexPass(const MeshViewOf<Real, Id>& m, const CornerTable& table, const CornerT* cornerTable,
   const NormalOptions& opt, const FeatureEdges& features, double cosFeature, int64_t v0,
   int64_t v1, double* normals, RangeResult& out)
 {
@@ -334,8 +334,8 @@ void VertexPass(const MeshViewOf<Real>& m, const CornerTable& table, const Corne
 namespace
 {
 
-template <typename Real>
-NormalResult CreaseNormals(const MeshViewOf<Real>& m, const NormalOptions& opt)
+template <typename Real, typename Id>
+NormalResult CreaseNormals(const MeshViewOf<Real, Id>& m, const NormalOptions& opt)
 {
   NormalResult r;
   const int64_t nv = m.numberOfPoints, np = m.numberOfPolygons;
@@ -427,6 +427,16 @@ NormalResult ComputeVertexNormals(const MeshView& mesh, const NormalOptions& opt
 }
 
 NormalResult ComputeVertexNormals(const FloatMeshView& mesh, const NormalOptions& options)
+{
+  return CreaseNormals(mesh, options);
+}
+
+NormalResult ComputeVertexNormals(const NarrowMeshView& mesh, const NormalOptions& options)
+{
+  return CreaseNormals(mesh, options);
+}
+
+NormalResult ComputeVertexNormals(const FloatNarrowMeshView& mesh, const NormalOptions& options)
 {
   return CreaseNormals(mesh, options);
 }

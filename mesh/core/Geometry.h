@@ -20,17 +20,22 @@ namespace shadinglab::mesh
 /// Points in double (MeshView), or in float where a kernel reads a file's
 /// float points in place (FloatMeshView: the vertex normals, which widen
 /// each coordinate as they load it, so the same bits as from a double copy).
-template <typename Real>
+/// Ids in int64 (MeshView), or in int32 where a kernel reads a 32-bit
+/// vtkCellArray in place (NarrowMeshView: the fast readers' cells, half
+/// the memory of 64-bit ones).
+template <typename Real, typename Id = int64_t>
 struct MeshViewOf
 {
   const Real* points = nullptr; ///< 3 per point
   int64_t numberOfPoints = 0;
-  const int64_t* offsets = nullptr; ///< numberOfPolygons + 1 entries
-  const int64_t* connectivity = nullptr;
+  const Id* offsets = nullptr; ///< numberOfPolygons + 1 entries
+  const Id* connectivity = nullptr;
   int64_t numberOfPolygons = 0;
 };
 using MeshView = MeshViewOf<double>;
 using FloatMeshView = MeshViewOf<float>;
+using NarrowMeshView = MeshViewOf<double, int32_t>;
+using FloatNarrowMeshView = MeshViewOf<float, int32_t>;
 
 /// Faces whose Newell area is below this fraction of the squared bounding
 /// diagonal are degenerate. 1e-20 is ~100x double's epsilon squared (the

@@ -41,14 +41,14 @@ V3 PointAt(const Real* points, int64_t i)
 
 /// Area vector of the polygon of n corners from corner b: twice its area
 /// times the unit normal (Geometry.h).
-template <typename Real>
-V3 AreaVectorAt(const MeshViewOf<Real>& m, int64_t b, int64_t n)
+template <typename Real, typename Id>
+V3 AreaVectorAt(const MeshViewOf<Real, Id>& m, int64_t b, int64_t n)
 {
   if (n == 3)
   {
-    const Real* p0 = m.points + 3 * m.connectivity[b];
-    const Real* p1 = m.points + 3 * m.connectivity[b + 1];
-    const Real* p2 = m.points + 3 * m.connectivity[b + 2];
+    const Real* p0 = m.points + 3 * int64_t(m.connectivity[b]);
+    const Real* p1 = m.points + 3 * int64_t(m.connectivity[b + 1]);
+    const Real* p2 = m.points + 3 * int64_t(m.connectivity[b + 2]);
     return Cross(Sub(p1, p0), Sub(p2, p0));
   }
   return NewellAreaVector<double>(
@@ -56,15 +56,15 @@ V3 AreaVectorAt(const MeshViewOf<Real>& m, int64_t b, int64_t n)
 }
 
 /// Area vector of polygon p.
-template <typename Real>
-V3 AreaVector(const MeshViewOf<Real>& m, int64_t p)
+template <typename Real, typename Id>
+V3 AreaVector(const MeshViewOf<Real, Id>& m, int64_t p)
 {
   return AreaVectorAt(m, m.offsets[p], m.offsets[p + 1] - m.offsets[p]);
 }
 
 /// The contribution of polygon p's corner k (vertex connectivity[b + k]).
-template <typename Real>
-V3 CornerContribution(const MeshViewOf<Real>& m,
+template <typename Real, typename Id>
+V3 CornerContribution(const MeshViewOf<Real, Id>& m,
   int64_t b,
   int64_t n,
   int64_t k,
@@ -88,9 +88,9 @@ V3 CornerContribution(const MeshViewOf<Real>& m,
     case NormalWeighting::Angle:
     case NormalWeighting::Max:
     {
-      const Real* v = m.points + 3 * m.connectivity[b + k];
-      const Real* prev = m.points + 3 * m.connectivity[b + (k + n - 1) % n];
-      const Real* next = m.points + 3 * m.connectivity[b + (k + 1) % n];
+      const Real* v = m.points + 3 * int64_t(m.connectivity[b + k]);
+      const Real* prev = m.points + 3 * int64_t(m.connectivity[b + (k + n - 1) % n]);
+      const Real* next = m.points + 3 * int64_t(m.connectivity[b + (k + 1) % n]);
       const V3 e1 = Sub(next, v), e2 = Sub(prev, v);
       const double l1 = Dot(e1, e1), l2 = Dot(e2, e2);
       if (l1 < kTinyWeight || l2 < kTinyWeight || areaLength < kTinyWeight)

@@ -226,8 +226,8 @@ bool DuplicateEdgeAmong(const std::vector<Id>& start, std::vector<Id>& target, i
 /// HasInconsistentOrientation with ids of type Id: the outgoing edges'
 /// targets per vertex (CSR), then duplicates per vertex, the vertices
 /// split between two threads.
-template <typename Id>
-bool HasDuplicateDirectedEdge(const MeshView& mesh)
+template <typename Id, typename View>
+bool HasDuplicateDirectedEdge(const View& mesh)
 {
   const int64_t faces = mesh.numberOfPolygons, points = mesh.numberOfPoints;
   const int64_t corners = mesh.offsets[faces];
@@ -243,9 +243,8 @@ bool HasDuplicateDirectedEdge(const MeshView& mesh)
   return first || second;
 }
 
-} // namespace
-
-bool HasInconsistentOrientation(const MeshView& mesh)
+template <typename View>
+bool HasInconsistentOrientationOf(const View& mesh)
 {
   if (mesh.numberOfPolygons == 0 || mesh.numberOfPoints == 0)
   {
@@ -258,6 +257,18 @@ bool HasInconsistentOrientation(const MeshView& mesh)
     return HasDuplicateDirectedEdge<int32_t>(mesh);
   }
   return HasDuplicateDirectedEdge<int64_t>(mesh);
+}
+
+} // namespace
+
+bool HasInconsistentOrientation(const MeshView& mesh)
+{
+  return HasInconsistentOrientationOf(mesh);
+}
+
+bool HasInconsistentOrientation(const NarrowMeshView& mesh)
+{
+  return HasInconsistentOrientationOf(mesh);
 }
 
 std::vector<uint8_t> ConsistentOrientationFlips(const MeshView& mesh)

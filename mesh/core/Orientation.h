@@ -44,6 +44,8 @@ std::vector<uint8_t> OrientComponents(const MeshView& mesh, const FaceNeighbourL
 /// Linear in the corners: a per-vertex table of outgoing edges, no sort of
 /// the whole edge list, so a consistent mesh pays little for asking.
 bool HasInconsistentOrientation(const MeshView& mesh);
+/// The same for 32-bit ids (a fast reader's cells, in place; points unused).
+bool HasInconsistentOrientation(const NarrowMeshView& mesh);
 
 /// OrientComponents over FindFaceNeighbours: the faces to flip so that the
 /// mesh is consistently oriented (outward on closed components).

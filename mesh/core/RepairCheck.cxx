@@ -20,7 +20,18 @@ int64_t Find(std::vector<int64_t>& parent, int64_t f)
 
 } // namespace
 
-RepairNeeds CheckRepairNeeds(const MeshView& m)
+namespace
+{
+
+/// Point i widened to double (float points give their double copy's bits).
+template <typename Real>
+Vec3<double> PointInDouble(const Real* points, int64_t i)
+{
+  return Vec3<double>(double(points[3 * i]), double(points[3 * i + 1]), double(points[3 * i + 2]));
+}
+
+template <typename Real, typename Id>
+RepairNeeds CheckRepairNeedsOf(const MeshViewOf<Real, Id>& m)
 {
   RepairNeeds needs;
   const int64_t nv = m.numberOfPoints, nf = m.numberOfPolygons;
@@ -28,10 +39,10 @@ RepairNeeds CheckRepairNeeds(const MeshView& m)
   {
     return needs;
   }
-  Vec3<double> lo = PointOf(m.points, 0), hi = lo;
+  Vec3<double> lo = PointInDouble(m.points, 0), hi = lo;
   for (int64_t i = 1; i < nv; ++i)
   {
-    const Vec3<double> p = PointOf(m.points, i);
+    const Vec3<double> p = PointInDouble(m.points, i);
     lo = Vec3<double>(std::min(lo.x, p.x), std::min(lo.y, p.y), std::min(lo.z, p.z));
     hi = Vec3<double>(std::max(hi.x, p.x), std::max(hi.y, p.y), std::max(hi.z, p.z));
   }
@@ -51,7 +62,7 @@ RepairNeeds CheckRepairNeeds(const MeshView& m)
       }
     }
     const Vec3<double> area = NewellAreaVector<double>(
-      n, [&](int64_t k) { return PointOf(m.points, m.connectivity[b + k]); });
+      n, [&](int64_t k) { return PointInDouble(m.points, m.connectivity[b + k]); });
     needs.degenerate += repeated || !(Length(area) > minArea);
   }
 
@@ -124,11 +135,11 @@ RepairNeeds CheckRepairNeeds(const MeshView& m)
     const int64_t root = Find(parent, f);
     componentOpen[root] |= open[f];
     const int64_t b = m.offsets[f], n = m.offsets[f + 1] - b;
-    const Vec3<double> p0 = PointOf(m.points, m.connectivity[b]) - center;
+    const Vec3<double> p0 = PointInDouble(m.points, m.connectivity[b]) - center;
     for (int64_t k = 1; k + 1 < n; ++k)
     {
-      const Vec3<double> p1 = PointOf(m.points, m.connectivity[b + k]) - center;
-      const Vec3<double> p2 = PointOf(m.points, m.connectivity[b + k + 1]) - center;
+      const Vec3<double> p1 = PointInDouble(m.points, m.connectivity[b + k]) - center;
+      const Vec3<double> p2 = PointInDouble(m.points, m.connectivity[b + k + 1]) - center;
       volume[root] += Dot(p0, Cross(p1, p2)) / 6.0;
     }
   }
@@ -140,6 +151,18 @@ RepairNeeds CheckRepairNeeds(const MeshView& m)
     }
   }
   return needs;
+}
+
+} // namespace
+
+RepairNeeds CheckRepairNeeds(const MeshView& mesh)
+{
+  return CheckRepairNeedsOf(mesh);
+}
+
+RepairNeeds CheckRepairNeeds(const FloatNarrowMeshView& mesh)
+{
+  return CheckRepairNeedsOf(mesh);
 }
 
 } // namespace shadinglab::mesh

@@ -33,5 +33,7 @@ struct RepairNeeds
  * vertex) are not looked for: they change no normal and no picture.
  */
 RepairNeeds CheckRepairNeeds(const MeshView& mesh);
+/// The same on a fast reader's arrays in place (float points, 32-bit ids).
+RepairNeeds CheckRepairNeeds(const FloatNarrowMeshView& mesh);
 
 } // namespace shadinglab::mesh

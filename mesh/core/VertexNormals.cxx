@@ -23,8 +23,8 @@ namespace
 
 /// Polygon p's contribution to its vertices' normals (the per-polygon loop
 /// body of ComputeVertexNormalsNoSplit).
-template <typename Real>
-void AddPolygon(const MeshViewOf<Real>& m, int64_t p, NormalWeighting weighting, double* out)
+template <typename Real, typename Id>
+void AddPolygon(const MeshViewOf<Real, Id>& m, int64_t p, NormalWeighting weighting, double* out)
 {
   const int64_t b = m.offsets[p], n = m.offsets[p + 1] - b;
   if (n < 3)
@@ -36,7 +36,7 @@ void AddPolygon(const MeshViewOf<Real>& m, int64_t p, NormalWeighting weighting,
   {
     for (int64_t k = 0; k < n; ++k)
     {
-      double* o = out + 3 * m.connectivity[b + k];
+      double* o = out + 3 * int64_t(m.connectivity[b + k]);
       o[0] += a.x;
       o[1] += a.y;
       o[2] += a.z;
@@ -76,7 +76,7 @@ void AddPolygon(const MeshViewOf<Real>& m, int64_t p, NormalWeighting weighting,
   for (int64_t k = 0; k < n; ++k)
   {
     const V3 c = CornerContribution(m, b, n, k, a, len, weighting);
-    double* o = out + 3 * m.connectivity[b + k];
+    double* o = out + 3 * int64_t(m.connectivity[b + k]);
     o[0] += c.x;
     o[1] += c.y;
     o[2] += c.z;
@@ -177,8 +177,8 @@ __attribute__((always_inline)) inline void AngleWeights(AngleBatch& b, int64_t c
 /// Angle weights (Thurmer & Wuthrich 1998) of the triangles [first, last),
 /// all triangles, accumulated into `out`: gathered into arrays, the
 /// weights computed in one branch-free loop (vectorized), then scattered.
-template <typename Real>
-__attribute__((always_inline)) inline void AngleWeightedTrianglesBody(const MeshViewOf<Real>& m,
+template <typename Real, typename Id>
+__attribute__((always_inline)) inline void AngleWeightedTrianglesBody(const MeshViewOf<Real, Id>& m,
   int64_t first,
   int64_t last,
   double* out)
@@ -189,12 +189,12 @@ __attribute__((always_inline)) inline void AngleWeightedTrianglesBody(const Mesh
     const int64_t count = std::min(kAngleBatch, last - start);
     // Every polygon of [first, last) is a triangle (the caller's run), so
     // triangle start + i begins 3 i after the batch's first corner.
-    const int64_t* corners = m.connectivity + m.offsets[start];
+    const Id* corners = m.connectivity + m.offsets[start];
     for (int64_t i = 0; i < count; ++i)
     {
-      const int64_t* c = corners + 3 * i;
-      const V3 e1 = Sub(m.points + 3 * c[1], m.points + 3 * c[0]);
-      const V3 e2 = Sub(m.points + 3 * c[2], m.points + 3 * c[0]);
+      const Id* c = corners + 3 * i;
+      const V3 e1 = Sub(m.points + 3 * int64_t(c[1]), m.points + 3 * int64_t(c[0]));
+      const V3 e2 = Sub(m.points + 3 * int64_t(c[2]), m.points + 3 * int64_t(c[0]));
       b.e1x[i] = e1.x;
       b.e1y[i] = e1.y;
       b.e1z[i] = e1.z;
@@ -205,11 +205,11 @@ __attribute__((always_inline)) inline void AngleWeightedTrianglesBody(const Mesh
     AngleWeights(b, count);
     for (int64_t i = 0; i < count; ++i)
     {
-      const int64_t* c = corners + 3 * i;
+      const Id* c = corners + 3 * i;
       const double w[3] = { b.w0[i], b.w1[i], b.w2[i] };
       for (int k = 0; k < 3; ++k)
       {
-        double* o = out + 3 * c[k];
+        double* o = out + 3 * int64_t(c[k]);
         o[0] += b.e1x[i] * w[k];
         o[1] += b.e1y[i] * w[k];
         o[2] += b.e1z[i] * w[k];
@@ -220,8 +220,8 @@ __attribute__((always_inline)) inline void AngleWeightedTrianglesBody(const Mesh
 
 /// The same loop compiled for AVX2 (4 doubles a lane group instead of
 /// SSE2's 2): chosen at run time, so the binary still runs without AVX2.
-template <typename Real>
-__attribute__((target("avx2"))) void AngleWeightedTrianglesAvx2(const MeshViewOf<Real>& m,
+template <typename Real, typename Id>
+__attribute__((target("avx2"))) void AngleWeightedTrianglesAvx2(const MeshViewOf<Real, Id>& m,
   int64_t first,
   int64_t last,
   double* out)
@@ -229,16 +229,16 @@ __attribute__((target("avx2"))) void AngleWeightedTrianglesAvx2(const MeshViewOf
   AngleWeightedTrianglesBody(m, first, last, out);
 }
 
-template <typename Real>
-void AngleWeightedTrianglesBaseline(const MeshViewOf<Real>& m, int64_t first, int64_t last, double* out)
+template <typename Real, typename Id>
+void AngleWeightedTrianglesBaseline(const MeshViewOf<Real, Id>& m, int64_t first, int64_t last, double* out)
 {
   AngleWeightedTrianglesBody(m, first, last, out);
 }
 
 std::atomic<bool> gWideSimd{ true };
 
-template <typename Real>
-void AddAngleWeightedTriangles(const MeshViewOf<Real>& m, int64_t first, int64_t last, double* out)
+template <typename Real, typename Id>
+void AddAngleWeightedTriangles(const MeshViewOf<Real, Id>& m, int64_t first, int64_t last, double* out)
 {
   static const bool avx2 = __builtin_cpu_supports("avx2");
   if (avx2 && gWideSimd.load(std::memory_order_relaxed))
@@ -266,8 +266,8 @@ bool WideSimdInUse()
 namespace
 {
 
-template <typename Real>
-void NoSplitNormals(const MeshViewOf<Real>& m, NormalWeighting weighting, std::vector<double>& normals)
+template <typename Real, typename Id>
+void NoSplitNormals(const MeshViewOf<Real, Id>& m, NormalWeighting weighting, std::vector<double>& normals)
 {
   normals.assign(static_cast<size_t>(3 * m.numberOfPoints), 0.0);
   double* out = normals.data();
@@ -310,14 +310,30 @@ void ComputeVertexNormalsNoSplit(
   NoSplitNormals(mesh, weighting, normals);
 }
 
+void ComputeVertexNormalsNoSplit(
+  const NarrowMeshView& mesh, NormalWeighting weighting, std::vector<double>& normals)
+{
+  NoSplitNormals(mesh, weighting, normals);
+}
+
+void ComputeVertexNormalsNoSplit(
+  const FloatNarrowMeshView& mesh, NormalWeighting weighting, std::vector<double>& normals)
+{
+  NoSplitNormals(mesh, weighting, normals);
+}
+
 /// Polygons of more corners than this are skipped by ComputeVertexNormalsAt
 /// (their corners are copied to a stack buffer); meshes a renderer draws
 /// have 3-8, and one skipped polygon changes an estimate by its share only.
 constexpr int64_t kMaxCornersAt = 64;
 
-void ComputeVertexNormalsAt(const float* points,
-  const int64_t* offsets,
-  const int64_t* connectivity,
+namespace
+{
+
+template <typename Id>
+void NormalsAt(const float* points,
+  const Id* offsets,
+  const Id* connectivity,
   int64_t numberOfPolygons,
   const std::vector<NormalWeighting>& weightings,
   const std::vector<int64_t>& slotOfPoint,
@@ -351,7 +367,7 @@ void ComputeVertexNormalsAt(const float* points,
     // the whole-mesh pass gives, up to rounding.
     for (int64_t k = 0; k < n; ++k)
     {
-      const float* q = points + 3 * connectivity[b + k];
+      const float* q = points + 3 * int64_t(connectivity[b + k]);
       local[3 * k] = q[0];
       local[3 * k + 1] = q[1];
       local[3 * k + 2] = q[2];
@@ -385,6 +401,24 @@ void ComputeVertexNormalsAt(const float* points,
       Normalize(n.data() + 3 * v);
     }
   }
+}
+
+} // namespace
+
+void ComputeVertexNormalsAt(const float* points, const int64_t* offsets,
+  const int64_t* connectivity, int64_t numberOfPolygons,
+  const std::vector<NormalWeighting>& weightings, const std::vector<int64_t>& slotOfPoint,
+  int64_t slots, std::vector<std::vector<double>>& normals)
+{
+  NormalsAt(points, offsets, connectivity, numberOfPolygons, weightings, slotOfPoint, slots, normals);
+}
+
+void ComputeVertexNormalsAt(const float* points, const int32_t* offsets,
+  const int32_t* connectivity, int64_t numberOfPolygons,
+  const std::vector<NormalWeighting>& weightings, const std::vector<int64_t>& slotOfPoint,
+  int64_t slots, std::vector<std::vector<double>>& normals)
+{
+  NormalsAt(points, offsets, connectivity, numberOfPolygons, weightings, slotOfPoint, slots, normals);
 }
 
 } // namespace shadinglab::mesh

@@ -84,6 +84,10 @@ NormalResult ComputeVertexNormals(const MeshView& mesh, const NormalOptions& opt
 /// widened as it is loaded, so the result is the double copy's, bit for
 /// bit, without the copy (192 MB on 16M triangles).
 NormalResult ComputeVertexNormals(const FloatMeshView& mesh, const NormalOptions& options);
+/// The same from 32-bit ids read in place (a fast reader's cells), double
+/// or float points: the int64 views' results, bit for bit.
+NormalResult ComputeVertexNormals(const NarrowMeshView& mesh, const NormalOptions& options);
+NormalResult ComputeVertexNormals(const FloatNarrowMeshView& mesh, const NormalOptions& options);
 
 /// Frees the calling thread's scratch table, which ComputeVertexNormals
 /// keeps up to kKeptScratchCorners corners for its next call (a filter
@@ -106,6 +110,10 @@ void ComputeVertexNormalsNoSplit(
   const MeshView& mesh, NormalWeighting weighting, std::vector<double>& normals);
 void ComputeVertexNormalsNoSplit(
   const FloatMeshView& mesh, NormalWeighting weighting, std::vector<double>& normals);
+void ComputeVertexNormalsNoSplit(
+  const NarrowMeshView& mesh, NormalWeighting weighting, std::vector<double>& normals);
+void ComputeVertexNormalsNoSplit(
+  const FloatNarrowMeshView& mesh, NormalWeighting weighting, std::vector<double>& normals);
 
 /**
  * The crease-free normals at some points only, for a mesh of float points (a
@@ -117,6 +125,11 @@ void ComputeVertexNormalsNoSplit(
  */
 void ComputeVertexNormalsAt(const float* points, const int64_t* offsets,
   const int64_t* connectivity, int64_t numberOfPolygons,
+  const std::vector<NormalWeighting>& weightings, const std::vector<int64_t>& slotOfPoint,
+  int64_t slots, std::vector<std::vector<double>>& normals);
+/// The same for 32-bit ids (a fast reader's cells, shared in place).
+void ComputeVertexNormalsAt(const float* points, const int32_t* offsets,
+  const int32_t* connectivity, int64_t numberOfPolygons,
   const std::vector<NormalWeighting>& weightings, const std::vector<int64_t>& slotOfPoint,
   int64_t slots, std::vector<std::vector<double>>& normals);
 

@@ -8,10 +8,12 @@
 #include <vtkFloatArray.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkTypeInt32Array.h>
 #include <vtkTypeInt64Array.h>
 
 #include <algorithm>
 #include <cstdlib>
+#include <new>
 
 #include <fcntl.h>
 #include <sys/mman.h>
@@ -87,21 +89,62 @@ void MappedFile::ReleaseRange(size_t begin, size_t end) const
   }
 }
 
+namespace
+{
+
+/// Grows or shrinks a malloc'd id buffer to `count` ids of `bytes` each
+/// (at least one, so that null means failure).
+vtkTypeInt64* ResizeIds(void* buffer, int64_t count, size_t bytes = sizeof(vtkTypeInt64))
+{
+  void* grown = std::realloc(buffer, static_cast<size_t>(std::max<int64_t>(count, 1)) * bytes);
+  if (!grown)
+  {
+    throw std::bad_alloc();
+  }
+  return static_cast<vtkTypeInt64*>(grown);
+}
+
+/// `count` int64 ids handed to a new VTK array, which frees them: narrowed
+/// to 32 bits in place first when `narrow` (value k moves from byte 8k to
+/// byte 4k, never over a value not yet read), the buffer then shrunk.
+vtkSmartPointer<vtkDataArray> HandOver(vtkTypeInt64* buffer, int64_t count, bool narrow)
+{
+  if (!narrow)
+  {
+    auto wide = vtkSmartPointer<vtkTypeInt64Array>::New();
+    wide->SetArray(ResizeIds(buffer, count), count, 0, vtkAbstractArray::VTK_DATA_ARRAY_FREE);
+    return wide;
+  }
+  auto* narrowed = reinterpret_cast<vtkTypeInt32*>(buffer);
+  for (int64_t k = 0; k < count; ++k)
+  {
+    narrowed[k] = static_cast<vtkTypeInt32>(buffer[k]);
+  }
+  auto ids = vtkSmartPointer<vtkTypeInt32Array>::New();
+  ids->SetArray(reinterpret_cast<vtkTypeInt32*>(ResizeIds(buffer, count, sizeof(vtkTypeInt32))),
+    count, 0, vtkAbstractArray::VTK_DATA_ARRAY_FREE);
+  return ids;
+}
+
+} // namespace
+
 Polygons::Polygons(int64_t numberOfPoints, int64_t numberOfPolygons, int64_t idsEstimate)
 {
   this->points = vtkSmartPointer<vtkFloatArray>::New();
   this->points->SetNumberOfComponents(3);
   this->points->SetNumberOfTuples(numberOfPoints);
   this->xyz = this->points->GetPointer(0);
-  this->offsets = vtkSmartPointer<vtkTypeInt64Array>::New();
-  this->offsets->SetNumberOfValues(numberOfPolygons + 1);
   this->polygonCapacity = numberOfPolygons;
-  this->offset = this->offsets->GetPointer(0);
+  this->offset = ResizeIds(nullptr, numberOfPolygons + 1);
   this->offset[0] = 0;
-  this->connectivity = vtkSmartPointer<vtkTypeInt64Array>::New();
   this->capacity = std::max<int64_t>(idsEstimate, 1);
-  this->connectivity->SetNumberOfValues(this->capacity);
-  this->ids = this->connectivity->GetPointer(0);
+  this->ids = ResizeIds(nullptr, this->capacity);
+}
+
+Polygons::~Polygons()
+{
+  std::free(this->offset);
+  std::free(this->ids);
 }
 
 void Polygons::Reserve(int64_t more)
@@ -111,9 +154,7 @@ void Polygons::Reserve(int64_t more)
     return;
   }
   this->capacity = std::max(this->used + more, this->capacity + this->capacity / 2);
-  this->connectivity->Resize(this->capacity);
-  this->connectivity->SetNumberOfValues(this->capacity);
-  this->ids = this->connectivity->GetPointer(0);
+  this->ids = ResizeIds(this->ids, this->capacity);
 }
 
 void Polygons::ReservePolygons(int64_t count)
@@ -123,27 +164,22 @@ void Polygons::ReservePolygons(int64_t count)
     return;
   }
   this->polygonCapacity = std::max(count, this->polygonCapacity + this->polygonCapacity / 2);
-  this->offsets->Resize(this->polygonCapacity + 1);
-  this->offsets->SetNumberOfValues(this->polygonCapacity + 1);
-  this->offset = this->offsets->GetPointer(0);
+  this->offset = ResizeIds(this->offset, this->polygonCapacity + 1);
 }
 
 vtkSmartPointer<vtkPolyData> Polygons::Finish(int64_t numberOfPolygons)
 {
-  if (numberOfPolygons >= 0 && numberOfPolygons != this->polygonCapacity)
-  {
-    this->offsets->Resize(numberOfPolygons + 1);
-    this->offsets->SetNumberOfValues(numberOfPolygons + 1);
-  }
-  if (this->used != this->capacity)
-  {
-    this->connectivity->Resize(this->used);
-    this->connectivity->SetNumberOfValues(this->used);
-  }
+  const int64_t n = numberOfPolygons >= 0 ? numberOfPolygons : this->polygonCapacity;
+  // Ids below 2^31 (points and corners both): 32-bit storage.
+  const bool narrow = this->points->GetNumberOfTuples() < INT32_MAX && this->used < INT32_MAX;
+  vtkSmartPointer<vtkDataArray> offsets = HandOver(this->offset, n + 1, narrow);
+  this->offset = nullptr;
+  vtkSmartPointer<vtkDataArray> connectivity = HandOver(this->ids, this->used, narrow);
+  this->ids = nullptr;
   auto pts = vtkSmartPointer<vtkPoints>::New();
   pts->SetData(this->points);
   auto polys = vtkSmartPointer<vtkCellArray>::New();
-  polys->SetData(this->offsets, this->connectivity);
+  polys->SetData(offsets, connectivity);
   auto mesh = vtkSmartPointer<vtkPolyData>::New();
   mesh->SetPoints(pts);
   mesh->SetPolys(polys);

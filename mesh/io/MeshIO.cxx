@@ -317,24 +317,24 @@ vtkSmartPointer<vtkPolyData> ReadWith(const std::string& path)
   return out;
 }
 
-/// The cell checks of ValidateMesh on 64-bit storage read in place (every
-/// reader's default): false when the storage is another, for the general
-/// loop to check.
-bool CheckCellsInPlace(vtkCellArray* cells, bool polys, vtkIdType np)
+/// CheckCellsInPlace for one storage width (vtkTypeInt64 or vtkTypeInt32).
+template <typename VtkId>
+bool CheckCellsOfWidth(vtkCellArray* cells, bool polys, vtkIdType np, bool& checked)
 {
-  using Int64Array = vtkAOSDataArrayTemplate<vtkTypeInt64>;
-  auto* offsets = Int64Array::SafeDownCast(cells->GetOffsetsArray());
-  auto* connectivity = Int64Array::SafeDownCast(cells->GetConnectivityArray());
-  if (!offsets || !connectivity)
+  using IdArrayOfWidth = vtkAOSDataArrayTemplate<VtkId>;
+  auto* offsets = IdArrayOfWidth::SafeDownCast(cells->GetOffsetsArray());
+  auto* connectivity = IdArrayOfWidth::SafeDownCast(cells->GetConnectivityArray());
+  checked = offsets && connectivity;
+  if (!checked)
   {
     return false;
   }
-  const vtkTypeInt64* o = offsets->GetPointer(0);
-  const vtkTypeInt64* ids = connectivity->GetPointer(0);
+  const VtkId* o = offsets->GetPointer(0);
+  const VtkId* ids = connectivity->GetPointer(0);
   const vtkIdType n = cells->GetNumberOfCells();
   for (vtkIdType c = 0; c < n; ++c)
   {
-    const vtkTypeInt64 size = o[c + 1] - o[c];
+    const vtkTypeInt64 size = static_cast<vtkTypeInt64>(o[c + 1]) - o[c];
     bool inRange = true;
     for (vtkTypeInt64 k = o[c]; k < o[c + 1]; ++k)
     {
@@ -346,6 +346,17 @@ bool CheckCellsInPlace(vtkCellArray* cells, bool polys, vtkIdType np)
     }
   }
   return true;
+}
+
+/// The cell checks of ValidateMesh on 64-bit storage (VTK's readers'
+/// default) or 32-bit storage (the fast readers' when ids fit) read in
+/// place: false when the storage is another, or a cell fails, for the
+/// general loop to check and name.
+bool CheckCellsInPlace(vtkCellArray* cells, bool polys, vtkIdType np)
+{
+  bool checked = false;
+  const bool wide = CheckCellsOfWidth<vtkTypeInt64>(cells, polys, np, checked);
+  return checked ? wide : CheckCellsOfWidth<vtkTypeInt32>(cells, polys, np, checked);
 }
 
 /// The first point with a non-finite coordinate, read in place from float

@@ -7,6 +7,7 @@
 #include "vtkOpenSubdivRefine.h"
 #include "vtkWeightedPolyDataNormals.h"
 
+#include <vtkFloatArray.h>
 #include <vtkNew.h>
 #include <vtkPolyData.h>
 
@@ -114,9 +115,22 @@ vtkSmartPointer<vtkPolyData> PrepareMesh(
   bool needed = o.repair && (o.weld || o.fixTJunctions || input->GetNumberOfStrips() > 0);
   if (o.repair && !needed)
   {
-    FlatPolygons flat;
-    FlatPolygonsFromPolyData(input, flat);
-    needed = CheckRepairNeeds(flat).Any();
+    // A fast reader's arrays (float points, 32-bit cells) are read in
+    // place; others through a double, 64-bit copy.
+    auto* floats = vtkFloatArray::SafeDownCast(input->GetPoints() ? input->GetPoints()->GetData() : nullptr);
+    NarrowMeshView narrow;
+    if (floats && NarrowPolygonsOf(input, narrow))
+    {
+      needed = CheckRepairNeeds(FloatNarrowMeshView{ floats->GetPointer(0), narrow.numberOfPoints,
+                                  narrow.offsets, narrow.connectivity, narrow.numberOfPolygons })
+                 .Any();
+    }
+    else
+    {
+      FlatPolygons flat;
+      FlatPolygonsFromPolyData(input, flat);
+      needed = CheckRepairNeeds(flat).Any();
+    }
     report.repairSkipped = !needed;
   }
   if (needed)

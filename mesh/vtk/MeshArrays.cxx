@@ -14,6 +14,7 @@
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkTriangleFilter.h>
+#include <vtkTypeInt32Array.h>
 
 #include <algorithm>
 #include <type_traits>
@@ -21,17 +22,25 @@
 namespace shadinglab::mesh
 {
 
-vtkSmartPointer<vtkCellArray> CellArrayFromFlat(const int64_t* offsets,
-  int64_t numberOfPolygons, const int64_t* connectivity)
+namespace
 {
-  vtkNew<vtkIdTypeArray> offsetArray, connectivityArray;
-  offsetArray->SetNumberOfTuples(numberOfPolygons + 1);
+
+/// A cell array of `IdsArray` storage (vtkIdTypeArray or vtkTypeInt32Array,
+/// every id fitting) from flat offsets and connectivity, copied.
+template <typename IdsArray, typename Offset>
+vtkSmartPointer<vtkCellArray> CellArrayOf(
+  const Offset* offsets, int64_t numberOfPolygons, const int64_t* connectivity)
+{
+  using Value = typename IdsArray::ValueType;
+  vtkNew<IdsArray> offsetArray, connectivityArray;
+  offsetArray->SetNumberOfValues(numberOfPolygons + 1);
   const int64_t size = numberOfPolygons > 0 ? offsets[numberOfPolygons] : 0;
-  connectivityArray->SetNumberOfTuples(size);
+  connectivityArray->SetNumberOfValues(size);
   if (numberOfPolygons > 0)
   {
     std::copy(offsets, offsets + numberOfPolygons + 1, offsetArray->GetPointer(0));
-    std::copy(connectivity, connectivity + size, connectivityArray->GetPointer(0));
+    std::transform(connectivity, connectivity + size, connectivityArray->GetPointer(0),
+      [](int64_t id) { return static_cast<Value>(id); });
   }
   else
   {
@@ -40,6 +49,43 @@ vtkSmartPointer<vtkCellArray> CellArrayFromFlat(const int64_t* offsets,
   auto cells = vtkSmartPointer<vtkCellArray>::New();
   cells->SetData(offsetArray, connectivityArray);
   return cells;
+}
+
+} // namespace
+
+vtkSmartPointer<vtkCellArray> CellArrayFromFlat(const int64_t* offsets,
+  int64_t numberOfPolygons, const int64_t* connectivity)
+{
+  return CellArrayOf<vtkIdTypeArray>(offsets, numberOfPolygons, connectivity);
+}
+
+vtkSmartPointer<vtkCellArray> CellArrayFromFlat(const int32_t* offsets,
+  int64_t numberOfPolygons, const int64_t* connectivity)
+{
+  return CellArrayOf<vtkTypeInt32Array>(offsets, numberOfPolygons, connectivity);
+}
+
+namespace
+{
+using Int32Array = vtkAOSDataArrayTemplate<vtkTypeInt32>;
+}
+
+bool NarrowPolygonsOf(vtkPolyData* input, NarrowMeshView& out)
+{
+  vtkCellArray* polys = input->GetPolys();
+  auto* offsets = polys ? Int32Array::SafeDownCast(polys->GetOffsetsArray()) : nullptr;
+  auto* connectivity = polys ? Int32Array::SafeDownCast(polys->GetConnectivityArray()) : nullptr;
+  if (!offsets || !connectivity)
+  {
+    return false;
+  }
+  static_assert(sizeof(vtkTypeInt32) == sizeof(int32_t), "32-bit ids");
+  out.points = nullptr;
+  out.numberOfPoints = input->GetNumberOfPoints();
+  out.offsets = reinterpret_cast<const int32_t*>(offsets->GetPointer(0));
+  out.connectivity = reinterpret_cast<const int32_t*>(connectivity->GetPointer(0));
+  out.numberOfPolygons = polys->GetNumberOfCells();
+  return true;
 }
 
 void FlatPolygonsFromPolyData(vtkPolyData* input, FlatPolygons& out, bool withPoints)
@@ -86,6 +132,16 @@ void FlatPolygonsFromPolyData(vtkPolyData* input, FlatPolygons& out, bool withPo
     out.connectivity = reinterpret_cast<const int64_t*>(connectivity64->GetPointer(0));
     return;
   }
+  NarrowMeshView narrow;
+  if (NarrowPolygonsOf(input, narrow)) // widened in two loops, no call per cell
+  {
+    const int64_t n = narrow.numberOfPolygons;
+    out.offsetStorage.assign(narrow.offsets, narrow.offsets + n + 1);
+    out.connectivityStorage.assign(narrow.connectivity, narrow.connectivity + narrow.offsets[n]);
+    out.offsets = out.offsetStorage.data();
+    out.connectivity = out.connectivityStorage.data();
+    return;
+  }
   vtkNew<vtkIdList> ids;
   out.offsetStorage.assign(1, 0);
   for (vtkIdType c = 0; c < polys->GetNumberOfCells(); ++c)
@@ -118,6 +174,11 @@ vtkSmartPointer<vtkPolyData> WithoutStrips(vtkPolyData* input, bool keepLinesAnd
 
 bool InconsistentlyOriented(vtkPolyData* input)
 {
+  NarrowMeshView narrow;
+  if (NarrowPolygonsOf(input, narrow)) // 32-bit cells read in place
+  {
+    return HasInconsistentOrientation(narrow);
+  }
   FlatPolygons flat;
   FlatPolygonsFromPolyData(input, flat, false);
   return HasInconsistentOrientation(flat);

@@ -43,10 +43,18 @@ vtkSmartPointer<vtkPolyData> WithoutStrips(vtkPolyData* input, bool keepLinesAnd
 /// polygons were.
 vtkSmartPointer<vtkPolyData> WithConcavePolygonsSplit(vtkPolyData* input, int64_t* split = nullptr);
 
+/// The input's polygons viewed in place as 32-bit ids, when its cell array
+/// has 32-bit storage (the fast readers' whenever the ids fit): true, with
+/// `out`'s points null (the caller sets them); else false, `out` untouched.
+bool NarrowPolygonsOf(vtkPolyData* input, NarrowMeshView& out);
+
 /// The inverse: a cell array holding `numberOfPolygons` polygons given as
 /// offsets (numberOfPolygons + 1 entries, or none for no polygon) and
 /// connectivity, copied.
 vtkSmartPointer<vtkCellArray> CellArrayFromFlat(const int64_t* offsets,
+  int64_t numberOfPolygons, const int64_t* connectivity);
+/// The same from 32-bit offsets, into 32-bit storage (every id must fit).
+vtkSmartPointer<vtkCellArray> CellArrayFromFlat(const int32_t* offsets,
   int64_t numberOfPolygons, const int64_t* connectivity);
 
 /// Whether two of the input's polygons run a shared edge the same way

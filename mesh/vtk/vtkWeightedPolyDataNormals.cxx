@@ -21,6 +21,8 @@
 #include <vtkTriangleFilter.h>
 
 #include <algorithm>
+#include <cstdint>
+#include <functional>
 #include <numeric>
 
 vtkStandardNewMacro(vtkWeightedPolyDataNormals);
@@ -65,6 +67,48 @@ int vtkWeightedPolyDataNormals::RequestData(
   // copied to double (192 MB on 16M triangles): the orientation test reads
   // the connectivity alone, and only turning faces needs double points.
   auto* floats = vtkFloatArray::SafeDownCast(source->GetPoints()->GetData());
+  auto* doubles = vtkDoubleArray::SafeDownCast(source->GetPoints()->GetData());
+  slm::NormalOptions options;
+  options.weighting = static_cast<slm::NormalWeighting>(this->Weighting);
+  options.splitting = this->Splitting;
+  options.featureAngle = this->FeatureAngle;
+  if (this->UseLinesAsFeatureEdges)
+  {
+    options.featureEdges = slm::LineSegments(source);
+  }
+  // 32-bit cells (the fast readers') are read in place, not widened (256 MB
+  // on 16M triangles), unless faces must be turned: then the widened path.
+  slm::NarrowMeshView narrow;
+  if ((floats || doubles) && slm::NarrowPolygonsOf(source, narrow) &&
+    !(this->Consistency && slm::HasInconsistentOrientation(narrow)))
+  {
+    this->UpdateProgress(0.1);
+    slm::NormalResult result;
+    if (floats)
+    {
+      const slm::FloatNarrowMeshView floatMesh{ floats->GetPointer(0), narrow.numberOfPoints,
+        narrow.offsets, narrow.connectivity, narrow.numberOfPolygons };
+      result = NormalsOf(floatMesh, options);
+    }
+    else
+    {
+      narrow.points = doubles->GetPointer(0);
+      result = NormalsOf(narrow, options);
+    }
+    // Split points past 2^31 (never from a file's 2^31 ids, but checked)
+    // take 64-bit storage.
+    const bool fits = result.originalPointIds.size() < static_cast<size_t>(INT32_MAX);
+    const std::vector<int64_t>& moved = result.connectivity;
+    this->MakeOutput(source, output, result, [&] {
+      if (fits)
+      {
+        return slm::CellArrayFromFlat(narrow.offsets, narrow.numberOfPolygons, moved.data());
+      }
+      const std::vector<int64_t> offsets(narrow.offsets, narrow.offsets + narrow.numberOfPolygons + 1);
+      return slm::CellArrayFromFlat(offsets.data(), narrow.numberOfPolygons, moved.data());
+    });
+    return 1;
+  }
   slm::FlatPolygons flat;
   slm::FlatPolygonsFromPolyData(source, flat, floats == nullptr);
   slm::MeshView mesh;
@@ -88,16 +132,21 @@ int vtkWeightedPolyDataNormals::RequestData(
   }
   const slm::FloatMeshView floatMesh{ floats ? floats->GetPointer(0) : nullptr,
     mesh.numberOfPoints, mesh.offsets, mesh.connectivity, mesh.numberOfPolygons };
-  slm::NormalOptions options;
-  options.weighting = static_cast<slm::NormalWeighting>(this->Weighting);
-  options.splitting = this->Splitting;
-  options.featureAngle = this->FeatureAngle;
-  if (this->UseLinesAsFeatureEdges)
-  {
-    options.featureEdges = slm::LineSegments(source);
-  }
   this->UpdateProgress(0.1);
   slm::NormalResult result = floats ? NormalsOf(floatMesh, options) : NormalsOf(mesh, options);
+  const std::vector<int64_t>& moved = result.connectivity;
+  this->MakeOutput(source, output, result, [&] {
+    return slm::CellArrayFromFlat(mesh.offsets, mesh.numberOfPolygons,
+      moved.empty() ? turned.data() : moved.data());
+  }, !turned.empty());
+  return 1;
+}
+
+void vtkWeightedPolyDataNormals::MakeOutput(vtkPolyData* source, vtkPolyData* output,
+  shadinglab::mesh::NormalResult& result,
+  const std::function<vtkSmartPointer<vtkCellArray>()>& newPolygons, bool turned)
+{
+  namespace slm = shadinglab::mesh;
   this->UpdateProgress(0.8);
   this->NumberOfCreaseEdges = result.creaseEdges;
   this->NumberOfSplitPoints = result.splitPoints;
@@ -161,15 +210,10 @@ int vtkWeightedPolyDataNormals::RequestData(
   outPD->AddArray(originalIds);
 
   output->SetPoints(points);
-  if (nOut != nIn && !result.connectivity.empty())
+  if ((nOut != nIn && !result.connectivity.empty()) || turned)
   {
-    // Corners moved to split points.
-    output->SetPolys(slm::CellArrayFromFlat(
-      mesh.offsets, mesh.numberOfPolygons, result.connectivity.data()));
-  }
-  else if (!turned.empty())
-  {
-    output->SetPolys(slm::CellArrayFromFlat(mesh.offsets, mesh.numberOfPolygons, turned.data()));
+    // Corners moved to split points, or faces turned.
+    output->SetPolys(newPolygons());
   }
   else
   {
@@ -181,7 +225,6 @@ int vtkWeightedPolyDataNormals::RequestData(
   // passing the arrays keeps their correspondence.
   output->GetCellData()->PassData(source->GetCellData());
   this->UpdateProgress(1.0);
-  return 1;
 }
 
 void vtkWeightedPolyDataNormals::PrintSelf(ostream& os, vtkIndent indent)

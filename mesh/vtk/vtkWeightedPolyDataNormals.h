@@ -28,6 +28,20 @@
 #include "shadinglabMeshModule.h" // for export macro
 
 #include <vtkPolyDataAlgorithm.h>
+#include <vtkSmartPointer.h> // for MakeOutput
+
+#include <functional> // for MakeOutput
+
+class vtkCellArray;
+#ifndef __VTK_WRAP__
+namespace shadinglab
+{
+namespace mesh
+{
+struct NormalResult;
+}
+}
+#endif
 
 class SHADINGLABMESH_EXPORT vtkWeightedPolyDataNormals : public vtkPolyDataAlgorithm
 {
@@ -104,6 +118,13 @@ protected:
   vtkIdType NumberOfBoundaryEdges = 0;
 
 private:
+#ifndef __VTK_WRAP__
+  /// The output from the normals: points (split copies appended), the
+  /// normals and OriginalPointIds, and the input's polygons, or
+  /// newPolygons() when corners moved to split points or faces were turned.
+  void MakeOutput(vtkPolyData* source, vtkPolyData* output, shadinglab::mesh::NormalResult& result,
+    const std::function<vtkSmartPointer<vtkCellArray>()>& newPolygons, bool turned = false);
+#endif
   vtkWeightedPolyDataNormals(const vtkWeightedPolyDataNormals&) = delete;
   void operator=(const vtkWeightedPolyDataNormals&) = delete;
 };

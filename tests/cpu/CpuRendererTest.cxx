@@ -2,6 +2,7 @@
 // The CPU renderer: fill rule, determinism across threads, clipping,
 // degenerate input, and accuracy against an analytic per-pixel reference.
 #include "AnalyticMeshes.h"
+#include "HiddenBackFaces.h"
 #include "PolyDataMesh.h"
 #include "Rasterizer.h"
 #include "RenderTestUtil.h"
@@ -1140,6 +1141,67 @@ TEST(CpuRendererTest, ReleasingConversionGivesTheSameMeshAndDropsTheCells)
     EXPECT_EQ(pd->GetNumberOfPolys(), pd == torus.Get() ? 2 * 48 * 24 : 3) << "MeshFromPolyData's untouched";
   }
   EXPECT_GT(render::MeshFromPolyData(mixed).NumberOfPolygons(), 3) << "the dart is split";
+}
+
+// 32-bit cells (the fast readers' storage) reach the renderer shared in
+// place as narrow ids (IdArray::SharedNarrow), read as the 64-bit ones
+// read: the same ids, the same content as a copy, the same image bit for
+// bit in every mode and on any thread count, and the hidden-back-face
+// test's verdict; a change through a non-const member widens a copy and
+// leaves the polydata's cells as they were.
+TEST(CpuRendererTest, NarrowIdsDrawWhatWideIdsDraw)
+{
+  vtkSmartPointer<vtkPolyData> torus;
+  torus.TakeReference(sl::datasets::MakeTorus(1.0, 0.4, 96, 48));
+  torus->GetPointData()->SetNormals(
+    torus->GetPointData()->GetArray(sl::datasets::kExactNormalArray));
+  auto narrowCells = vtkSmartPointer<vtkPolyData>::New();
+  narrowCells->DeepCopy(torus);
+  ASSERT_TRUE(narrowCells->GetPolys()->ConvertTo32BitStorage());
+  render::WorldFrame a, b;
+  const render::Mesh wide = render::MeshFromPolyData(torus, a);
+  auto moved = vtkSmartPointer<vtkPolyData>::New();
+  moved->ShallowCopy(narrowCells);
+  const render::Mesh narrow = render::MeshFromPolyDataReleasing(std::move(moved), b);
+  ASSERT_TRUE(narrow.connectivity.IsNarrow());
+  ASSERT_TRUE(narrow.offsets.IsNarrow());
+  EXPECT_FALSE(wide.connectivity.IsNarrow());
+  EXPECT_EQ(narrow.connectivity.data(), nullptr);
+  EXPECT_EQ(narrow.connectivity, wide.connectivity);
+  EXPECT_EQ(narrow.offsets, wide.offsets);
+  EXPECT_EQ(std::vector<int64_t>(narrow.connectivity.begin(), narrow.connectivity.end()),
+    std::vector<int64_t>(wide.connectivity.begin(), wide.connectivity.end()));
+  EXPECT_EQ(narrow.connectivity.back(), wide.connectivity.back());
+  EXPECT_EQ(narrow.connectivity.ByteSize() * 2, wide.connectivity.ByteSize());
+  EXPECT_EQ(sl::cpu::IsClosedOutwardTriangleMesh(narrow), sl::cpu::IsClosedOutwardTriangleMesh(wide));
+  EXPECT_TRUE(sl::cpu::IsClosedOutwardTriangleMesh(narrow));
+  const auto camera = CameraLookingAt(Vec3d(0.5, 2.0, 3.0), Vec3d(0, 0, 0), 40);
+  const auto light = OneLight(Vec3f(0.3f, 0.6f, 0.7f));
+  for (const auto mode : { render::ShadingMode::Flat, render::ShadingMode::Gouraud,
+         render::ShadingMode::Phong, render::ShadingMode::FastPhong })
+  {
+    for (int threads : { 1, 2 })
+    {
+      render::RenderOptions opt;
+      opt.width = 160;
+      opt.height = 120;
+      opt.mode = mode;
+      opt.threads = threads;
+      render::RenderStats ws, ns;
+      const auto ref = test::RenderCpu(wide, camera, light, BlinnPhong(), opt, &ws);
+      const auto img = test::RenderCpu(narrow, camera, light, BlinnPhong(), opt, &ns);
+      ASSERT_GT(ws.pixelsCovered, 1000);
+      EXPECT_EQ(img.rgb, ref.rgb) << render::ShadingModeName(mode) << " threads " << threads;
+      EXPECT_EQ(ns.rasterized, ws.rasterized);
+    }
+  }
+  // Changing a narrow array widens it into its own copy.
+  render::Mesh changed = narrow;
+  changed.connectivity[0] = changed.connectivity[1];
+  EXPECT_FALSE(changed.connectivity.IsNarrow());
+  EXPECT_EQ(changed.connectivity.size(), wide.connectivity.size());
+  EXPECT_EQ(changed.connectivity[0], wide.connectivity[1]);
+  EXPECT_EQ(narrow.connectivity, wide.connectivity) << "the shared ids are left as they were";
 }
 
 // Screen vertices are kept one per drawn vertex when few are drawn (a big

@@ -63,6 +63,8 @@ void ExpectSameAsVtk(const std::string& path, const std::string& ext)
   const vtkSmartPointer<vtkPolyData> checked = ReadChecked(path);
   ASSERT_GT(fast->GetNumberOfPolys(), 0);
   EXPECT_EQ(shadinglab::test::MeshDifference(fast, checked), "");
+  // Ids that fit in 32 bits are held in 32-bit storage (half the memory).
+  EXPECT_FALSE(fast->GetPolys()->IsStorage64Bit());
 }
 
 vtkSmartPointer<vtkPolyData> Sphere(bool withArrays)

@@ -431,11 +431,13 @@ TEST(NormalsTest, InputKeepsItsModificationTime)
 }
 
 // Float points read in place (FloatMeshView: a file's points, no double
-// copy) give the normals of their double copy bit for bit: the split
+// copy) and 32-bit ids read in place (NarrowMeshView, FloatNarrowMeshView:
+// a fast reader's cells) give the normals of the double, 64-bit copy bit
+// for bit: the split
 // points, their numbering and the moved corners too, in every weighting,
 // with and without creases, on the batched angle path and the general one,
 // quads and pentagons among the triangles.
-TEST(NormalsTest, FloatPointsInPlaceGiveTheDoubleCopysBits)
+TEST(NormalsTest, FloatPointsAndNarrowIdsInPlaceGiveTheWideCopysBits)
 {
   namespace slm = shadinglab::mesh;
   std::mt19937 rng(11);
@@ -474,6 +476,12 @@ TEST(NormalsTest, FloatPointsInPlaceGiveTheDoubleCopysBits)
   const int64_t polygons = static_cast<int64_t>(offsets.size()) - 1;
   const slm::MeshView wide{ doubles.data(), n * n, offsets.data(), conn.data(), polygons };
   const slm::FloatMeshView inPlace{ floats.data(), n * n, offsets.data(), conn.data(), polygons };
+  // The same ids in 32 bits (a fast reader's cells), with either points.
+  const std::vector<int32_t> offsets32(offsets.begin(), offsets.end());
+  const std::vector<int32_t> conn32(conn.begin(), conn.end());
+  const slm::NarrowMeshView narrow{ doubles.data(), n * n, offsets32.data(), conn32.data(), polygons };
+  const slm::FloatNarrowMeshView floatNarrow{ floats.data(), n * n, offsets32.data(), conn32.data(),
+    polygons };
   for (const auto w : { slm::NormalWeighting::Uniform, slm::NormalWeighting::Area,
          slm::NormalWeighting::Angle, slm::NormalWeighting::Max })
   {
@@ -483,19 +491,26 @@ TEST(NormalsTest, FloatPointsInPlaceGiveTheDoubleCopysBits)
       opt.weighting = w;
       opt.featureAngle = angle;
       const slm::NormalResult a = slm::ComputeVertexNormals(wide, opt);
-      const slm::NormalResult b = slm::ComputeVertexNormals(inPlace, opt);
       if (angle < 90)
       {
         EXPECT_GT(a.splitPoints, 0); // creases were split
       }
-      EXPECT_EQ(a.normals, b.normals) << static_cast<int>(w) << " " << angle;
-      EXPECT_EQ(a.originalPointIds, b.originalPointIds);
-      EXPECT_EQ(a.connectivity, b.connectivity);
-      EXPECT_EQ(a.creaseEdges, b.creaseEdges);
+      for (const slm::NormalResult& b : { slm::ComputeVertexNormals(inPlace, opt),
+             slm::ComputeVertexNormals(narrow, opt), slm::ComputeVertexNormals(floatNarrow, opt) })
+      {
+        EXPECT_EQ(a.normals, b.normals) << static_cast<int>(w) << " " << angle;
+        EXPECT_EQ(a.originalPointIds, b.originalPointIds);
+        EXPECT_EQ(a.connectivity, b.connectivity);
+        EXPECT_EQ(a.creaseEdges, b.creaseEdges);
+      }
     }
-    std::vector<double> a, b;
+    std::vector<double> a, b, c, d;
     slm::ComputeVertexNormalsNoSplit(wide, w, a);
     slm::ComputeVertexNormalsNoSplit(inPlace, w, b);
+    slm::ComputeVertexNormalsNoSplit(narrow, w, c);
+    slm::ComputeVertexNormalsNoSplit(floatNarrow, w, d);
     EXPECT_EQ(a, b) << static_cast<int>(w);
+    EXPECT_EQ(a, c) << static_cast<int>(w);
+    EXPECT_EQ(a, d) << static_cast<int>(w);
   }
 }

@@ -6,14 +6,17 @@
 #include "AnalyticMeshes.h"
 #include "MeshArrays.h"
 #include "Orientation.h"
+#include "RepairCheck.h"
 #include "VertexBuckets.h"
 #include "vtkWeightedPolyDataNormals.h"
 
 #include <vtkCellArray.h>
 #include <vtkDataArray.h>
+#include <vtkFloatArray.h>
 #include <vtkIdList.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
+#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
 
@@ -23,6 +26,7 @@
 #include <cmath>
 #include <limits>
 #include <random>
+#include <utility>
 #include <vector>
 
 namespace slm = shadinglab::mesh;
@@ -183,6 +187,86 @@ TEST(OrientationTest, NormalsFilterTurnsInconsistentFacesAndKeepsTheInput)
     smallest = std::min(smallest, dot);
   }
   EXPECT_LT(smallest, 0.5);
+}
+
+// 32-bit cells (the fast readers' storage whenever ids fit) are read in
+// place and give what 64-bit cells give: the orientation test, the repair
+// check, and the normals filter's output bit for bit, split, turned or
+// left alone; the filter keeps 32-bit storage and leaves its input as it was.
+TEST(OrientationTest, NarrowCellsGiveTheWideCellsResults)
+{
+  vtkSmartPointer<vtkPolyData> sphere;
+  sphere.TakeReference(MakeUVSphere(48, 24));
+  // Float points, as a file's.
+  vtkNew<vtkPoints> floats;
+  floats->SetDataTypeToFloat();
+  floats->SetNumberOfPoints(sphere->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < sphere->GetNumberOfPoints(); ++i)
+  {
+    floats->SetPoint(i, sphere->GetPoint(i));
+  }
+  sphere->SetPoints(floats);
+  auto narrowOf = [](vtkPolyData* mesh) {
+    auto out = vtkSmartPointer<vtkPolyData>::New();
+    out->DeepCopy(mesh);
+    EXPECT_TRUE(out->GetPolys()->ConvertTo32BitStorage());
+    return out;
+  };
+  for (const bool scramble : { false, true })
+  {
+    SCOPED_TRACE(scramble ? "scrambled" : "consistent");
+    auto wide = scramble ? WithReversedFaces(sphere, 3, 1) : sphere;
+    ASSERT_TRUE(wide->GetPolys()->IsStorage64Bit());
+    auto narrow = narrowOf(wide);
+    slm::NarrowMeshView view;
+    ASSERT_TRUE(slm::NarrowPolygonsOf(narrow, view));
+    slm::NarrowMeshView none;
+    EXPECT_FALSE(slm::NarrowPolygonsOf(wide, none)); // 64-bit cells: not viewed as 32
+    EXPECT_EQ(slm::InconsistentlyOriented(narrow), scramble);
+    EXPECT_EQ(slm::InconsistentlyOriented(narrow), slm::InconsistentlyOriented(wide));
+    EXPECT_EQ(Connectivity(narrow), Connectivity(wide)); // the widened copy
+    slm::FlatPolygons flat;
+    slm::FlatPolygonsFromPolyData(wide, flat);
+    const slm::RepairNeeds a = slm::CheckRepairNeeds(flat);
+    const slm::RepairNeeds b = slm::CheckRepairNeeds(slm::FloatNarrowMeshView{
+      vtkFloatArray::SafeDownCast(narrow->GetPoints()->GetData())->GetPointer(0), view.numberOfPoints,
+      view.offsets, view.connectivity, view.numberOfPolygons });
+    EXPECT_EQ(a.inconsistentEdges, b.inconsistentEdges);
+    EXPECT_EQ(a.inconsistentEdges > 0, scramble);
+    EXPECT_EQ(a.degenerate, b.degenerate);
+    EXPECT_EQ(a.nonManifoldEdges, b.nonManifoldEdges);
+    EXPECT_EQ(a.inwardComponents, b.inwardComponents);
+    for (const double angle : { 5.0, 180.0 }) // split (faces meet at 7.5 degrees), or not
+    {
+      auto normalsOf = [angle](vtkPolyData* mesh) {
+        vtkNew<vtkWeightedPolyDataNormals> filter;
+        filter->SetInputData(mesh);
+        filter->SetFeatureAngle(angle);
+        filter->Update();
+        auto out = vtkSmartPointer<vtkPolyData>::New();
+        out->ShallowCopy(filter->GetOutput());
+        return std::make_pair(out, filter->GetNumberOfSplitPoints());
+      };
+      const auto before = Connectivity(narrow);
+      const auto [fromWide, splitWide] = normalsOf(wide);
+      const auto [fromNarrow, splitNarrow] = normalsOf(narrow);
+      EXPECT_EQ(splitWide, splitNarrow);
+      EXPECT_EQ(splitWide > 0, angle < 90) << angle;
+      EXPECT_EQ(Connectivity(narrow), before); // the input is not modified
+      EXPECT_FALSE(narrow->GetPolys()->IsStorage64Bit());
+      // Turned faces take the widened path and its 64-bit storage.
+      EXPECT_EQ(fromNarrow->GetPolys()->IsStorage64Bit(), scramble) << angle;
+      EXPECT_EQ(Connectivity(fromNarrow), Connectivity(fromWide)) << angle;
+      vtkDataArray* na = fromWide->GetPointData()->GetNormals();
+      vtkDataArray* nb = fromNarrow->GetPointData()->GetNormals();
+      ASSERT_EQ(na->GetNumberOfTuples(), nb->GetNumberOfTuples());
+      for (vtkIdType i = 0; i < na->GetNumberOfValues(); ++i)
+      {
+        ASSERT_EQ(vtkFloatArray::SafeDownCast(na)->GetValue(i),
+          vtkFloatArray::SafeDownCast(nb)->GetValue(i)) << i;
+      }
+    }
+  }
 }
 
 TEST(OrientationTest, VertexBucketsListCornersInFaceOrderOnAnyThreads)

@@ -32,9 +32,9 @@ uint32_t Root(std::vector<uint32_t>& parent, uint32_t v)
   return mesh::UnionFindRoot(parent, v);
 }
 
-} // namespace
-
-bool IsClosedOutwardTriangleMesh(const render::Mesh& mesh)
+/// IsClosedOutwardTriangleMesh on the connectivity in place, either width.
+template <typename Id>
+bool ClosedOutward(const render::Mesh& mesh, const Id* conn)
 {
   const int64_t nv = mesh.NumberOfPoints(), np = mesh.NumberOfPolygons();
   const int64_t corners = static_cast<int64_t>(mesh.connectivity.size());
@@ -51,7 +51,6 @@ bool IsClosedOutwardTriangleMesh(const render::Mesh& mesh)
       return false;
     }
   }
-  const int64_t* conn = mesh.connectivity.data();
   // Directed edges a -> b grouped by a (CSR).
   std::vector<uint32_t> start(static_cast<size_t>(nv) + 1, 0);
   for (int64_t k = 0; k < corners; ++k)
@@ -120,7 +119,7 @@ bool IsClosedOutwardTriangleMesh(const render::Mesh& mesh)
     {
       for (int c = 0; c < 3; ++c)
       {
-        p[k][c] = double(mesh.points[3 * conn[3 * t + k] + c]) - centre[c];
+        p[k][c] = double(mesh.points[3 * int64_t(conn[3 * t + k]) + c]) - centre[c];
       }
     }
     const double det = p[0][0] * (p[1][1] * p[2][2] - p[1][2] * p[2][1]) -
@@ -138,6 +137,13 @@ bool IsClosedOutwardTriangleMesh(const render::Mesh& mesh)
     }
   }
   return true;
+}
+
+} // namespace
+
+bool IsClosedOutwardTriangleMesh(const render::Mesh& mesh)
+{
+  return mesh.connectivity.Visit([&](const auto* conn) { return ClosedOutward(mesh, conn); });
 }
 
 std::vector<ClusterCone> ClusterConesOf(

@@ -66,11 +66,11 @@ inline void Rasterizer<StageT>::DrawList(const std::vector<int64_t>& list, int b
   {
     if (e + kAheadOffsets < m)
     {
-      Prefetch(&offsets[id(e + kAheadOffsets)]);
+      Prefetch(offsets.AddressOf(static_cast<size_t>(id(e + kAheadOffsets))));
     }
     if (e + kAheadConnectivity < m)
     {
-      Prefetch(&conn[offsets[id(e + kAheadConnectivity)]]);
+      Prefetch(conn.AddressOf(static_cast<size_t>(offsets[id(e + kAheadConnectivity)])));
     }
     if (this->Buffers.CompactScreen && e + kAheadSlots < m &&
       !(list[e + kAheadSlots] & kEntryMayClip))
@@ -95,7 +95,10 @@ inline void Rasterizer<StageT>::DrawList(const std::vector<int64_t>& list, int b
         Prefetch(v);
         Prefetch(v + sizeof(ScreenVertex) - 1);
       }
-      this->Stage.PrefetchPolygon(p, &conn[first], offsets[p + 1] - first);
+      if (offsets[p + 1] > first)
+      {
+        this->Stage.PrefetchPolygon(p, conn[offsets[p + 1] - 1]);
+      }
     }
     this->DrawSourcePolygon(list[e], band, state);
   }

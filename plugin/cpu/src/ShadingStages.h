@@ -49,9 +49,9 @@ struct StageBase
     return { p, back, {} };
   }
   bool Triangulates() const { return this->F.Opt.polygons == render::PolygonHandling::Triangulate; }
-  /// Polygon p (its n vertices `ids`) is drawn soon: what the stage reads
+  /// Polygon p (its last vertex `lastVertex`) is drawn soon: what the stage reads
   /// of it beyond its screen vertices may be fetched.
-  void PrefetchPolygon(int64_t, const int64_t*, int64_t) const {}
+  void PrefetchPolygon(int64_t, int64_t) const {}
   /// After the thread's last polygon.
   void Finish(ThreadState&) const {}
 
@@ -257,13 +257,13 @@ struct FlatStage : StageBase
   /// PolygonColor's reads: the area vector and the provoking vertex's
   /// point (a cache miss each on a large mesh: ~1% of a flat frame of
   /// ParaView's 1M sphere).
-  void PrefetchPolygon(int64_t p, const int64_t* ids, int64_t n) const
+  void PrefetchPolygon(int64_t p, int64_t lastVertex) const
   {
     if (F.AreaVectors)
     {
       raster::Prefetch(F.AreaVectors + 3 * p);
     }
-    raster::Prefetch(&F.MeshData->points[3 * ids[n - 1]]);
+    raster::Prefetch(&F.MeshData->points[3 * lastVertex]);
   }
 
   /// The polygon's unit normal (facing the viewer when two-sided lighting

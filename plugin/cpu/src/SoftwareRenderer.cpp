@@ -20,6 +20,7 @@
 #include <optional>
 #include <stdexcept>
 #include <thread>
+#include <type_traits>
 
 namespace shadinglab::cpu
 {
@@ -592,14 +593,14 @@ std::vector<float> AreaWeightedNormals(const Mesh& mesh)
 {
   // The project's one implementation (mesh/core), on double coordinates.
   const std::vector<double> points(mesh.points.begin(), mesh.points.end());
-  const shadinglab::mesh::MeshView polygons{ points.data(),
-    mesh.NumberOfPoints(),
-    mesh.offsets.data(),
-    mesh.connectivity.data(),
-    mesh.NumberOfPolygons() };
   std::vector<double> normals;
-  shadinglab::mesh::ComputeVertexNormalsNoSplit(
-    polygons, shadinglab::mesh::NormalWeighting::Area, normals);
+  mesh.VisitIds([&](const auto* offsets, const auto* connectivity) {
+    using Id = std::remove_const_t<std::remove_pointer_t<decltype(offsets)>>;
+    const shadinglab::mesh::MeshViewOf<double, Id> polygons{ points.data(),
+      mesh.NumberOfPoints(), offsets, connectivity, mesh.NumberOfPolygons() };
+    shadinglab::mesh::ComputeVertexNormalsNoSplit(
+      polygons, shadinglab::mesh::NormalWeighting::Area, normals);
+  });
   return std::vector<float>(normals.begin(), normals.end());
 }
 

@@ -184,9 +184,10 @@ ModeDifferences EstimateModeDifferences(const Mesh& mesh, const std::vector<floa
     }
   }
   std::vector<std::vector<double>> alternatives;
-  mesh::ComputeVertexNormalsAt(mesh.points.data(), mesh.offsets.data(), mesh.connectivity.data(),
-    mesh.NumberOfPolygons(), { mesh::NormalWeighting::Area, mesh::NormalWeighting::Max }, slotOf,
-    slots, alternatives);
+  mesh.VisitIds([&](const auto* offsets, const auto* connectivity) {
+    mesh::ComputeVertexNormalsAt(mesh.points.data(), offsets, connectivity, mesh.NumberOfPolygons(),
+      { mesh::NormalWeighting::Area, mesh::NormalWeighting::Max }, slotOf, slots, alternatives);
+  });
   auto normalOf = [&](int64_t v, double sign) {
     return NormalizeOr(Vec3<double>(normals[3 * v], normals[3 * v + 1], normals[3 * v + 2]) * sign,
       Vec3<double>(0, 0, 0));

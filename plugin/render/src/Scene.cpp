@@ -126,8 +126,17 @@ uint64_t Mesh::ContentHash(const TaskRunner& run) const
 {
   auto arrayOf = [](const auto& v)
   {
-    return HashedArray{ reinterpret_cast<const unsigned char*>(v.data()),
-      v.size() * sizeof(v[0]), 0, 0 };
+    if constexpr (std::is_same_v<std::decay_t<decltype(v)>, IdArray>)
+    {
+      // In place, whichever width (a narrow and a wide copy of the same
+      // ids hash apart: a cache keyed on it is refilled once).
+      return HashedArray{ static_cast<const unsigned char*>(v.Bytes()), v.ByteSize(), 0, 0 };
+    }
+    else
+    {
+      return HashedArray{ reinterpret_cast<const unsigned char*>(v.data()),
+        v.size() * sizeof(v[0]), 0, 0 };
+    }
   };
   HashedArray arrays[] = { arrayOf(this->points), arrayOf(this->normals), arrayOf(this->colors),
     arrayOf(this->offsets), arrayOf(this->connectivity), arrayOf(this->faceNormals),

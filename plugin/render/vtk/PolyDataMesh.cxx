@@ -240,39 +240,47 @@ std::shared_ptr<const void> Keep(vtkObjectBase* object)
   return std::shared_ptr<const void>(object, [](vtkObjectBase* o) { o->UnRegister(nullptr); });
 }
 
-/// When every polygon is a triangle held in 64-bit storage (every reader's
-/// default): its offsets and connectivity copied as they are, or with
-/// `share` shared (IdArray::Shared, the arrays kept alive by the mesh), true;
-/// otherwise false and nothing done.
-bool TrianglesInPlace(vtkCellArray* polys, bool share, Mesh& mesh)
+/// TrianglesInPlace for one storage width (vtkTypeInt64 or vtkTypeInt32).
+template <typename VtkId>
+bool TrianglesOfWidth(vtkCellArray* polys, bool share, Mesh& mesh)
 {
-  using Int64Array = vtkAOSDataArrayTemplate<vtkTypeInt64>;
-  auto* offsets = Int64Array::SafeDownCast(polys->GetOffsetsArray());
-  auto* connectivity = Int64Array::SafeDownCast(polys->GetConnectivityArray());
+  using IdArrayOfWidth = vtkAOSDataArrayTemplate<VtkId>;
+  auto* offsets = IdArrayOfWidth::SafeDownCast(polys->GetOffsetsArray());
+  auto* connectivity = IdArrayOfWidth::SafeDownCast(polys->GetConnectivityArray());
   const vtkIdType n = polys->GetNumberOfCells();
   if (!offsets || !connectivity || n == 0)
   {
     return false;
   }
-  const vtkTypeInt64* o = offsets->GetPointer(0);
+  const VtkId* o = offsets->GetPointer(0);
   bool triangles = true;
   for (vtkIdType c = 0; c <= n; ++c)
   {
-    triangles &= o[c] == 3 * c;
+    triangles &= static_cast<int64_t>(o[c]) == 3 * c;
   }
   if (!triangles)
   {
     return false;
   }
-  const vtkTypeInt64* ids = connectivity->GetPointer(0);
+  const VtkId* ids = connectivity->GetPointer(0);
   if (share)
   {
     // vtkTypeInt64 is long long, int64_t long on LP64: the same bits.
-    static_assert(sizeof(vtkTypeInt64) == sizeof(int64_t));
-    mesh.offsets = IdArray::Shared(
-      reinterpret_cast<const int64_t*>(o), static_cast<size_t>(n + 1), Keep(offsets));
-    mesh.connectivity = IdArray::Shared(
-      reinterpret_cast<const int64_t*>(ids), static_cast<size_t>(3 * n), Keep(connectivity));
+    static_assert(sizeof(vtkTypeInt64) == sizeof(int64_t) && sizeof(vtkTypeInt32) == sizeof(int32_t));
+    if constexpr (sizeof(VtkId) == 8)
+    {
+      mesh.offsets = IdArray::Shared(
+        reinterpret_cast<const int64_t*>(o), static_cast<size_t>(n + 1), Keep(offsets));
+      mesh.connectivity = IdArray::Shared(
+        reinterpret_cast<const int64_t*>(ids), static_cast<size_t>(3 * n), Keep(connectivity));
+    }
+    else
+    {
+      mesh.offsets = IdArray::SharedNarrow(
+        reinterpret_cast<const int32_t*>(o), static_cast<size_t>(n + 1), Keep(offsets));
+      mesh.connectivity = IdArray::SharedNarrow(
+        reinterpret_cast<const int32_t*>(ids), static_cast<size_t>(3 * n), Keep(connectivity));
+    }
     return true;
   }
   mesh.offsets.resize(static_cast<size_t>(n + 1));
@@ -282,6 +290,17 @@ bool TrianglesInPlace(vtkCellArray* polys, bool share, Mesh& mesh)
   }
   mesh.connectivity.assign(ids, ids + 3 * n);
   return true;
+}
+
+/// When every polygon is a triangle held in 64-bit storage (VTK's readers'
+/// default) or 32-bit storage (the fast readers' when ids fit): its offsets
+/// and connectivity copied as they are, or with `share` shared
+/// (IdArray::Shared or SharedNarrow, the arrays kept alive by the mesh),
+/// true; otherwise false and nothing done.
+bool TrianglesInPlace(vtkCellArray* polys, bool share, Mesh& mesh)
+{
+  return TrianglesOfWidth<vtkTypeInt64>(polys, share, mesh) ||
+    TrianglesOfWidth<vtkTypeInt32>(polys, share, mesh);
 }
 
 /// `field`'s values into mesh.scalars (point data) or mesh.cellScalars

@@ -54,6 +54,24 @@ struct Mesh
     }
     return triangles;
   }
+  /// f(offsets, connectivity), both in place as `const int64_t*` or, both
+  /// narrow (IdArray.h), as `const int32_t*`; when only one of them is
+  /// narrow, the two are widened into copies for the call.
+  template <typename F>
+  decltype(auto) VisitIds(F&& f) const
+  {
+    if (offsets.IsNarrow() && connectivity.IsNarrow())
+    {
+      return f(offsets.narrowData(), connectivity.narrowData());
+    }
+    if (!offsets.IsNarrow() && !connectivity.IsNarrow())
+    {
+      return f(offsets.data(), connectivity.data());
+    }
+    const std::vector<int64_t> o(offsets.begin(), offsets.end());
+    const std::vector<int64_t> c(connectivity.begin(), connectivity.end());
+    return f(o.data(), c.data());
+  }
   /// Runs task(0) .. task(n - 1), possibly at once, returning when all have
   /// (the CPU renderer passes its kept threads: cpu::SpreadOver).
   using TaskRunner = std::function<void(int n, const std::function<void(int)>& task)>;

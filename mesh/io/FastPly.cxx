@@ -58,11 +58,12 @@ constexpr int64_t kReleaseFaces = int64_t(1) << 16;
  * has). The records are independent, so the halves need no join: the
  * arrays are the serial loop's, bit for bit.
  */
-bool ReadTriangleRecords(const MappedFile& file, size_t at, int64_t nf, int64_t nv, Polygons& out)
+template <typename Id>
+bool ReadTriangleRecordsAs(const MappedFile& file, size_t at, int64_t nf, int64_t nv, Polygons& out)
 {
   const char* body = file.Data() + at;
-  vtkTypeInt64* ids = out.ids;
-  vtkTypeInt64* offset = out.offset;
+  Id* ids = reinterpret_cast<Id*>(out.ids);
+  Id* offset = reinterpret_cast<Id*>(out.offset);
   bool good[2] = { true, true };
   auto half = [&](int h, int64_t f0, int64_t f1)
   {
@@ -79,9 +80,9 @@ bool ReadTriangleRecords(const MappedFile& file, size_t at, int64_t nf, int64_t 
         for (int k = 0; k < 3; ++k)
         {
           ok &= v[k] >= 0 && v[k] < nv;
-          ids[3 * f + k] = v[k];
+          ids[3 * f + k] = static_cast<Id>(v[k]);
         }
-        offset[f + 1] = 3 * (f + 1);
+        offset[f + 1] = static_cast<Id>(3 * (f + 1));
       }
       file.ReleaseRange(at + kTriangleRecord * static_cast<size_t>(f0),
         at + kTriangleRecord * static_cast<size_t>(end));
@@ -91,6 +92,22 @@ bool ReadTriangleRecords(const MappedFile& file, size_t at, int64_t nf, int64_t 
   const int64_t middle = nf / 2;
   mesh::RunBoth(true, [&] { half(0, 0, middle); }, [&] { half(1, middle, nf); });
   return good[0] && good[1];
+}
+
+/**
+ * ReadTriangleRecordsAs with the ids written in 32 bits straight away when
+ * they fit (out.idsNarrow: Finish then has nothing to narrow, and half the
+ * id pages are ever touched), else in 64. When it fails, the serial loop
+ * writes every id again in 64 bits.
+ */
+bool ReadTriangleRecords(const MappedFile& file, size_t at, int64_t nf, int64_t nv, Polygons& out)
+{
+  if (nv < INT32_MAX && 3 * nf < INT32_MAX)
+  {
+    out.idsNarrow = ReadTriangleRecordsAs<vtkTypeInt32>(file, at, nf, nv, out);
+    return out.idsNarrow;
+  }
+  return ReadTriangleRecordsAs<vtkTypeInt64>(file, at, nf, nv, out);
 }
 
 enum class Kind

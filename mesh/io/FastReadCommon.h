@@ -66,6 +66,9 @@ struct Polygons
   int64_t capacity = 0; ///< of `ids`
   int64_t used = 0;
   int64_t polygonCapacity = 0; ///< of `offset`, less its first entry
+  /// `offset` and `ids` hold 32-bit values already (a reader that knew
+  /// every id fits wrote them so); Finish hands them over as they are.
+  bool idsNarrow = false;
 
   Polygons(const Polygons&) = delete;
   Polygons& operator=(const Polygons&) = delete;

@@ -106,8 +106,9 @@ vtkTypeInt64* ResizeIds(void* buffer, int64_t count, size_t bytes = sizeof(vtkTy
 
 /// `count` int64 ids handed to a new VTK array, which frees them: narrowed
 /// to 32 bits in place first when `narrow` (value k moves from byte 8k to
-/// byte 4k, never over a value not yet read), the buffer then shrunk.
-vtkSmartPointer<vtkDataArray> HandOver(vtkTypeInt64* buffer, int64_t count, bool narrow)
+/// byte 4k, never over a value not yet read; skipped when the buffer holds
+/// 32-bit values already, `written32`), the buffer then shrunk.
+vtkSmartPointer<vtkDataArray> HandOver(vtkTypeInt64* buffer, int64_t count, bool narrow, bool written32)
 {
   if (!narrow)
   {
@@ -116,7 +117,7 @@ vtkSmartPointer<vtkDataArray> HandOver(vtkTypeInt64* buffer, int64_t count, bool
     return wide;
   }
   auto* narrowed = reinterpret_cast<vtkTypeInt32*>(buffer);
-  for (int64_t k = 0; k < count; ++k)
+  for (int64_t k = 0; !written32 && k < count; ++k)
   {
     narrowed[k] = static_cast<vtkTypeInt32>(buffer[k]);
   }
@@ -171,10 +172,11 @@ vtkSmartPointer<vtkPolyData> Polygons::Finish(int64_t numberOfPolygons)
 {
   const int64_t n = numberOfPolygons >= 0 ? numberOfPolygons : this->polygonCapacity;
   // Ids below 2^31 (points and corners both): 32-bit storage.
-  const bool narrow = this->points->GetNumberOfTuples() < INT32_MAX && this->used < INT32_MAX;
-  vtkSmartPointer<vtkDataArray> offsets = HandOver(this->offset, n + 1, narrow);
+  const bool narrow =
+    this->idsNarrow || (this->points->GetNumberOfTuples() < INT32_MAX && this->used < INT32_MAX);
+  vtkSmartPointer<vtkDataArray> offsets = HandOver(this->offset, n + 1, narrow, this->idsNarrow);
   this->offset = nullptr;
-  vtkSmartPointer<vtkDataArray> connectivity = HandOver(this->ids, this->used, narrow);
+  vtkSmartPointer<vtkDataArray> connectivity = HandOver(this->ids, this->used, narrow, this->idsNarrow);
   this->ids = nullptr;
   auto pts = vtkSmartPointer<vtkPoints>::New();
   pts->SetData(this->points);

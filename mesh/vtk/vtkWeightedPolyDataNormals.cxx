@@ -95,8 +95,7 @@ int vtkWeightedPolyDataNormals::RequestData(
       narrow.points = doubles->GetPointer(0);
       result = NormalsOf(narrow, options);
     }
-    // Split points past 2^31 (never from a file's 2^31 ids, but checked)
-    // take 64-bit storage.
+    // Split copies can take the point count past 2^31: then 64-bit storage.
     const bool fits = result.originalPointIds.size() < static_cast<size_t>(INT32_MAX);
     const std::vector<int64_t>& moved = result.connectivity;
     this->MakeOutput(source, output, result, [&] {

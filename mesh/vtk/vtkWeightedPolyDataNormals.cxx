@@ -78,9 +78,12 @@ int vtkWeightedPolyDataNormals::RequestData(
   }
   // 32-bit cells (the fast readers') are read in place, not widened (256 MB
   // on 16M triangles), unless faces must be turned: then the widened path.
+  // The orientation test runs once: on the 32-bit cells in place when
+  // there are some, else on the widened copy below.
   slm::NarrowMeshView narrow;
-  if ((floats || doubles) && slm::NarrowPolygonsOf(source, narrow) &&
-    !(this->Consistency && slm::HasInconsistentOrientation(narrow)))
+  const bool narrowIds = slm::NarrowPolygonsOf(source, narrow);
+  const bool turnNarrow = narrowIds && this->Consistency && slm::HasInconsistentOrientation(narrow);
+  if ((floats || doubles) && narrowIds && !turnNarrow)
   {
     this->UpdateProgress(0.1);
     slm::NormalResult result;
@@ -118,7 +121,7 @@ int vtkWeightedPolyDataNormals::RequestData(
   mesh.numberOfPolygons = flat.numberOfPolygons;
   std::vector<int64_t> turned; // the connectivity with inconsistent faces reversed
   slm::FlatPolygons withPoints;
-  if (this->Consistency && slm::HasInconsistentOrientation(mesh))
+  if (this->Consistency && (narrowIds ? turnNarrow : slm::HasInconsistentOrientation(mesh)))
   {
     if (!mesh.points)
     {
